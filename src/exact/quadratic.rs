@@ -1,0 +1,223 @@
+//! Exact classification and correctly rounded roots of `α t² + β t + γ = 0`
+//! with dyadic coefficients, shared by the sphere and quadric oracles.
+
+use super::{Dyadic, round_to_f32};
+use core::cmp::Ordering;
+
+/// A quadratic `α t² + β t + γ` with exact dyadic coefficients.
+///
+/// ```
+/// use rayoracle::exact::{Dyadic, ExactQuadratic, Quadratic};
+/// // t² − 2 = 0: roots ±√2, correctly rounded.
+/// let q = Quadratic::new(Dyadic::new(1, 0), Dyadic::ZERO, Dyadic::new(-2, 0));
+/// assert_eq!(q.solve(), ExactQuadratic::Two(-2f32.sqrt(), 2f32.sqrt()));
+/// ```
+#[derive(Clone, Debug)]
+pub struct Quadratic {
+    /// α, normalised to be ≥ 0 (the equation is multiplied by −1 if needed).
+    pub alpha: Dyadic,
+    /// β, with the same normalisation.
+    pub beta: Dyadic,
+    /// γ, with the same normalisation.
+    pub gamma: Dyadic,
+}
+
+/// The exact answer: classification and correctly rounded roots.
+///
+/// ```
+/// use rayoracle::exact::ExactQuadratic;
+/// assert_eq!(ExactQuadratic::Two(1.0, 2.0).roots(), vec![1.0, 2.0]);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ExactQuadratic {
+    /// No real root.
+    None,
+    /// A double root (discriminant exactly 0) or the root of a linear
+    /// equation (α = 0, β ≠ 0).
+    One(f32),
+    /// Two distinct real roots, `t0 < t1` exactly (they may round to the same
+    /// `f32`).
+    Two(f32, f32),
+    /// Every `t` (α = β = γ = 0).
+    All,
+}
+
+impl ExactQuadratic {
+    /// The roots, ascending.
+    ///
+    /// ```
+    /// use rayoracle::exact::ExactQuadratic;
+    /// assert!(ExactQuadratic::All.roots().is_empty());
+    /// ```
+    pub fn roots(&self) -> Vec<f32> {
+        match *self {
+            ExactQuadratic::One(t) => vec![t],
+            ExactQuadratic::Two(a, b) => vec![a, b],
+            _ => vec![],
+        }
+    }
+}
+
+impl Quadratic {
+    /// The quadratic with these coefficients.
+    ///
+    /// ```
+    /// use rayoracle::exact::{Dyadic, Quadratic};
+    /// let q = Quadratic::new(Dyadic::new(-1, 0), Dyadic::ZERO, Dyadic::new(4, 0));
+    /// assert_eq!(q.alpha.signum(), 1); // normalised
+    /// ```
+    pub fn new(alpha: Dyadic, beta: Dyadic, gamma: Dyadic) -> Self {
+        if alpha.signum() < 0 || (alpha.is_zero() && beta.signum() < 0) {
+            Quadratic {
+                alpha: -alpha,
+                beta: -beta,
+                gamma: -gamma,
+            }
+        } else {
+            Quadratic { alpha, beta, gamma }
+        }
+    }
+
+    /// `β² − 4αγ`, exactly.
+    ///
+    /// ```
+    /// use rayoracle::exact::{Dyadic, Quadratic};
+    /// let q = Quadratic::new(Dyadic::new(1, 0), Dyadic::new(2, 0), Dyadic::new(1, 0));
+    /// assert!(q.discriminant().is_zero());
+    /// ```
+    pub fn discriminant(&self) -> Dyadic {
+        &(&self.beta * &self.beta) - &(&self.alpha * &self.gamma).mul_pow2(2)
+    }
+
+    /// `p(m) = (α m + β) m + γ`, exactly.
+    fn eval(&self, m: &Dyadic) -> Dyadic {
+        &(&(&(&self.alpha * m) + &self.beta) * m) + &self.gamma
+    }
+
+    /// The sign of `2αm + β`: where `m` lies against the vertex `−β/2α`.
+    fn side_of_vertex(&self, m: &Dyadic) -> Ordering {
+        (&(&self.alpha * m).mul_pow2(1) + &self.beta)
+            .signum()
+            .cmp(&0)
+    }
+
+    /// Classifies and returns the correctly rounded roots.
+    ///
+    /// ```
+    /// use rayoracle::exact::{Dyadic, ExactQuadratic, Quadratic};
+    /// // 0·t² + 2t − 1: the linear root 1/2.
+    /// let q = Quadratic::new(Dyadic::ZERO, Dyadic::new(2, 0), Dyadic::new(-1, 0));
+    /// assert_eq!(q.solve(), ExactQuadratic::One(0.5));
+    /// ```
+    pub fn solve(&self) -> ExactQuadratic {
+        let (a, b, c) = (self.alpha.to_f64(), self.beta.to_f64(), self.gamma.to_f64());
+        if self.alpha.is_zero() {
+            if self.beta.is_zero() {
+                return if self.gamma.is_zero() {
+                    ExactQuadratic::All
+                } else {
+                    ExactQuadratic::None
+                };
+            }
+            // β > 0 after normalisation: t ≷ m ⇔ −γ ≷ β m.
+            let neg_gamma = -&self.gamma;
+            let t = round_to_f32(|m| neg_gamma.cmp(&(&self.beta * m)), -c / b);
+            return ExactQuadratic::One(t);
+        }
+        let disc = self.discriminant();
+        match disc.signum() {
+            -1 => ExactQuadratic::None,
+            0 => {
+                // The vertex −β/(2α), with α > 0: t ≷ m ⇔ −β ≷ 2α m.
+                let neg_beta = -&self.beta;
+                let t = round_to_f32(
+                    |m| neg_beta.cmp(&(&self.alpha * m).mul_pow2(1)),
+                    -b / (2.0 * a),
+                );
+                ExactQuadratic::One(t)
+            }
+            _ => {
+                let (g0, g1) = guess_roots(a, b, c, disc.to_f64());
+                // For α > 0, p < 0 strictly between the roots.
+                let t0 = round_to_f32(
+                    |m| {
+                        if self.side_of_vertex(m) == Ordering::Greater {
+                            return Ordering::Less;
+                        }
+                        self.eval(m).signum().cmp(&0)
+                    },
+                    g0,
+                );
+                let t1 = round_to_f32(
+                    |m| {
+                        if self.side_of_vertex(m) == Ordering::Less {
+                            return Ordering::Greater;
+                        }
+                        0.cmp(&self.eval(m).signum())
+                    },
+                    g1,
+                );
+                ExactQuadratic::Two(t0, t1)
+            }
+        }
+    }
+}
+
+/// Starting guesses in f64 with the cancellation-free formula.
+fn guess_roots(a: f64, b: f64, c: f64, disc: f64) -> (f64, f64) {
+    let q = -0.5 * (b + disc.sqrt().copysign(b));
+    let (r0, r1) = (q / a, c / q);
+    if r0 <= r1 { (r0, r1) } else { (r1, r0) }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn dy(x: f32) -> Dyadic {
+        Dyadic::from_f32(x)
+    }
+
+    /// (t − r0)(t − r1)·s with exactly representable roots must give them back.
+    #[test]
+    fn representable_roots_come_back_exactly() {
+        let pairs = [
+            (1.0f32, 2.0f32),
+            (-3.5, 1e-7),
+            (0.0, 5.0),
+            (-1e20, 1e-20),
+            (1.0, 1.0 + f32::EPSILON),
+        ];
+        for (r0, r1) in pairs {
+            for s in [1.0f32, -3.0, 1e-30] {
+                let (r0d, r1d, sd) = (dy(r0), dy(r1), dy(s));
+                let beta = -&(&(&r0d + &r1d) * &sd);
+                let gamma = &(&r0d * &r1d) * &sd;
+                let q = Quadratic::new(sd, beta, gamma);
+                assert_eq!(q.solve(), ExactQuadratic::Two(r0, r1), "{r0} {r1} {s}");
+            }
+        }
+    }
+
+    #[test]
+    fn degenerate_classes() {
+        let q = |a: f32, b: f32, c: f32| Quadratic::new(dy(a), dy(b), dy(c)).solve();
+        assert_eq!(q(0.0, 0.0, 0.0), ExactQuadratic::All);
+        assert_eq!(q(0.0, 0.0, 1.0), ExactQuadratic::None);
+        assert_eq!(q(0.0, -4.0, 1.0), ExactQuadratic::One(0.25));
+        assert_eq!(q(1.0, -2.0, 1.0), ExactQuadratic::One(1.0));
+        assert_eq!(q(1.0, 0.0, 1.0), ExactQuadratic::None);
+        assert_eq!(q(-1.0, 0.0, 1.0), ExactQuadratic::Two(-1.0, 1.0));
+    }
+
+    #[test]
+    fn irrational_roots_are_correctly_rounded() {
+        // t² − 2 and t² − 3: compare with f64 sqrt, which is accurate enough
+        // here that its rounding to f32 is the correct rounding.
+        for k in [2.0f32, 3.0, 5.0, 1e10] {
+            let r = Quadratic::new(dy(1.0), Dyadic::ZERO, -dy(k)).solve();
+            let s = (k as f64).sqrt() as f32;
+            assert_eq!(r, ExactQuadratic::Two(-s, s));
+        }
+    }
+}

@@ -1,0 +1,206 @@
+//! Correct rounding to `f32` of a real number known only through exact
+//! comparisons.
+
+use super::Dyadic;
+use core::cmp::Ordering;
+
+/// The largest finite key; keys order the finite floats, `key(±0) = 0`.
+const MAX_KEY: i64 = 0x7f7f_ffff;
+
+fn key_of(x: f32) -> i64 {
+    let b = x.to_bits();
+    let mag = (b & 0x7fff_ffff) as i64;
+    if b >> 31 == 1 { -mag } else { mag }
+}
+
+fn float_of(k: i64) -> f32 {
+    if k < 0 {
+        -f32::from_bits((-k) as u32)
+    } else {
+        f32::from_bits(k as u32)
+    }
+}
+
+fn value_of(k: i64) -> Dyadic {
+    Dyadic::from_f32(float_of(k))
+}
+
+/// The midpoint between the floats with keys `k` and `k + 1`, exactly.
+fn midpoint(k: i64) -> Dyadic {
+    (&value_of(k) + &value_of(k + 1)).mul_pow2(-1)
+}
+
+/// `f32::MAX + ulp(f32::MAX)/2 = 2^128 − 2^103`: from here on, round to ∞.
+fn overflow_threshold() -> Dyadic {
+    &Dyadic::new(1, 128) - &Dyadic::new(1, 103)
+}
+
+/// The `f32` nearest to a real number `x`, ties to even, overflowing to ±∞
+/// as IEEE 754 does; `x` is given by `cmp(m)`, the exact ordering of `x`
+/// against a dyadic `m`, and `guess` is any approximation of it (only the
+/// number of comparisons depends on how good it is).
+///
+/// A result of zero carries the sign of `x` (−0 for a negative `x` that
+/// rounds to zero).
+///
+/// ```
+/// use rayoracle::exact::{Dyadic, round_to_f32};
+/// // 1/3 correctly rounded: compare 1 with 3m.
+/// let third = round_to_f32(|m| Dyadic::new(1, 0).cmp(&(m * &Dyadic::new(3, 0))), 0.3);
+/// assert_eq!(third, 1.0f32 / 3.0);
+/// ```
+pub fn round_to_f32(cmp: impl Fn(&Dyadic) -> Ordering, guess: f64) -> f32 {
+    let limit = overflow_threshold();
+    if cmp(&limit) != Ordering::Less {
+        return f32::INFINITY;
+    }
+    if cmp(&-&limit) != Ordering::Greater {
+        return f32::NEG_INFINITY;
+    }
+    // floor: the largest key whose value is ≤ x. -MAX_KEY qualifies now.
+    let le = |k: i64| cmp(&value_of(k)) != Ordering::Less;
+    let g = if guess.is_finite() {
+        key_of(guess as f32).clamp(-MAX_KEY, MAX_KEY)
+    } else {
+        0
+    };
+    let (mut lo, mut hi); // value(lo) ≤ x < value(hi), or hi = MAX_KEY + 1
+    if le(g) {
+        lo = g;
+        let mut step = 1;
+        loop {
+            let next = (g + step).min(MAX_KEY + 1);
+            if next > MAX_KEY || !le(next) {
+                hi = next;
+                break;
+            }
+            lo = next;
+            step *= 2;
+        }
+    } else {
+        hi = g;
+        let mut step = 1;
+        loop {
+            let next = (g - step).max(-MAX_KEY);
+            if le(next) {
+                lo = next;
+                break;
+            }
+            hi = next;
+            step *= 2;
+        }
+    }
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if le(mid) { lo = mid } else { hi = mid }
+    }
+    let k = if lo == MAX_KEY || cmp(&value_of(lo)) == Ordering::Equal {
+        lo
+    } else {
+        match cmp(&midpoint(lo)) {
+            Ordering::Less => lo,
+            Ordering::Greater => lo + 1,
+            Ordering::Equal => {
+                if lo.unsigned_abs() % 2 == 0 {
+                    lo
+                } else {
+                    lo + 1
+                }
+            }
+        }
+    };
+    if k == 0 && cmp(&Dyadic::ZERO) == Ordering::Less {
+        -0.0
+    } else {
+        float_of(k)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// x = p/q with q > 0 (both dyadic).
+    fn ratio(p: Dyadic, q: Dyadic, guess: f64) -> f32 {
+        round_to_f32(|m| p.cmp(&(m * &q)), guess)
+    }
+
+    #[test]
+    fn representable_values_round_to_themselves_from_any_guess() {
+        for x in [
+            1.0f32,
+            -2.5,
+            f32::MAX,
+            -f32::MAX,
+            f32::from_bits(1),
+            1e-40,
+            3.0e30,
+            0.1,
+        ] {
+            for guess in [0.0, x as f64, -1e30, f64::NAN, 1e300] {
+                assert_eq!(
+                    ratio(Dyadic::from_f32(x), Dyadic::new(1, 0), guess).to_bits(),
+                    x.to_bits(),
+                    "{x:e} from {guess}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn ties_go_to_even_and_overflow_follows_ieee() {
+        // 1 + 2^-24 is halfway between 1 and 1 + 2^-23: even is 1.
+        let half_up = &Dyadic::new(1, 0) + &Dyadic::new(1, -24);
+        assert_eq!(ratio(half_up, Dyadic::new(1, 0), 1.0), 1.0);
+        // 1 + 3·2^-24 is halfway between 1+2^-23 (odd) and 1+2^-22 (even).
+        let x = &Dyadic::new(1, 0) + &Dyadic::new(3, -24);
+        assert_eq!(ratio(x, Dyadic::new(1, 0), 1.0), 1.0 + 2f32.powi(-22));
+        assert_eq!(
+            ratio(overflow_threshold(), Dyadic::new(1, 0), 0.0),
+            f32::INFINITY
+        );
+        let below = &overflow_threshold() - &Dyadic::new(1, 0);
+        assert_eq!(ratio(below, Dyadic::new(1, 0), 0.0), f32::MAX);
+        // Half the smallest subnormal is a tie between 0 and 2^-149: even is 0.
+        assert_eq!(
+            ratio(Dyadic::new(1, -150), Dyadic::new(1, 0), 0.0).to_bits(),
+            0
+        );
+        assert_eq!(
+            ratio(Dyadic::new(-3, -151), Dyadic::new(1, 0), 0.0),
+            -f32::from_bits(1)
+        );
+        assert_eq!(
+            ratio(Dyadic::new(-1, -151), Dyadic::new(1, 0), 0.0).to_bits(),
+            (-0.0f32).to_bits()
+        );
+    }
+
+    #[test]
+    fn quotients_match_the_hardware_division() {
+        // IEEE division is correctly rounded, so it is an independent check.
+        let xs = [
+            1.0f32,
+            3.0,
+            7.0,
+            0.1,
+            -1e-30,
+            6.02e23,
+            f32::from_bits(12345),
+            1.0e-38,
+        ];
+        for &a in &xs {
+            for &b in &xs {
+                let (p, q) = (Dyadic::from_f32(a), Dyadic::from_f32(b));
+                let (p, q) = if b < 0.0 { (-&p, -&q) } else { (p, q) };
+                let want = a / b;
+                assert_eq!(
+                    ratio(p.clone(), q.clone(), 0.0).to_bits(),
+                    want.to_bits(),
+                    "{a:e}/{b:e}"
+                );
+                assert_eq!(ratio(p, q, want as f64 * 1.5).to_bits(), want.to_bits());
+            }
+        }
+    }
+}

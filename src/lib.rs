@@ -1,0 +1,11 @@
+pub mod camera;
+pub mod exact;
+pub mod hit;
+pub mod num;
+pub mod plane;
+pub mod quadric;
+pub mod ray;
+pub mod sphere;
+pub mod ulp;
+
+pub use ray::Ray;

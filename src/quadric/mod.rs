@@ -1,0 +1,276 @@
+//! Ray–quadric intersection (seed Ex. 1.4a, and the sphere as a quadric,
+//! 1.4b).
+//!
+//! # The derivation, as corrected
+//!
+//! The quadric is `A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z +
+//! J = 0`, coefficients in the seed's order `a…j` (stored as
+//! [`Quadric::coeffs`]`[0..10]`). With `p = o + t d`:
+//!
+//! ```text
+//! α = A dx² + B dy² + C dz² + D dx dy + E dx dz + F dy dz
+//! β = 2(A ox dx + B oy dy + C oz dz) + D(ox dy + dx oy) + E(ox dz + dx oz)
+//!     + F(oy dz + dy oz) + G dx + H dy + I dz
+//! γ = A ox² + B oy² + C oz² + D ox oy + E ox oz + F oy oz + G ox + H oy + I oz + J
+//! α t² + β t + γ = 0
+//! ```
+//!
+//! Departures from the seed:
+//!
+//! * its expansion writes `o t d_z` for `i t d_z` and splits β across two
+//!   braces; the β above is the correct one;
+//! * `t = −β/2α ± √(β²/4α² − γ/α)` divides by α, which is 0 for a ray
+//!   parallel to a cylinder's axis or along a paraboloid's axis, and cancels
+//!   catastrophically when α ≈ 0. Here, after pbrt-v4's `Quadratic`:
+//!   - `α = 0, β ≠ 0`: the linear root `−γ/β`, [`QuadricHit::One`];
+//!   - `α = β = 0`: `γ = 0` means the line lies on the surface,
+//!     [`QuadricHit::All`]; otherwise [`QuadricHit::None`];
+//!   - otherwise the discriminant `β² − 4αγ` as pbrt's
+//!     `DifferenceOfProducts` (here exact products and a double-word
+//!     difference), `q = −½(β + sign(β)√Δ)`, `t₀ = q/α`, `t₁ = γ/q`;
+//! * in 1.4b the root is written `((o−C)·d ± √…)/d²`; the sign of `(o−C)·d`
+//!   is wrong (it must be `−(o−C)·d`), and `R²` is again missing its `d·d`
+//!   factor. [`Quadric::from_sphere`] builds the sphere's coefficients, and
+//!   the tests check that the quadric path classifies it like the sphere.
+//!
+//! # Accuracy ([`reference`])
+//!
+//! The coefficients are prescaled by a common power of two (the surface does
+//! not change) and `d` into `[1, 2)` (roots scale back exactly). α, β and γ
+//! are sums of exact two-factor products scaled by a coefficient in
+//! double-word arithmetic, so each is accurate to about `2⁻⁴⁶` of the sum of
+//! its terms' magnitudes; the solve is double-word and rounded once. The
+//! classification band and root bound follow ([`band`], [`ROOT_ULPS`]).
+//! The origin is not prescaled: the bounds hold for `|o| < 2⁴⁰`.
+
+pub mod exact;
+pub mod reference;
+
+use crate::Ray;
+use crate::hit::{Intersection, Roots};
+use crate::sphere::Sphere;
+
+/// A quadric surface by its ten coefficients `[A, B, C, D, E, F, G, H, I,
+/// J]` of `Ax² + By² + Cz² + Dxy + Exz + Fyz + Gx + Hy + Iz + J = 0`.
+///
+/// ```
+/// use rayoracle::quadric::Quadric;
+/// // The unit cylinder around the z axis: x² + y² − 1 = 0.
+/// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+/// assert_eq!(cyl.coeffs[9], -1.0);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Quadric {
+    /// `[A, B, C, D, E, F, G, H, I, J]`, the seed's `a…j`.
+    pub coeffs: [f32; 10],
+}
+
+impl Quadric {
+    /// The quadric with these coefficients.
+    ///
+    /// ```
+    /// use rayoracle::quadric::Quadric;
+    /// assert_eq!(Quadric::new([0.0; 10]).coeffs, [0.0; 10]);
+    /// ```
+    pub const fn new(coeffs: [f32; 10]) -> Quadric {
+        Quadric { coeffs }
+    }
+
+    /// The sphere as a quadric (seed 1.4b): `A = B = C = 1`, `G, H, I =
+    /// −2C`, `J = |C|² − R²`, with `J` rounded once from its exact value.
+    /// Returns the quadric and whether it is *exactly* the sphere (true when
+    /// `J` is representable, e.g. for small integer centres and radii).
+    ///
+    /// ```
+    /// use rayoracle::{quadric::Quadric, sphere::Sphere};
+    /// use glam::Vec3;
+    /// let (q, exact) = Quadric::from_sphere(&Sphere::new(Vec3::new(1.0, 2.0, 3.0), 2.0));
+    /// assert!(exact);
+    /// assert_eq!(q.coeffs, [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, -2.0, -4.0, -6.0, 10.0]);
+    /// ```
+    pub fn from_sphere(s: &Sphere) -> (Quadric, bool) {
+        use crate::exact::{Dyadic, dyadic::dot, round_to_f32};
+        let c = s.center.to_array();
+        let neg2c = c.map(|x| -2.0 * x);
+        let exact_ok = c.iter().all(|x| x.is_finite()) && s.radius.is_finite();
+        let (j, j_exact) = if exact_ok {
+            let cd = c.map(Dyadic::from_f32);
+            let r = Dyadic::from_f32(s.radius);
+            let jd = &dot(&cd, &cd) - &(&r * &r);
+            let j = round_to_f32(|m| jd.cmp(m), jd.to_f64());
+            (j, j.is_finite() && Dyadic::from_f32(j) == jd)
+        } else {
+            (f32::NAN, false)
+        };
+        let exact = j_exact && neg2c.iter().all(|x| x.is_finite());
+        let q = [
+            1.0, 1.0, 1.0, 0.0, 0.0, 0.0, neg2c[0], neg2c[1], neg2c[2], j,
+        ];
+        (Quadric::new(q), exact)
+    }
+}
+
+/// The result over the whole line (`t ∈ ℝ`).
+///
+/// ```
+/// use rayoracle::quadric::QuadricHit;
+/// use rayoracle::hit::Intersection;
+/// assert_eq!(QuadricHit::All.nearest(1.0, 2.0), Some(1.0));
+/// assert_eq!(QuadricHit::One(3.0).class(), "one");
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum QuadricHit {
+    /// No real solution.
+    None,
+    /// A double root, or the linear root when α = 0.
+    One(f32),
+    /// Two roots `t0 ≤ t1`.
+    Two(f32, f32),
+    /// The line lies on the surface: every `t`.
+    All,
+}
+
+impl Intersection for QuadricHit {
+    fn class(&self) -> &'static str {
+        match self {
+            QuadricHit::None => "none",
+            QuadricHit::One(_) => "one",
+            QuadricHit::Two(..) => "two",
+            QuadricHit::All => "all",
+        }
+    }
+    fn roots(&self) -> Roots {
+        match *self {
+            QuadricHit::One(t) => Roots::one(t),
+            QuadricHit::Two(t0, t1) => Roots::two(t0, t1),
+            _ => Roots::none(),
+        }
+    }
+    fn is_everywhere(&self) -> bool {
+        matches!(self, QuadricHit::All)
+    }
+}
+
+/// The documented root error bound, in ulps, for condition number `kappa`.
+///
+/// ```
+/// assert_eq!(rayoracle::quadric::ROOT_ULPS(1.0).floor(), 1.0);
+/// ```
+#[allow(non_snake_case)]
+pub fn ROOT_ULPS(kappa: f64) -> f64 {
+    1.0 + kappa * 2f64.powi(-16)
+}
+
+/// The terms of α, β, γ in f64 (each product of f32 inputs is exact in f64
+/// only approximately; these are for bounds, not decisions).
+pub(crate) fn terms(ray: &Ray, q: &Quadric) -> ([f64; 6], [f64; 12], [f64; 10]) {
+    let k = q.coeffs.map(|x| x as f64);
+    let o = ray.origin.to_array().map(|x| x as f64);
+    let d = ray.dir.to_array().map(|x| x as f64);
+    let alpha = [
+        k[0] * d[0] * d[0],
+        k[1] * d[1] * d[1],
+        k[2] * d[2] * d[2],
+        k[3] * d[0] * d[1],
+        k[4] * d[0] * d[2],
+        k[5] * d[1] * d[2],
+    ];
+    let beta = [
+        2.0 * k[0] * o[0] * d[0],
+        2.0 * k[1] * o[1] * d[1],
+        2.0 * k[2] * o[2] * d[2],
+        k[3] * o[0] * d[1],
+        k[3] * d[0] * o[1],
+        k[4] * o[0] * d[2],
+        k[4] * d[0] * o[2],
+        k[5] * o[1] * d[2],
+        k[5] * d[1] * o[2],
+        k[6] * d[0],
+        k[7] * d[1],
+        k[8] * d[2],
+    ];
+    let gamma = [
+        k[0] * o[0] * o[0],
+        k[1] * o[1] * o[1],
+        k[2] * o[2] * o[2],
+        k[3] * o[0] * o[1],
+        k[4] * o[0] * o[2],
+        k[5] * o[1] * o[2],
+        k[6] * o[0],
+        k[7] * o[1],
+        k[8] * o[2],
+        k[9],
+    ];
+    (alpha, beta, gamma)
+}
+
+/// The classification band on the discriminant `β² − 4αγ`: the reference's
+/// class is only promised to match the exact one when the exact `|β² − 4αγ|`
+/// exceeds it, and `α = 0` is only recognised when the exact `|α|` is 0 or
+/// above `2⁻⁴⁴ Σ|α terms|`.
+///
+/// ```
+/// use rayoracle::{Ray, quadric::{Quadric, band}};
+/// use glam::Vec3;
+/// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+/// assert!(band(&Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), &cyl) < 1e-9);
+/// ```
+pub fn band(ray: &Ray, q: &Quadric) -> f64 {
+    let (a, b, g) = terms(ray, q);
+    let sa: f64 = a.iter().map(|x| x.abs()).sum();
+    let sb: f64 = b.iter().map(|x| x.abs()).sum();
+    let sg: f64 = g.iter().map(|x| x.abs()).sum();
+    (sb * sb + 4.0 * sa * sg) * 2f64.powi(-40)
+}
+
+/// The condition number of each root with respect to the *terms* of α, β
+/// and γ: `Σ|∂t/∂termᵢ · termᵢ| / |t|`, each term weighted by its 3 rounded
+/// factors. It is larger than the condition number with respect to the
+/// inputs where terms cancel (γ = 25 − 1 for a unit cylinder seen from 5),
+/// and it is the one that bounds an evaluation that is accurate relative to
+/// each term, as the reference is. Infinite at a double root.
+///
+/// ```
+/// use rayoracle::{Ray, quadric::{Quadric, condition}};
+/// use glam::Vec3;
+/// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+/// let k = condition(&Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), &cyl);
+/// assert!(k[0] > 1.0 && k[0] < 100.0);
+/// ```
+pub fn condition(ray: &Ray, q: &Quadric) -> [f64; 2] {
+    let (at, bt, gt) = terms(ray, q);
+    let (a, b, g): (f64, f64, f64) = (at.iter().sum(), bt.iter().sum(), gt.iter().sum());
+    let (sa, sb, sg): (f64, f64, f64) = (
+        at.iter().map(|x| x.abs()).sum(),
+        bt.iter().map(|x| x.abs()).sum(),
+        gt.iter().map(|x| x.abs()).sum(),
+    );
+    let roots: Vec<f64> = if a == 0.0 {
+        vec![-g / b]
+    } else {
+        let disc = b * b - 4.0 * a * g;
+        if !(disc > 0.0) {
+            return [f64::INFINITY; 2];
+        }
+        let qq = -0.5 * (b + disc.sqrt().copysign(b));
+        let (r0, r1) = (qq / a, g / qq);
+        vec![r0.min(r1), r0.max(r1)]
+    };
+    let k = |t: f64| {
+        if t == 0.0 {
+            return 0.0;
+        }
+        // p(t) = αt² + βt + γ; ∂t/∂α = −t²/p', ∂t/∂β = −t/p', ∂t/∂γ = −1/p'.
+        // Each term of α carries 3 rounded factors, hence the weights.
+        let dp = (2.0 * a * t + b).abs();
+        (3.0 * sa * t * t + 3.0 * sb * t.abs() + 3.0 * sg) / (dp * t.abs())
+    };
+    let mut out = [f64::INFINITY; 2];
+    for (i, t) in roots.iter().enumerate() {
+        out[i] = k(*t);
+    }
+    if roots.len() == 1 {
+        out[1] = out[0];
+    }
+    out
+}
