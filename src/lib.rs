@@ -1,4 +1,6 @@
 pub mod camera;
+pub mod case;
+pub mod check;
 pub mod exact;
 pub mod hit;
 pub mod num;

@@ -1,0 +1,392 @@
+//! One case per JSON line: the input format of `rayoracle eval` and of the
+//! fixtures in `fixtures/cases/*.jsonl`.
+//!
+//! ```text
+//! {"kind":"plane","origin":[x,y,z],"dir":[x,y,z],"point":[x,y,z],"normal":[x,y,z]}
+//! {"kind":"sphere","origin":[..],"dir":[..],"center":[..],"radius":r}
+//! {"kind":"quadric","origin":[..],"dir":[..],"coeffs":[a,b,c,d,e,f,g,h,i,j]}
+//! {"kind":"camera","position":[..],"dir":[..],"up":[..],"angle":rad,"res":[w,h],"pixel":[X,Y]}
+//! ```
+//!
+//! * A JSON number is parsed from its decimal text straight to the nearest
+//!   `f32` (ties to even), not through f64, so no double rounding. A number
+//!   beyond the f32 range becomes ±∞, as IEEE rounding says.
+//! * A number may also be a string: `"inf"`, `"-inf"`, `"nan"`, or the exact
+//!   bits as `"0x3f800000"`.
+//! * `res` and `pixel` are whole numbers.
+//! * Two optional fields are carried along but do not change the case:
+//!   `"family"` (a string naming the case family) and `"expect"` (any JSON,
+//!   used by the fixture harness).
+//! * Anything else is an error naming the field: a missing or unknown field,
+//!   a wrong type, a wrong length.
+
+use crate::Ray;
+use crate::camera::CameraParams;
+use crate::plane::Plane;
+use crate::quadric::Quadric;
+use crate::sphere::Sphere;
+use glam::Vec3;
+use serde_json::value::RawValue;
+use std::collections::BTreeMap;
+
+/// A parsed case.
+///
+/// ```
+/// use rayoracle::case::{Case, parse_line};
+/// let c = parse_line(r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap();
+/// assert!(matches!(c.case, Case::Sphere(..)));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub enum Case {
+    /// A ray against a plane.
+    Plane(Ray, Plane),
+    /// A ray against a sphere.
+    Sphere(Ray, Sphere),
+    /// A ray against a quadric.
+    Quadric(Ray, Quadric),
+    /// A camera and a pixel.
+    Camera(CameraParams, [u32; 2]),
+}
+
+impl Case {
+    /// The `kind` string.
+    ///
+    /// ```
+    /// use rayoracle::case::parse_line;
+    /// let c = parse_line(r#"{"kind":"plane","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,1],"normal":[0,0,1]}"#).unwrap();
+    /// assert_eq!(c.case.kind(), "plane");
+    /// ```
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Case::Plane(..) => "plane",
+            Case::Sphere(..) => "sphere",
+            Case::Quadric(..) => "quadric",
+            Case::Camera(..) => "camera",
+        }
+    }
+}
+
+/// A case with the optional fields that travel with it.
+///
+/// ```
+/// use rayoracle::case::parse_line;
+/// let c = parse_line(r#"{"kind":"plane","family":"demo","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,1],"normal":[0,0,1]}"#).unwrap();
+/// assert_eq!(c.family.as_deref(), Some("demo"));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct CaseLine {
+    /// The case.
+    pub case: Case,
+    /// The `family` field, if any.
+    pub family: Option<String>,
+    /// The `expect` field, if any, as JSON.
+    pub expect: Option<serde_json::Value>,
+}
+
+/// What is wrong with a line, and where.
+///
+/// ```
+/// use rayoracle::case::parse_line;
+/// let e = parse_line(r#"{"kind":"sphere","origin":[0,0],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap_err();
+/// assert_eq!(e.field, "origin");
+/// assert_eq!(e.to_string(), "origin: expected 3 numbers, got 2");
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CaseError {
+    /// The field (`origin`, `coeffs[3]`, …), or `json` for a syntax error.
+    pub field: String,
+    /// The problem.
+    pub message: String,
+}
+
+impl core::fmt::Display for CaseError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "{}: {}", self.field, self.message)
+    }
+}
+
+impl std::error::Error for CaseError {}
+
+fn err(field: impl Into<String>, message: impl Into<String>) -> CaseError {
+    CaseError {
+        field: field.into(),
+        message: message.into(),
+    }
+}
+
+/// Up to 40 characters of a raw JSON value, for messages.
+fn show(raw: &RawValue) -> String {
+    let s = raw.get();
+    if s.chars().count() > 40 {
+        format!("{}…", s.chars().take(40).collect::<String>())
+    } else {
+        s.to_string()
+    }
+}
+
+/// A number field: decimal text straight to the nearest f32, or a string
+/// `inf`, `-inf`, `nan`, `0x…` (bits).
+///
+/// ```
+/// use rayoracle::case::parse_f32;
+/// use serde_json::value::RawValue;
+/// let raw: Box<RawValue> = serde_json::from_str("\"0x3f800000\"").unwrap();
+/// assert_eq!(parse_f32("radius", &raw), Ok(1.0));
+/// // Decimal text rounds once, straight to f32 (no double rounding via f64):
+/// let raw: Box<RawValue> = serde_json::from_str("1.00000005960464477539062500000001").unwrap();
+/// assert_eq!(parse_f32("radius", &raw), Ok(1.0000001));
+/// ```
+pub fn parse_f32(field: &str, raw: &RawValue) -> Result<f32, CaseError> {
+    let text = raw.get();
+    if text.starts_with('"') {
+        let s: String = serde_json::from_str(text).map_err(|e| err(field, e.to_string()))?;
+        return match s.as_str() {
+            "inf" | "+inf" | "infinity" => Ok(f32::INFINITY),
+            "-inf" | "-infinity" => Ok(f32::NEG_INFINITY),
+            "nan" | "NaN" => Ok(f32::NAN),
+            hex if hex.starts_with("0x") => u32::from_str_radix(&hex[2..], 16)
+                .map(f32::from_bits)
+                .map_err(|_| err(field, format!("\"{hex}\" is not 8 hex digits of f32 bits"))),
+            other => Err(err(
+                field,
+                format!(
+                    "expected a number, or \"inf\", \"-inf\", \"nan\" or \"0x…\" bits; got \"{other}\""
+                ),
+            )),
+        };
+    }
+    let starts_numeric = text.starts_with(|c: char| c == '-' || c.is_ascii_digit());
+    match text.parse::<f32>() {
+        Ok(x) if starts_numeric => Ok(x),
+        _ => Err(err(field, format!("expected a number, got {}", show(raw)))),
+    }
+}
+
+fn parse_array<'a>(
+    field: &str,
+    raw: &'a RawValue,
+    n: usize,
+    what: &str,
+) -> Result<Vec<&'a RawValue>, CaseError> {
+    let items: Vec<&RawValue> = serde_json::from_str(raw.get()).map_err(|_| {
+        err(
+            field,
+            format!("expected an array of {n} {what}, got {}", show(raw)),
+        )
+    })?;
+    if items.len() != n {
+        return Err(err(
+            field,
+            format!("expected {n} {what}, got {}", items.len()),
+        ));
+    }
+    Ok(items)
+}
+
+fn parse_f32s<const N: usize>(field: &str, raw: &RawValue) -> Result<[f32; N], CaseError> {
+    let items = parse_array(field, raw, N, "numbers")?;
+    let mut out = [0.0; N];
+    for (i, item) in items.iter().enumerate() {
+        out[i] = parse_f32(&format!("{field}[{i}]"), item)?;
+    }
+    Ok(out)
+}
+
+fn parse_u32s(field: &str, raw: &RawValue) -> Result<[u32; 2], CaseError> {
+    let items = parse_array(field, raw, 2, "whole numbers")?;
+    let mut out = [0; 2];
+    for (i, item) in items.iter().enumerate() {
+        out[i] = item.get().parse::<u32>().map_err(|_| {
+            err(
+                format!("{field}[{i}]"),
+                format!(
+                    "expected a whole number from 0 to {}, got {}",
+                    u32::MAX,
+                    show(item)
+                ),
+            )
+        })?;
+    }
+    Ok(out)
+}
+
+/// The fields of one line, consumed as they are read so that what is left
+/// over can be reported as unknown.
+struct Fields(BTreeMap<String, Box<RawValue>>);
+
+impl Fields {
+    fn take(&mut self, name: &str) -> Result<Box<RawValue>, CaseError> {
+        self.0.remove(name).ok_or_else(|| err(name, "missing"))
+    }
+    fn vec3(&mut self, name: &str) -> Result<Vec3, CaseError> {
+        Ok(Vec3::from_array(parse_f32s::<3>(name, &self.take(name)?)?))
+    }
+    fn f32(&mut self, name: &str) -> Result<f32, CaseError> {
+        parse_f32(name, &self.take(name)?)
+    }
+    fn finish(self) -> Result<(), CaseError> {
+        match self.0.keys().next() {
+            Some(k) => Err(err(k.as_str(), "unknown field")),
+            None => Ok(()),
+        }
+    }
+}
+
+/// Parses one line.
+///
+/// ```
+/// use rayoracle::case::{Case, parse_line};
+/// let c = parse_line(r#"{"kind":"camera","position":[0,0,0],"dir":[0,0,-1],"up":[0,1,0],"angle":1,"res":[4,3],"pixel":[0,2]}"#).unwrap();
+/// assert!(matches!(c.case, Case::Camera(_, [0, 2])));
+/// let e = parse_line(r#"{"kind":"cube"}"#).unwrap_err();
+/// assert_eq!(e.field, "kind");
+/// ```
+pub fn parse_line(line: &str) -> Result<CaseLine, CaseError> {
+    let map: BTreeMap<String, Box<RawValue>> = serde_json::from_str(line).map_err(|e| {
+        let msg = e.to_string();
+        if e.is_data() {
+            err("json", "expected an object, one case per line")
+        } else {
+            err("json", msg)
+        }
+    })?;
+    let mut fields = Fields(map);
+    let kind_raw = fields.take("kind")?;
+    let kind: String = serde_json::from_str(kind_raw.get()).map_err(|_| {
+        err(
+            "kind",
+            format!("expected a string, got {}", show(&kind_raw)),
+        )
+    })?;
+    let family = match fields.0.remove("family") {
+        None => None,
+        Some(raw) => Some(
+            serde_json::from_str::<String>(raw.get())
+                .map_err(|_| err("family", format!("expected a string, got {}", show(&raw))))?,
+        ),
+    };
+    let expect = match fields.0.remove("expect") {
+        None => None,
+        Some(raw) => {
+            Some(serde_json::from_str(raw.get()).map_err(|e| err("expect", e.to_string()))?)
+        }
+    };
+    let case = match kind.as_str() {
+        "plane" => {
+            let ray = Ray::new(fields.vec3("origin")?, fields.vec3("dir")?);
+            Case::Plane(
+                ray,
+                Plane::new(fields.vec3("point")?, fields.vec3("normal")?),
+            )
+        }
+        "sphere" => {
+            let ray = Ray::new(fields.vec3("origin")?, fields.vec3("dir")?);
+            Case::Sphere(
+                ray,
+                Sphere::new(fields.vec3("center")?, fields.f32("radius")?),
+            )
+        }
+        "quadric" => {
+            let ray = Ray::new(fields.vec3("origin")?, fields.vec3("dir")?);
+            let coeffs = parse_f32s::<10>("coeffs", &fields.take("coeffs")?)?;
+            Case::Quadric(ray, Quadric::new(coeffs))
+        }
+        "camera" => {
+            let position = fields.vec3("position")?;
+            let dir = fields.vec3("dir")?;
+            let up = fields.vec3("up")?;
+            let angle = fields.f32("angle")?;
+            let res = parse_u32s("res", &fields.take("res")?)?;
+            let pixel = parse_u32s("pixel", &fields.take("pixel")?)?;
+            for i in 0..2 {
+                if res[i] > 0 && pixel[i] >= res[i] {
+                    return Err(err(
+                        format!("pixel[{i}]"),
+                        format!("{} is outside 0..{}", pixel[i], res[i]),
+                    ));
+                }
+            }
+            Case::Camera(CameraParams::new(position, dir, up, angle, res), pixel)
+        }
+        other => {
+            return Err(err(
+                "kind",
+                format!("unknown kind \"{other}\"; expected plane, sphere, quadric or camera"),
+            ));
+        }
+    };
+    fields.finish()?;
+    Ok(CaseLine {
+        case,
+        family,
+        expect,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn e(line: &str) -> String {
+        parse_line(line).unwrap_err().to_string()
+    }
+
+    #[test]
+    fn errors_name_the_field_and_the_problem() {
+        let ok = r#""origin":[0,0,0],"dir":[0,0,1],"center":[0,0,0]"#;
+        assert_eq!(
+            e(&format!(r#"{{"kind":"sphere",{ok}}}"#)),
+            "radius: missing"
+        );
+        assert_eq!(
+            e(&format!(r#"{{"kind":"sphere",{ok},"radius":"big"}}"#)),
+            r#"radius: expected a number, or "inf", "-inf", "nan" or "0x…" bits; got "big""#
+        );
+        assert_eq!(
+            e(&format!(
+                r#"{{"kind":"sphere",{ok},"radius":1,"colour":2}}"#
+            )),
+            "colour: unknown field"
+        );
+        assert_eq!(
+            e(&format!(r#"{{"kind":"sphere",{ok},"radius":[1]}}"#)),
+            "radius: expected a number, got [1]"
+        );
+        assert_eq!(
+            e(r#"{"kind":"sphere","origin":[0,"x",0]}"#),
+            r#"origin[1]: expected a number, or "inf", "-inf", "nan" or "0x…" bits; got "x""#
+        );
+        assert_eq!(e(r#"[1,2]"#), "json: expected an object, one case per line");
+        assert!(e(r#"{"kind":"#).starts_with("json: "));
+        assert_eq!(
+            e(
+                r#"{"kind":"camera","position":[0,0,0],"dir":[0,0,-1],"up":[0,1,0],"angle":1,"res":[4,3],"pixel":[4,0]}"#
+            ),
+            "pixel[0]: 4 is outside 0..4"
+        );
+        assert_eq!(
+            e(
+                r#"{"kind":"camera","position":[0,0,0],"dir":[0,0,-1],"up":[0,1,0],"angle":1,"res":[4,-3],"pixel":[0,0]}"#
+            ),
+            "res[1]: expected a whole number from 0 to 4294967295, got -3"
+        );
+    }
+
+    #[test]
+    fn numbers_round_once_to_f32_and_accept_special_spellings() {
+        let raw = |s: &str| -> Box<RawValue> { serde_json::from_str(s).unwrap() };
+        assert_eq!(parse_f32("x", &raw("0.1")), Ok(0.1f32));
+        assert_eq!(parse_f32("x", &raw("1e39")), Ok(f32::INFINITY));
+        assert_eq!(
+            parse_f32("x", &raw("-1e-50")).map(f32::to_bits),
+            Ok((-0.0f32).to_bits())
+        );
+        assert!(parse_f32("x", &raw("\"nan\"")).unwrap().is_nan());
+        assert_eq!(
+            parse_f32("x", &raw("\"0x00000001\"")),
+            Ok(f32::from_bits(1))
+        );
+        assert!(parse_f32("x", &raw("true")).is_err());
+        assert!(parse_f32("x", &raw("null")).is_err());
+    }
+}

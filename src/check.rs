@@ -1,0 +1,766 @@
+//! The judge: whether an answer (the scalar reference's, or any other
+//! implementation's) is acceptable against the exact oracle, by the rules the
+//! primitive modules document. Property tests, the fixture harness and
+//! fuzzers all decide here, so there is one definition of "correct".
+//!
+//! # The rules
+//!
+//! * **Non-finite inputs.** If the exact oracle returns
+//!   [`NonFinite`](crate::exact::NonFinite) (an input is NaN or ±∞), nothing
+//!   is checked: the report has [`Status::NonFinite`] and only says what the
+//!   candidate answered.
+//! * **Classification** must equal the exact one unless the exact
+//!   classification margin is within the primitive's band, and then a
+//!   different class is reported as [`Status::ClassInBand`]:
+//!   - plane: margin `d·n` (exact), band [`plane::band`];
+//!   - sphere: margin `aΔ = a(b² − ac)` (exact), band [`sphere::band`]. The
+//!     exact quadratic of [`sphere::exact::quadratic`] is `a t² + 2b t + c`,
+//!     whose [`discriminant`](crate::exact::Quadratic::discriminant) is
+//!     `(2b)² − 4ac = 4Δ`, so the margin is `a · discriminant / 4`;
+//!   - quadric: margin `β² − 4αγ` (exact), band [`quadric::band`]; a
+//!     mismatch is also allowed when the exact `α ≠ 0` but
+//!     `|α| ≤ 2⁻⁴⁴ Σ|α terms|` (the reference may take such an α for 0).
+//! * **Roots**, when the classes match: each root within `ROOT_ULPS(κ)` ulps
+//!   ([`crate::ulp::ulps`]) of the exact (correctly rounded) root, κ from
+//!   the primitive's condition number ([`plane_condition`],
+//!   [`sphere::condition`], [`quadric::condition`]; for a quadric whose α
+//!   is within its band, the same κ evaluated at the exact roots, since
+//!   `condition` recomputes the roots in f64 and cannot see such an α); an
+//!   infinite or NaN κ (a double root) puts no bound on the root. For a
+//!   tangent the larger of the sphere's two κ is used.
+//! * Inside a band nothing is promised, so exact zeros that the reference is
+//!   designed to reproduce (parallel planes from exact products, tangents
+//!   from small integers, lines on a surface) are not asserted here; the
+//!   property tests assert them for the inputs where they hold.
+//! * **Quadric domain.** The quadric bounds are documented for `|o| < 2⁴⁰`
+//!   only; outside it the report is [`Status::OutOfDomain`] and nothing is
+//!   checked.
+//! * **Camera.** Construction must fail exactly when the oracle's does, with
+//!   the same [`CameraError`]. Otherwise the origin must be the camera
+//!   position bit for bit, and each direction component within
+//!   [`camera::COMPONENT_ULPS`] ulps of `Sᵢ` ([`camera::component_scale`],
+//!   one ulp being [`ulp_of`]`(Sᵢ)`) of the oracle's component.
+
+use crate::Ray;
+use crate::camera::{self, CameraError, CameraParams};
+use crate::case::Case;
+use crate::exact::dyadic::{dot, sub3, vec3};
+use crate::hit::Intersection;
+use crate::plane::{self, Plane, PlaneHit};
+use crate::quadric::{self, Quadric, QuadricHit};
+use crate::sphere::{self, Sphere, SphereHit};
+use crate::ulp::{ulp_of, ulps};
+use core::fmt;
+
+/// How a case was judged. Every status except [`Status::Checked`] means
+/// that part of the answer was, by the rules, not checked.
+///
+/// ```
+/// use rayoracle::check::{Status, reference_case};
+/// use rayoracle::case::parse_line;
+/// let c = parse_line(r#"{"kind":"sphere","origin":[0,0,"nan"],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap();
+/// assert_eq!(reference_case(&c.case).unwrap().status, Status::NonFinite);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Status {
+    /// Class and every root (or component) were checked and are within
+    /// bounds.
+    Checked,
+    /// The classes differ, which is allowed because the exact margin is
+    /// within the band; the roots were not compared.
+    ClassInBand,
+    /// An input is NaN or infinite: no exact answer, nothing checked.
+    NonFinite,
+    /// The camera could not be built, and the candidate failed with the same
+    /// error.
+    Rejected,
+    /// Outside the domain where the bounds are documented (a quadric with
+    /// `|o| ≥ 2⁴⁰`): nothing checked.
+    OutOfDomain,
+}
+
+/// One root compared with the exact one.
+///
+/// ```
+/// use rayoracle::check::RootCheck;
+/// let r = RootCheck { exact: 1.0, got: 1.0 + f32::EPSILON, ulps: 1, kappa: 2.0, bound: 1.0 };
+/// assert!(r.ok());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RootCheck {
+    /// The exact, correctly rounded root.
+    pub exact: f32,
+    /// The candidate's root.
+    pub got: f32,
+    /// The distance between them in ulps.
+    pub ulps: u64,
+    /// The root's condition number (may be infinite).
+    pub kappa: f64,
+    /// The allowed ulps, `ROOT_ULPS(kappa)` (infinite when `kappa` is).
+    pub bound: f64,
+}
+
+impl RootCheck {
+    /// Whether the root is within its bound (always, for an infinite bound).
+    ///
+    /// ```
+    /// use rayoracle::check::RootCheck;
+    /// let r = RootCheck { exact: 1.0, got: 2.0, ulps: 1 << 23, kappa: f64::INFINITY, bound: f64::INFINITY };
+    /// assert!(r.ok());
+    /// ```
+    pub fn ok(&self) -> bool {
+        !(self.bound.is_finite() && self.ulps as f64 > self.bound)
+    }
+}
+
+/// One camera direction component compared with the oracle's.
+///
+/// ```
+/// use rayoracle::check::ComponentCheck;
+/// let c = ComponentCheck { axis: 0, exact: 1.0, got: 1.0, scale: 1.0, err_ulps: 0.0, bound: 4.0 };
+/// assert!(c.ok());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ComponentCheck {
+    /// 0, 1 or 2 for x, y, z.
+    pub axis: usize,
+    /// The oracle's component (rounded to f32).
+    pub exact: f32,
+    /// The candidate's component.
+    pub got: f32,
+    /// `Sᵢ`, the size of the terms the component is made of.
+    pub scale: f64,
+    /// `|got − exact| / ulp_of(Sᵢ)`.
+    pub err_ulps: f64,
+    /// [`camera::COMPONENT_ULPS`].
+    pub bound: f64,
+}
+
+impl ComponentCheck {
+    /// Whether the component is within its bound (NaN error is not).
+    ///
+    /// ```
+    /// use rayoracle::check::ComponentCheck;
+    /// let c = ComponentCheck { axis: 2, exact: 1.0, got: f32::NAN, scale: 1.0, err_ulps: f64::NAN, bound: 4.0 };
+    /// assert!(!c.ok());
+    /// ```
+    pub fn ok(&self) -> bool {
+        self.err_ulps <= self.bound
+    }
+}
+
+/// What was checked and what was found, for an acceptable answer.
+///
+/// ```
+/// use rayoracle::check::{Status, reference_case};
+/// use rayoracle::case::parse_line;
+/// let c = parse_line(r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap();
+/// let r = reference_case(&c.case).unwrap();
+/// assert_eq!((r.kind, r.exact_class, r.got_class, r.status), ("sphere", "two", "two", Status::Checked));
+/// assert_eq!(r.roots.iter().map(|x| x.exact).collect::<Vec<_>>(), [4.0, 6.0]);
+/// assert_eq!(r.max_root_ulps(), Some(0));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct CaseReport {
+    /// `plane`, `sphere`, `quadric` or `camera`.
+    pub kind: &'static str,
+    /// How the case was judged.
+    pub status: Status,
+    /// The exact class (`hit`, `two`, …); `non_finite` when the oracle has
+    /// no answer; for a camera `ray`, or `error` when construction fails.
+    pub exact_class: &'static str,
+    /// The candidate's class, in the same vocabulary.
+    pub got_class: &'static str,
+    /// The exact classification margin (`d·n`, `aΔ` or `β² − 4αγ`) rounded
+    /// to f64; NaN where there is none (camera, non-finite input).
+    pub margin: f64,
+    /// The band the margin is compared with; NaN where there is none.
+    pub band: f64,
+    /// The roots compared (empty unless the classes match and have roots).
+    pub roots: Vec<RootCheck>,
+    /// The camera direction components compared (empty for the others).
+    pub components: Vec<ComponentCheck>,
+}
+
+impl CaseReport {
+    /// The largest root error in ulps, if any root was compared.
+    ///
+    /// ```
+    /// use rayoracle::check::reference_case;
+    /// use rayoracle::case::parse_line;
+    /// let c = parse_line(r#"{"kind":"plane","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,1],"normal":[0,0,1]}"#).unwrap();
+    /// assert_eq!(reference_case(&c.case).unwrap().max_root_ulps(), Some(0));
+    /// ```
+    pub fn max_root_ulps(&self) -> Option<u64> {
+        self.roots.iter().map(|r| r.ulps).max()
+    }
+
+    /// The largest camera component error in ulps of `Sᵢ`, if any.
+    ///
+    /// ```
+    /// use rayoracle::check::reference_case;
+    /// use rayoracle::case::parse_line;
+    /// let c = parse_line(r#"{"kind":"camera","position":[0,0,0],"dir":[0,0,-1],"up":[0,1,0],"angle":1,"res":[3,3],"pixel":[1,1]}"#).unwrap();
+    /// assert_eq!(reference_case(&c.case).unwrap().max_component_ulps(), Some(0.0));
+    /// ```
+    pub fn max_component_ulps(&self) -> Option<f64> {
+        self.components.iter().map(|c| c.err_ulps).reduce(f64::max)
+    }
+}
+
+/// Why an answer is not acceptable, with the numbers.
+///
+/// ```
+/// use rayoracle::check::{Violation, check_sphere};
+/// use rayoracle::{Ray, sphere::{Sphere, SphereHit}};
+/// use glam::Vec3;
+/// let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
+/// let v = check_sphere(&ray, &Sphere::new(Vec3::ZERO, 1.0), SphereHit::None).unwrap_err();
+/// assert!(matches!(v, Violation::Class { exact: "two", got: "none", .. }));
+/// assert!(v.to_string().starts_with("sphere: class none, exact two"));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub enum Violation {
+    /// The classes differ and the exact margin is outside the band.
+    Class {
+        /// The primitive.
+        kind: &'static str,
+        /// The exact class.
+        exact: &'static str,
+        /// The candidate's class.
+        got: &'static str,
+        /// The exact margin (see [`CaseReport::margin`]).
+        margin: f64,
+        /// The band it exceeds.
+        band: f64,
+    },
+    /// A root is further from the exact one than its bound.
+    Root {
+        /// The primitive.
+        kind: &'static str,
+        /// Which root (0 or 1, ascending).
+        index: usize,
+        /// The numbers.
+        check: RootCheck,
+    },
+    /// A camera direction component is further from the oracle's than
+    /// [`camera::COMPONENT_ULPS`].
+    Component(ComponentCheck),
+    /// The camera ray's origin is not the position.
+    Origin {
+        /// The position.
+        exact: [f32; 3],
+        /// The candidate's origin.
+        got: [f32; 3],
+    },
+    /// The camera was built where the oracle's failed, or the other way
+    /// round, or both failed differently.
+    Construction {
+        /// The oracle's error, if any.
+        exact: Option<CameraError>,
+        /// The candidate's error, if any.
+        got: Option<CameraError>,
+    },
+}
+
+impl fmt::Display for Violation {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Violation::Class {
+                kind,
+                exact,
+                got,
+                margin,
+                band,
+            } => write!(
+                f,
+                "{kind}: class {got}, exact {exact}; exact margin {margin:e} is outside the band {band:e}"
+            ),
+            Violation::Root { kind, index, check } => write!(
+                f,
+                "{kind}: root {index} is {got:e} ({gb:#010x}), exact {ex:e} ({eb:#010x}): {u} ulps > bound {b:.3} (kappa {k:e})",
+                got = check.got,
+                gb = check.got.to_bits(),
+                ex = check.exact,
+                eb = check.exact.to_bits(),
+                u = check.ulps,
+                b = check.bound,
+                k = check.kappa,
+            ),
+            Violation::Component(c) => write!(
+                f,
+                "camera: dir[{}] is {:e}, oracle {:e}: {:.3} ulps of S = {:e} > bound {}",
+                c.axis, c.got, c.exact, c.err_ulps, c.scale, c.bound
+            ),
+            Violation::Origin { exact, got } => {
+                write!(f, "camera: origin {got:?} is not the position {exact:?}")
+            }
+            Violation::Construction { exact, got } => {
+                let show = |e: &Option<CameraError>| match e {
+                    Some(e) => format!("error \"{e}\""),
+                    None => "a camera".to_string(),
+                };
+                write!(
+                    f,
+                    "camera: construction gave {}, oracle {}",
+                    show(got),
+                    show(exact)
+                )
+            }
+        }
+    }
+}
+
+impl std::error::Error for Violation {}
+
+/// Judges the scalar reference's answer to a case: runs the reference for
+/// its kind and hands the answer to [`check_plane`], [`check_sphere`],
+/// [`check_quadric`] or [`check_camera`].
+///
+/// ```
+/// use rayoracle::check::{Status, reference_case};
+/// use rayoracle::case::parse_line;
+/// let c = parse_line(r#"{"kind":"quadric","origin":[1,0,0],"dir":[0,0,1],"coeffs":[1,1,0,0,0,0,0,0,0,-1]}"#).unwrap();
+/// let r = reference_case(&c.case).unwrap();
+/// assert_eq!((r.exact_class, r.status), ("all", Status::Checked));
+/// ```
+pub fn reference_case(case: &Case) -> Result<CaseReport, Violation> {
+    match case {
+        Case::Plane(ray, p) => check_plane(ray, p, plane::reference::intersect(ray, p)),
+        Case::Sphere(ray, s) => check_sphere(ray, s, sphere::reference::intersect(ray, s)),
+        Case::Quadric(ray, q) => check_quadric(ray, q, quadric::reference::intersect(ray, q)),
+        Case::Camera(p, [px, py]) => {
+            let got = p.build().map(|cam| cam.ray(*px, *py));
+            check_camera(p, [*px, *py], got)
+        }
+    }
+}
+
+/// The plane root's condition number, as the plane module documents it:
+/// `κ = Σ|dᵢnᵢ| / |d·n| + Σ|(aᵢ−oᵢ)nᵢ| / |(a−o)·n|`, with the two dot
+/// products exact (a `0/0` term counts as 0, `x/0` as ∞). NaN for a
+/// non-finite input.
+///
+/// ```
+/// use rayoracle::check::plane_condition;
+/// use rayoracle::{Ray, plane::Plane};
+/// use glam::Vec3;
+/// let k = plane_condition(&Ray::new(Vec3::ZERO, Vec3::Z), &Plane::new(Vec3::Z, Vec3::Z));
+/// assert_eq!(k, 2.0);
+/// ```
+pub fn plane_condition(ray: &Ray, p: &Plane) -> f64 {
+    let (Ok(o), Ok(d), Ok(a), Ok(n)) = (
+        vec3(ray.origin.to_array()),
+        vec3(ray.dir.to_array()),
+        vec3(p.point.to_array()),
+        vec3(p.normal.to_array()),
+    ) else {
+        return f64::NAN;
+    };
+    let den = dot(&d, &n).to_f64().abs();
+    let num = dot(&sub3(&a, &o), &n).to_f64().abs();
+    let sd: f64 = (0..3)
+        .map(|i| (ray.dir[i] as f64 * p.normal[i] as f64).abs())
+        .sum();
+    let sn: f64 = (0..3)
+        .map(|i| ((p.point[i] as f64 - ray.origin[i] as f64) * p.normal[i] as f64).abs())
+        .sum();
+    let ratio = |s: f64, x: f64| if s == 0.0 { 0.0 } else { s / x };
+    ratio(sd, den) + ratio(sn, num)
+}
+
+/// A report with nothing compared yet.
+fn report(kind: &'static str, exact_class: &'static str, got_class: &'static str) -> CaseReport {
+    CaseReport {
+        kind,
+        status: Status::Checked,
+        exact_class,
+        got_class,
+        margin: f64::NAN,
+        band: f64::NAN,
+        roots: Vec::new(),
+        components: Vec::new(),
+    }
+}
+
+/// Compares the classes; `Ok(false)` when they differ within the band.
+fn classes(r: &mut CaseReport, in_band: bool) -> Result<bool, Violation> {
+    if r.exact_class == r.got_class {
+        return Ok(true);
+    }
+    if in_band {
+        r.status = Status::ClassInBand;
+        return Ok(false);
+    }
+    Err(Violation::Class {
+        kind: r.kind,
+        exact: r.exact_class,
+        got: r.got_class,
+        margin: r.margin,
+        band: r.band,
+    })
+}
+
+/// Compares roots pairwise against `ROOT_ULPS(κ)`.
+fn roots(
+    r: &mut CaseReport,
+    exact: &[f32],
+    got: &[f32],
+    kappa: &[f64],
+    root_ulps: fn(f64) -> f64,
+) -> Result<(), Violation> {
+    for (i, (&e, &g)) in exact.iter().zip(got).enumerate() {
+        let k = kappa[i];
+        let bound = if k.is_finite() {
+            root_ulps(k)
+        } else {
+            f64::INFINITY
+        };
+        let check = RootCheck {
+            exact: e,
+            got: g,
+            ulps: ulps(e, g),
+            kappa: k,
+            bound,
+        };
+        r.roots.push(check);
+        if !check.ok() {
+            return Err(Violation::Root {
+                kind: r.kind,
+                index: i,
+                check,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Judges an answer to a ray–plane case. Margin `d·n`, band
+/// [`plane::band`], κ [`plane_condition`], bound [`plane::ROOT_ULPS`].
+///
+/// ```
+/// use rayoracle::check::check_plane;
+/// use rayoracle::{Ray, plane::{Plane, PlaneHit}};
+/// use glam::Vec3;
+/// let (ray, p) = (Ray::new(Vec3::ZERO, Vec3::Z), Plane::new(Vec3::new(0.0, 0.0, 0.5), Vec3::Z));
+/// assert_eq!(check_plane(&ray, &p, PlaneHit::Hit(0.5)).unwrap().max_root_ulps(), Some(0));
+/// assert!(check_plane(&ray, &p, PlaneHit::Hit(0.6)).is_err());
+/// assert!(check_plane(&ray, &p, PlaneHit::Parallel).is_err());
+/// ```
+pub fn check_plane(ray: &Ray, p: &Plane, got: PlaneHit) -> Result<CaseReport, Violation> {
+    let Ok(exact) = plane::exact::intersect(ray, p) else {
+        let mut r = report("plane", "non_finite", got.class());
+        r.status = Status::NonFinite;
+        return Ok(r);
+    };
+    let mut r = report("plane", exact.class(), got.class());
+    // Finite inputs, so the exact d·n exists.
+    let d = vec3(ray.dir.to_array()).expect("finite");
+    let n = vec3(p.normal.to_array()).expect("finite");
+    r.margin = dot(&d, &n).to_f64();
+    r.band = plane::band(ray, p);
+    let in_band = r.margin.abs() <= r.band;
+    if classes(&mut r, in_band)? {
+        let k = plane_condition(ray, p);
+        roots(
+            &mut r,
+            exact.roots().as_slice(),
+            got.roots().as_slice(),
+            &[k],
+            plane::ROOT_ULPS,
+        )?;
+    }
+    Ok(r)
+}
+
+/// Judges an answer to a ray–sphere case. Margin `aΔ = a(b² − ac)`, exact
+/// (`a` times a quarter of the discriminant of the exact `a t² + 2b t + c`),
+/// band [`sphere::band`], κ [`sphere::condition`] (for a tangent the larger
+/// of the two), bound [`sphere::ROOT_ULPS`].
+///
+/// ```
+/// use rayoracle::check::{Status, check_sphere};
+/// use rayoracle::{Ray, sphere::{Sphere, SphereHit}};
+/// use glam::Vec3;
+/// let s = Sphere::new(Vec3::ZERO, 1.0);
+/// // Exactly tangent: aΔ = 0 is inside the band, so "none" is tolerated.
+/// let graze = Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z);
+/// assert_eq!(check_sphere(&graze, &s, SphereHit::None).unwrap().status, Status::ClassInBand);
+/// assert_eq!(check_sphere(&graze, &s, SphereHit::Tangent(5.0)).unwrap().status, Status::Checked);
+/// ```
+pub fn check_sphere(ray: &Ray, s: &Sphere, got: SphereHit) -> Result<CaseReport, Violation> {
+    let (Ok(exact), Ok(q)) = (
+        sphere::exact::intersect(ray, s),
+        sphere::exact::quadratic(ray, s),
+    ) else {
+        let mut r = report("sphere", "non_finite", got.class());
+        r.status = Status::NonFinite;
+        return Ok(r);
+    };
+    let mut r = report("sphere", exact.class(), got.class());
+    r.margin = (&q.alpha * &q.discriminant()).mul_pow2(-2).to_f64();
+    r.band = sphere::band(ray, s);
+    let in_band = r.margin.abs() <= r.band;
+    if classes(&mut r, in_band)? {
+        let k = sphere::condition(ray, s);
+        // A tangent's one root: the larger κ (both are huge or infinite).
+        let kappa = match exact {
+            SphereHit::Tangent(_) => [k[0].max(k[1]), f64::INFINITY],
+            _ => k,
+        };
+        roots(
+            &mut r,
+            exact.roots().as_slice(),
+            got.roots().as_slice(),
+            &kappa,
+            sphere::ROOT_ULPS,
+        )?;
+    }
+    Ok(r)
+}
+
+/// `2⁴⁰`: the quadric bounds are documented for `|o| < 2⁴⁰` only.
+const QUADRIC_ORIGIN_LIMIT: f32 = 1_099_511_627_776.0;
+
+/// Judges an answer to a ray–quadric case. Margin `β² − 4αγ` (exact), band
+/// [`quadric::band`], also tolerating a class mismatch when the exact
+/// `0 < |α| ≤ 2⁻⁴⁴ Σ|α terms|`; κ [`quadric::condition`] (for such an α
+/// the same κ evaluated at the exact roots), bound [`quadric::ROOT_ULPS`]. Origins with a component of magnitude `≥ 2⁴⁰`
+/// are [`Status::OutOfDomain`].
+///
+/// ```
+/// use rayoracle::check::check_quadric;
+/// use rayoracle::{Ray, quadric::{Quadric, QuadricHit}};
+/// use glam::Vec3;
+/// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+/// let ray = Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X);
+/// assert!(check_quadric(&ray, &cyl, QuadricHit::Two(4.0, 6.0)).is_ok());
+/// assert!(check_quadric(&ray, &cyl, QuadricHit::Two(4.0, 6.5)).is_err());
+/// ```
+pub fn check_quadric(ray: &Ray, q: &Quadric, got: QuadricHit) -> Result<CaseReport, Violation> {
+    let (Ok(exact), Ok(eq)) = (
+        quadric::exact::intersect(ray, q),
+        quadric::exact::quadratic(ray, q),
+    ) else {
+        let mut r = report("quadric", "non_finite", got.class());
+        r.status = Status::NonFinite;
+        return Ok(r);
+    };
+    let mut r = report("quadric", exact.class(), got.class());
+    if ray
+        .origin
+        .to_array()
+        .iter()
+        .any(|x| x.abs() >= QUADRIC_ORIGIN_LIMIT)
+    {
+        r.status = Status::OutOfDomain;
+        return Ok(r);
+    }
+    r.margin = eq.discriminant().to_f64();
+    r.band = quadric::band(ray, q);
+    let (alpha_terms, _, _) = quadric::terms(ray, q);
+    let sa: f64 = alpha_terms.iter().map(|x| x.abs()).sum();
+    let alpha = eq.alpha.to_f64().abs();
+    let alpha_in_band = !eq.alpha.is_zero() && alpha <= sa * 2f64.powi(-44);
+    let in_band = r.margin.abs() <= r.band || alpha_in_band;
+    if classes(&mut r, in_band)? {
+        // `condition` finds the roots again in f64, which cannot see an α
+        // this small (it may take it for 0 and give the linear root's κ to
+        // both); there, evaluate the same κ at the exact roots instead.
+        let kappa = if alpha_in_band {
+            let mut k = [f64::INFINITY; 2];
+            for (i, t) in exact.roots().as_slice().iter().enumerate() {
+                k[i] = quadric_kappa_at(ray, q, &eq, *t as f64);
+            }
+            k
+        } else {
+            quadric::condition(ray, q)
+        };
+        roots(
+            &mut r,
+            exact.roots().as_slice(),
+            got.roots().as_slice(),
+            &kappa,
+            quadric::ROOT_ULPS,
+        )?;
+    }
+    Ok(r)
+}
+
+/// [`quadric::condition`]'s κ, `(3Σ|α terms| t² + 3Σ|β terms| |t| +
+/// 3Σ|γ terms|) / (|2αt + β| |t|)`, at a given root `t`, with the exact α
+/// and β in `p'(t) = 2αt + β`.
+fn quadric_kappa_at(ray: &Ray, q: &Quadric, eq: &crate::exact::Quadratic, t: f64) -> f64 {
+    if t == 0.0 {
+        return 0.0;
+    }
+    let (at, bt, gt) = quadric::terms(ray, q);
+    let abs_sum = |xs: &[f64]| xs.iter().map(|x| x.abs()).sum::<f64>();
+    let (sa, sb, sg) = (abs_sum(&at), abs_sum(&bt), abs_sum(&gt));
+    let dp = (2.0 * eq.alpha.to_f64() * t + eq.beta.to_f64()).abs();
+    (3.0 * sa * t * t + 3.0 * sb * t.abs() + 3.0 * sg) / (dp * t.abs())
+}
+
+/// Whether two camera errors are the same (NaN angles compare by bits).
+fn same_error(a: &CameraError, b: &CameraError) -> bool {
+    match (a, b) {
+        (CameraError::AngleOutOfRange(x), CameraError::AngleOutOfRange(y)) => {
+            x.to_bits() == y.to_bits()
+        }
+        _ => a == b,
+    }
+}
+
+/// Judges an answer (`got`, the ray for `pixel` or a construction error) to
+/// a camera case against [`camera::exact::ray`].
+///
+/// ```
+/// use rayoracle::check::{Status, check_camera};
+/// use rayoracle::camera::CameraParams;
+/// use glam::Vec3;
+/// let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [64, 48]);
+/// let got = p.build().map(|cam| cam.ray(5, 7));
+/// assert_eq!(check_camera(&p, [5, 7], got).unwrap().status, Status::Checked);
+/// let bad = CameraParams::new(Vec3::ZERO, Vec3::Y, Vec3::Y, 1.0, [64, 48]);
+/// let r = check_camera(&bad, [0, 0], bad.build().map(|cam| cam.ray(0, 0))).unwrap();
+/// assert_eq!((r.status, r.exact_class), (Status::Rejected, "error"));
+/// ```
+pub fn check_camera(
+    p: &CameraParams,
+    pixel: [u32; 2],
+    got: Result<Ray, CameraError>,
+) -> Result<CaseReport, Violation> {
+    let exact = camera::exact::ray(p, pixel[0], pixel[1]);
+    let class = |x: &Result<Ray, CameraError>| if x.is_ok() { "ray" } else { "error" };
+    let mut r = report("camera", class(&exact), class(&got));
+    let (exact, got) = match (exact, got) {
+        (Ok(e), Ok(g)) => (e, g),
+        (Err(e), Err(g)) if same_error(&e, &g) => {
+            r.status = Status::Rejected;
+            return Ok(r);
+        }
+        (e, g) => {
+            return Err(Violation::Construction {
+                exact: e.err(),
+                got: g.err(),
+            });
+        }
+    };
+    let bits = |v: glam::Vec3| v.to_array().map(f32::to_bits);
+    if bits(got.origin) != bits(p.position) {
+        return Err(Violation::Origin {
+            exact: p.position.to_array(),
+            got: got.origin.to_array(),
+        });
+    }
+    // The scale Sᵢ is defined by the reference camera's basis.
+    let cam = p
+        .build()
+        .expect("the oracle built it, so the reference does");
+    let scale = camera::component_scale(&cam, pixel[0], pixel[1]);
+    for (axis, &scale) in scale.iter().enumerate() {
+        let (e, g) = (exact.dir[axis], got.dir[axis]);
+        let diff = if e == g {
+            0.0
+        } else {
+            (g as f64 - e as f64).abs()
+        };
+        let c = ComponentCheck {
+            axis,
+            exact: e,
+            got: g,
+            scale,
+            err_ulps: diff / ulp_of(scale),
+            bound: camera::COMPONENT_ULPS,
+        };
+        r.components.push(c);
+        if !c.ok() {
+            return Err(Violation::Component(c));
+        }
+    }
+    Ok(r)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    #[test]
+    fn sphere_margin_is_a_times_quarter_discriminant() {
+        // d = (0,0,2), o = (0,0,-5), unit sphere: a = 4, b = -10, c = 24,
+        // Δ = b² − ac = 100 − 96 = 4, aΔ = 16.
+        let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::new(0.0, 0.0, 2.0));
+        let r = check_sphere(
+            &ray,
+            &Sphere::new(Vec3::ZERO, 1.0),
+            SphereHit::Two(2.0, 3.0),
+        )
+        .unwrap();
+        assert_eq!(r.margin, 16.0);
+        assert_eq!(
+            r.margin,
+            sphere::scaled_discriminant(&ray, &Sphere::new(Vec3::ZERO, 1.0))
+        );
+    }
+
+    #[test]
+    fn quadric_small_but_clear_alpha_is_not_tolerated_as_linear() {
+        // z = x² + y² along a direction tilted by ε = 2^-30 from the axis:
+        // α = ε² is all of Σ|α terms|, so it is not in the α band, and
+        // β² − 4αγ = 1 − 8ε² is far outside the discriminant band: the
+        // exact answer is two roots (≈ 2 and ≈ 2^60), and "one" is wrong.
+        let p = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0]);
+        let ray = Ray::new(
+            Vec3::new(0.0, 0.0, -2.0),
+            Vec3::new(2f32.powi(-30), 0.0, 1.0),
+        );
+        let r = check_quadric(&ray, &p, QuadricHit::One(2.0));
+        assert!(matches!(
+            r,
+            Err(Violation::Class {
+                exact: "two",
+                got: "one",
+                ..
+            })
+        ));
+    }
+
+    #[test]
+    fn quadric_alpha_in_its_band_tolerates_a_linear_answer() {
+        // (x − y)² = 1 along d = (1, 1 + 2⁻²³, 0): α = 2⁻⁴⁶, about 2⁻⁴⁸ of
+        // Σ|α terms|, so the reference may take α for 0; roots ±2²³.
+        let q = Quadric::new([1.0, 1.0, 0.0, -2.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+        let ray = Ray::new(Vec3::ZERO, Vec3::new(1.0, 1.0 + f32::EPSILON, 0.0));
+        let two = QuadricHit::Two(-8388608.0, 8388608.0);
+        assert_eq!(quadric::exact::intersect(&ray, &q), Ok(two));
+        let r = check_quadric(&ray, &q, QuadricHit::None).unwrap();
+        assert_eq!(r.status, Status::ClassInBand);
+        let r = check_quadric(&ray, &q, two).unwrap();
+        assert_eq!(r.max_root_ulps(), Some(0));
+        // Both roots are as ill-conditioned as α itself (κ ≈ 6·2⁴⁶).
+        assert!(
+            r.roots
+                .iter()
+                .all(|x| x.kappa > 2f64.powi(46) && x.kappa.is_finite())
+        );
+    }
+
+    #[test]
+    fn camera_construction_disagreement_is_a_violation() {
+        let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [4, 4]);
+        let v = check_camera(&p, [0, 0], Err(CameraError::DirZero)).unwrap_err();
+        assert_eq!(
+            v,
+            Violation::Construction {
+                exact: None,
+                got: Some(CameraError::DirZero)
+            }
+        );
+        let moved = Ray::new(Vec3::X, p.build().unwrap().ray(0, 0).dir);
+        assert!(matches!(
+            check_camera(&p, [0, 0], Ok(moved)),
+            Err(Violation::Origin { .. })
+        ));
+    }
+}

@@ -1,0 +1,106 @@
+//! Ray–plane: the three cases (hit, parallel, in-plane), judged by
+//! `rayoracle::check`, with the exact class asserted where the construction
+//! fixes it.
+
+mod support;
+
+use glam::Vec3;
+use proptest::prelude::*;
+use rayoracle::Ray;
+use rayoracle::check::{Status, check_plane};
+use rayoracle::plane::{Plane, PlaneHit, exact, reference};
+use support::*;
+
+fn judge(ray: &Ray, p: &Plane) -> Result<rayoracle::check::CaseReport, TestCaseError> {
+    checked(check_plane(ray, p, reference::intersect(ray, p)))
+}
+
+proptest! {
+    /// Arbitrary floats of moderate size: almost always a hit.
+    #[test]
+    fn random_planes(o in vec_in(100.0), d in vec_in(10.0), a in vec_in(100.0), n in vec_in(10.0)) {
+        judge(&Ray::new(o, d), &Plane::new(a, n))?;
+    }
+
+    /// `d·n ≠ 0` by construction (integers times powers of two): a hit,
+    /// wherever the plane is and however the vectors are scaled, from
+    /// subnormal normals to planes at 10³⁰.
+    #[test]
+    fn hit(
+        n in ivec_nonzero(50), d in ivec_nonzero(50),
+        sn in pow2(-149 + 6, 100), sd in pow2(-100, 100),
+        o in vec_in(1.0), a in vec_in(1.0), so in log_uniform(-30.0, 30.0), sa in log_uniform(-30.0, 30.0),
+    ) {
+        prop_assume!(idot(n, d) != 0);
+        let ray = Ray::new(o * so, scaled(d, sd));
+        let plane = Plane::new(a * sa, scaled(n, sn));
+        let r = judge(&ray, &plane)?;
+        prop_assert_eq!(r.exact_class, "hit");
+        prop_assert_eq!(r.status, Status::Checked);
+    }
+
+    /// `d ⟂ n` exactly and the origin off the plane (integer data times
+    /// powers of two): parallel, and the reference must see the exact zero.
+    #[test]
+    fn parallel(
+        n in ivec_nonzero(40), w in ivec(40), pa in ivec(1000), po in ivec(1000),
+        sn in pow2(-120, 100), sd in pow2(-100, 100), sp in pow2(-60, 60),
+    ) {
+        let d = perp(n, w);
+        prop_assume!(idot(add(pa, mul(-1, po)), n) != 0);
+        let ray = Ray::new(scaled(po, sp), scaled(d, sd));
+        let plane = Plane::new(scaled(pa, sp), scaled(n, sn));
+        prop_assert_eq!(exact::intersect(&ray, &plane), Ok(PlaneHit::Parallel));
+        prop_assert_eq!(reference::intersect(&ray, &plane), PlaneHit::Parallel);
+        judge(&ray, &plane)?;
+    }
+
+    /// `d ⟂ n` and the origin exactly on the plane: every `t`.
+    #[test]
+    fn in_plane(
+        n in ivec_nonzero(40), w in ivec(40), e1 in ivec(40), e2 in ivec(40), pa in ivec(1000),
+        u in -20i32..=20, v in -20i32..=20,
+        sn in pow2(-120, 100), sd in pow2(-100, 100), sp in pow2(-60, 60),
+    ) {
+        let d = perp(n, w);
+        // o = a + u (n × e1) + v (n × e2) lies on the plane.
+        let po = add(pa, add(mul(u, cross(n, e1)), mul(v, cross(n, e2))));
+        let ray = Ray::new(scaled(po, sp), scaled(d, sd));
+        let plane = Plane::new(scaled(pa, sp), scaled(n, sn));
+        prop_assert_eq!(exact::intersect(&ray, &plane), Ok(PlaneHit::InPlane));
+        prop_assert_eq!(reference::intersect(&ray, &plane), PlaneHit::InPlane);
+        judge(&ray, &plane)?;
+    }
+
+    /// The origin exactly on the plane but the ray crossing it: `t = 0`.
+    #[test]
+    fn origin_on_plane(
+        n in ivec_nonzero(40), d in ivec_nonzero(40), e1 in ivec(40), pa in ivec(1000), u in -20i32..=20,
+        sn in pow2(-120, 100), sd in pow2(-100, 100), sp in pow2(-60, 60),
+    ) {
+        prop_assume!(idot(n, d) != 0);
+        let po = add(pa, mul(u, cross(n, e1)));
+        let ray = Ray::new(scaled(po, sp), scaled(d, sd));
+        let plane = Plane::new(scaled(pa, sp), scaled(n, sn));
+        let Ok(PlaneHit::Hit(t)) = exact::intersect(&ray, &plane) else {
+            return Err(TestCaseError::fail("the exact class is not hit"));
+        };
+        prop_assert_eq!(t, 0.0);
+        let PlaneHit::Hit(t) = reference::intersect(&ray, &plane) else {
+            return Err(TestCaseError::fail("the reference class is not hit"));
+        };
+        prop_assert_eq!(t, 0.0);
+        judge(&ray, &plane)?;
+    }
+
+    /// Nearly parallel rays (`d = d⟂ + ε n`): the class may flip only inside
+    /// the band, and a hit must still be accurate for its condition number.
+    #[test]
+    fn nearly_parallel(
+        n in unitish(), w in unitish(), o in vec_in(10.0), a in vec_in(10.0), eps in log_uniform(-12.0, -1.0),
+    ) {
+        let d = n.cross(w) + eps * n;
+        prop_assume!(d != Vec3::ZERO);
+        judge(&Ray::new(o, d), &Plane::new(a, n))?;
+    }
+}

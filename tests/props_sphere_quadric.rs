@@ -1,0 +1,79 @@
+//! The sphere as a quadric (seed 1.4b): for spheres with small integer
+//! centre and radius `Quadric::from_sphere` is exact, the two exact oracles
+//! solve the same polynomial, and the two references must agree wherever
+//! neither is inside its band.
+
+mod support;
+
+use proptest::prelude::*;
+use rayoracle::Ray;
+use rayoracle::check::{Status, check_quadric, check_sphere};
+use rayoracle::quadric::{self, Quadric, QuadricHit};
+use rayoracle::sphere::{self, Sphere, SphereHit};
+use support::*;
+
+/// The quadric class that corresponds to a sphere class.
+fn as_quadric(h: SphereHit) -> QuadricHit {
+    match h {
+        SphereHit::None => QuadricHit::None,
+        SphereHit::Tangent(t) => QuadricHit::One(t),
+        SphereHit::Two(t0, t1) => QuadricHit::Two(t0, t1),
+    }
+}
+
+fn compare(ray: &Ray, s: &Sphere) -> Result<(), TestCaseError> {
+    let (q, exact) = Quadric::from_sphere(s);
+    prop_assert!(exact, "from_sphere is not exact for {:?}", s);
+    // Same polynomial, so the same class and bit-identical roots.
+    let es = sphere::exact::intersect(ray, s).map(as_quadric);
+    let eq = quadric::exact::intersect(ray, &q);
+    prop_assert_eq!(es, eq);
+    // Each reference is acceptable against its oracle...
+    let rs = checked(check_sphere(ray, s, sphere::reference::intersect(ray, s)))?;
+    let rq = checked(check_quadric(
+        ray,
+        &q,
+        quadric::reference::intersect(ray, &q),
+    ))?;
+    // ...and where both classify outside their bands, they agree.
+    if rs.status == Status::Checked && rq.status == Status::Checked {
+        let rs_class = as_quadric(sphere::reference::intersect(ray, s));
+        let rq_class = quadric::reference::intersect(ray, &q);
+        prop_assert_eq!(
+            std::mem::discriminant(&rs_class),
+            std::mem::discriminant(&rq_class),
+            "sphere reference {:?}, quadric reference {:?}",
+            rs_class,
+            rq_class
+        );
+    }
+    Ok(())
+}
+
+proptest! {
+    /// Integer spheres, arbitrary float rays.
+    #[test]
+    fn integer_sphere_float_ray(c in ivec(8), r in 1i32..=8, o in vec_in(20.0), d in vec_in(4.0)) {
+        compare(&Ray::new(o, d), &Sphere::new(scaled(c, 1.0), r as f32))?;
+    }
+
+    /// Integer spheres seen from an integer origin aimed near the centre
+    /// (mostly two roots, some none).
+    #[test]
+    fn integer_sphere_aimed(c in ivec(8), r in 1i32..=8, o in ivec(30), aim in ivec(8)) {
+        let d = add(add(c, aim), mul(-1, o));
+        prop_assume!(d != [0, 0, 0]);
+        compare(&Ray::new(scaled(o, 1.0), scaled(d, 1.0)), &Sphere::new(scaled(c, 1.0), r as f32))?;
+    }
+
+    /// Exact tangents (Pythagorean quadruples): sphere tangent ↔ quadric one.
+    #[test]
+    fn integer_tangent((v, r) in pythagorean_quadruple(2), c in ivec(8), w in ivec(3), s in -8i32..=8) {
+        let d = perp(v, w);
+        let o = add(add(c, v), mul(-s, d));
+        let ray = Ray::new(scaled(o, 1.0), scaled(d, 1.0));
+        let sphere = Sphere::new(scaled(c, 1.0), r as f32);
+        prop_assert_eq!(sphere::exact::intersect(&ray, &sphere), Ok(SphereHit::Tangent(s as f32)));
+        compare(&ray, &sphere)?;
+    }
+}
