@@ -1,6 +1,7 @@
 pub mod camera;
 pub mod case;
 pub mod check;
+pub mod eval;
 pub mod exact;
 pub mod hit;
 pub mod num;

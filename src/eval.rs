@@ -1,0 +1,1022 @@
+//! `rayoracle eval`: one case per input line in, one JSON line out, with
+//! every implementation's result and its error against the exact oracle.
+//!
+//! ```text
+//! {"line":N,"kind":K[,"family":F],"results":{"exact":{…},"reference":{…},…}}
+//! {"line":N,"kind":"camera"[,"family":F],"error":"<field>: …"}   camera cannot be built
+//! {"line":N,"error":"<field>: …"}                                 malformed line
+//! ```
+//!
+//! * `exact` comes first, then every [`Implementation`] in
+//!   [`Implementation::ALL`] order.
+//! * A plane, sphere or quadric result is
+//!   `{"class":C,"roots":[..],"roots_bits":["0x…",..]}`; a camera result is
+//!   `{"class":"ray","origin":[..],"dir":[..],"dir_bits":[..]}`. Numbers are
+//!   the shortest text that reads back as the same `f32` (`null` for NaN and
+//!   ±∞); the `*_bits` strings are the exact bits.
+//! * Each implementation then gets `"class_match"`: `true` with `"ulps"` and
+//!   `"bits"` per root (per direction component for a camera) against the
+//!   exact result, or `false` with `"ulps":null,"bits":null`.
+//! * If the exact oracle cannot judge the input (NaN or ∞), `exact` is
+//!   `{"error":…}` and the implementations carry no comparison.
+//!
+//! [`evaluate`] gives the typed [`LineReport`], [`eval_line`] its JSON, and
+//! [`Summary`] tallies reports into a table.
+
+use crate::Ray;
+use crate::case::{Case, CaseError, parse_line};
+use crate::hit::{Intersection, Roots};
+use crate::{camera, plane, quadric, sphere, ulp};
+use serde::Serialize;
+use serde::ser::{SerializeMap, Serializer};
+use std::fmt::Write as _;
+
+/// An implementation under test: one column of `eval` output. Adding an
+/// implementation is adding a variant, its [`name`](Implementation::name),
+/// its [`run`](Implementation::run) and an entry in [`ALL`](Implementation::ALL).
+///
+/// ```
+/// use rayoracle::eval::Implementation;
+/// assert_eq!(Implementation::ALL[0].name(), "reference");
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Implementation {
+    /// The scalar references: `plane::reference`, `sphere::reference`,
+    /// `quadric::reference` and `camera::Camera`.
+    Reference,
+}
+
+impl Implementation {
+    /// Every implementation, in output order (after `exact`).
+    ///
+    /// ```
+    /// use rayoracle::eval::Implementation;
+    /// assert!(Implementation::ALL.contains(&Implementation::Reference));
+    /// ```
+    pub const ALL: &'static [Implementation] = &[Implementation::Reference];
+
+    /// The key in `eval` output.
+    ///
+    /// ```
+    /// use rayoracle::eval::Implementation;
+    /// assert_eq!(Implementation::Reference.name(), "reference");
+    /// ```
+    pub fn name(self) -> &'static str {
+        match self {
+            Implementation::Reference => "reference",
+        }
+    }
+
+    /// Runs this implementation on a case.
+    ///
+    /// ```
+    /// use rayoracle::case::parse_line;
+    /// use rayoracle::eval::{Implementation, Outcome};
+    /// use rayoracle::hit::Roots;
+    /// let c = parse_line(r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap();
+    /// assert_eq!(
+    ///     Implementation::Reference.run(&c.case),
+    ///     Outcome::Hit { class: "two", roots: Roots::two(4.0, 6.0) }
+    /// );
+    /// ```
+    pub fn run(self, case: &Case) -> Outcome {
+        match self {
+            Implementation::Reference => match case {
+                Case::Plane(r, p) => Outcome::hit(&plane::reference::intersect(r, p)),
+                Case::Sphere(r, s) => Outcome::hit(&sphere::reference::intersect(r, s)),
+                Case::Quadric(r, q) => Outcome::hit(&quadric::reference::intersect(r, q)),
+                Case::Camera(p, [px, py]) => match p.build() {
+                    Ok(cam) => Outcome::Ray(cam.ray(*px, *py)),
+                    Err(e) => Outcome::Error(e.to_string()),
+                },
+            },
+        }
+    }
+}
+
+/// The exact oracle's answer for a case: correctly rounded roots for the
+/// primitives, the f64 camera oracle's ray for a camera.
+///
+/// ```
+/// use rayoracle::case::parse_line;
+/// use rayoracle::eval::{exact, Outcome};
+/// let c = parse_line(r#"{"kind":"plane","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,2],"normal":[0,0,1]}"#).unwrap();
+/// assert_eq!(exact(&c.case).class(), Some("hit"));
+/// let nan = parse_line(r#"{"kind":"plane","origin":["nan",0,0],"dir":[0,0,1],"point":[0,0,2],"normal":[0,0,1]}"#).unwrap();
+/// assert!(matches!(exact(&nan.case), Outcome::Error(_)));
+/// ```
+pub fn exact(case: &Case) -> Outcome {
+    fn or_error<T>(r: Result<T, impl ToString>, f: impl FnOnce(T) -> Outcome) -> Outcome {
+        r.map_or_else(|e| Outcome::Error(e.to_string()), f)
+    }
+    match case {
+        Case::Plane(r, p) => or_error(plane::exact::intersect(r, p), |h| Outcome::hit(&h)),
+        Case::Sphere(r, s) => or_error(sphere::exact::intersect(r, s), |h| Outcome::hit(&h)),
+        Case::Quadric(r, q) => or_error(quadric::exact::intersect(r, q), |h| Outcome::hit(&h)),
+        Case::Camera(p, [px, py]) => or_error(camera::exact::ray(p, *px, *py), Outcome::Ray),
+    }
+}
+
+/// What one implementation (or the exact oracle) produced for one case.
+///
+/// ```
+/// use rayoracle::eval::Outcome;
+/// use rayoracle::hit::Roots;
+/// use rayoracle::sphere::SphereHit;
+/// let o = Outcome::hit(&SphereHit::Tangent(5.0));
+/// assert_eq!(o, Outcome::Hit { class: "tangent", roots: Roots::one(5.0) });
+/// assert_eq!(o.class(), Some("tangent"));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub enum Outcome {
+    /// A classified plane, sphere or quadric result.
+    Hit {
+        /// The class name ([`Intersection::class`]).
+        class: &'static str,
+        /// The roots, ascending.
+        roots: Roots,
+    },
+    /// A camera ray.
+    Ray(Ray),
+    /// No result; the message says why.
+    Error(String),
+}
+
+impl Outcome {
+    /// The outcome of an [`Intersection`].
+    ///
+    /// ```
+    /// use rayoracle::eval::Outcome;
+    /// use rayoracle::plane::PlaneHit;
+    /// assert_eq!(Outcome::hit(&PlaneHit::Parallel).class(), Some("parallel"));
+    /// ```
+    pub fn hit(h: &impl Intersection) -> Outcome {
+        Outcome::Hit {
+            class: h.class(),
+            roots: h.roots(),
+        }
+    }
+
+    /// The class name (`"ray"` for a camera ray), or `None` for an error.
+    ///
+    /// ```
+    /// use rayoracle::eval::Outcome;
+    /// assert_eq!(Outcome::Error("no".into()).class(), None);
+    /// ```
+    pub fn class(&self) -> Option<&'static str> {
+        match self {
+            Outcome::Hit { class, .. } => Some(class),
+            Outcome::Ray(_) => Some("ray"),
+            Outcome::Error(_) => None,
+        }
+    }
+
+    /// The values compared against the exact result: the roots, or a camera
+    /// ray's direction components; empty for an error.
+    ///
+    /// ```
+    /// use rayoracle::eval::Outcome;
+    /// use rayoracle::Ray;
+    /// use glam::Vec3;
+    /// let o = Outcome::Ray(Ray::new(Vec3::ZERO, Vec3::new(1.0, 2.0, 3.0)));
+    /// assert_eq!(o.values(), vec![1.0, 2.0, 3.0]);
+    /// ```
+    pub fn values(&self) -> Vec<f32> {
+        match self {
+            Outcome::Hit { roots, .. } => roots.as_slice().to_vec(),
+            Outcome::Ray(r) => r.dir.to_array().to_vec(),
+            Outcome::Error(_) => Vec::new(),
+        }
+    }
+}
+
+/// How an implementation's outcome compares with the exact one.
+///
+/// ```
+/// use rayoracle::eval::{compare, Comparison, Outcome};
+/// use rayoracle::sphere::SphereHit;
+/// let exact = Outcome::hit(&SphereHit::Two(4.0, 6.0));
+/// let near = Outcome::hit(&SphereHit::Two(4.0, 6.0000005));
+/// assert_eq!(compare(&exact, &near), Comparison::Ulps(vec![0, 1]));
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Comparison {
+    /// The exact oracle has no answer, so nothing is compared.
+    NotCompared,
+    /// The classes differ (or the implementation failed).
+    ClassMismatch,
+    /// The classes agree; ULP distance per root or component.
+    Ulps(Vec<u64>),
+}
+
+/// Compares an implementation's outcome with the exact one: the class
+/// first, then [`ulp::ulps`] value by value.
+///
+/// ```
+/// use rayoracle::eval::{compare, Comparison, Outcome};
+/// use rayoracle::sphere::SphereHit;
+/// let exact = Outcome::hit(&SphereHit::Tangent(5.0));
+/// assert_eq!(compare(&exact, &Outcome::hit(&SphereHit::None)), Comparison::ClassMismatch);
+/// assert_eq!(compare(&Outcome::Error("x".into()), &exact), Comparison::NotCompared);
+/// ```
+pub fn compare(exact: &Outcome, other: &Outcome) -> Comparison {
+    match (exact.class(), other.class()) {
+        (None, _) => Comparison::NotCompared,
+        (Some(a), Some(b)) if a == b => Comparison::Ulps(
+            exact
+                .values()
+                .iter()
+                .zip(other.values())
+                .map(|(&e, o)| ulp::ulps(e, o))
+                .collect(),
+        ),
+        _ => Comparison::ClassMismatch,
+    }
+}
+
+/// One implementation's column: its outcome and how it compares.
+///
+/// ```
+/// use rayoracle::case::parse_line;
+/// use rayoracle::eval::{evaluate, Comparison, LineReport};
+/// let line = r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#;
+/// let Some(LineReport::Evaluated(e)) = evaluate(1, line) else { panic!() };
+/// assert_eq!(e.columns[0].comparison, Comparison::Ulps(vec![0, 0]));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Column {
+    /// Which implementation.
+    pub implementation: Implementation,
+    /// What it produced.
+    pub outcome: Outcome,
+    /// Against the exact outcome.
+    pub comparison: Comparison,
+}
+
+/// A case that was evaluated: the exact outcome and one column per
+/// implementation, in [`Implementation::ALL`] order.
+///
+/// ```
+/// use rayoracle::eval::{evaluate, LineReport};
+/// let line = r#"{"kind":"quadric","family":"cyl","origin":[-5,0,0],"dir":[1,0,0],"coeffs":[1,1,0,0,0,0,0,0,0,-1]}"#;
+/// let Some(LineReport::Evaluated(e)) = evaluate(7, line) else { panic!() };
+/// assert_eq!((e.line, e.kind, e.family.as_deref()), (7, "quadric", Some("cyl")));
+/// assert_eq!(e.exact.values(), vec![4.0, 6.0]);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Evaluation {
+    /// 1-based input line number.
+    pub line: usize,
+    /// The case's kind.
+    pub kind: &'static str,
+    /// The case's `family`, if given.
+    pub family: Option<String>,
+    /// The exact oracle's outcome.
+    pub exact: Outcome,
+    /// One column per implementation.
+    pub columns: Vec<Column>,
+}
+
+/// The typed result of one non-blank input line.
+///
+/// ```
+/// use rayoracle::eval::{evaluate, LineReport};
+/// let r = evaluate(3, r#"{"kind":"sphere","origin":[0,0,0],"dir":[0,0,1],"center":[0,0,0]}"#).unwrap();
+/// assert!(r.is_error());
+/// assert_eq!(r.line(), 3);
+/// assert!(evaluate(4, "   ").is_none());
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub enum LineReport {
+    /// The line is not a valid case.
+    Malformed {
+        /// 1-based line number.
+        line: usize,
+        /// What is wrong, naming the field.
+        error: CaseError,
+    },
+    /// The line is a well-formed case that has no meaning (a camera that
+    /// cannot be built).
+    Invalid {
+        /// 1-based line number.
+        line: usize,
+        /// The case's kind.
+        kind: &'static str,
+        /// The case's `family`, if given.
+        family: Option<String>,
+        /// Why, starting with the field name.
+        error: String,
+    },
+    /// The evaluation itself failed (a panic in an implementation, caught).
+    Internal {
+        /// 1-based line number.
+        line: usize,
+        /// The panic message.
+        error: String,
+    },
+    /// The case was evaluated.
+    Evaluated(Evaluation),
+}
+
+impl LineReport {
+    /// The 1-based input line number.
+    ///
+    /// ```
+    /// use rayoracle::eval::evaluate;
+    /// assert_eq!(evaluate(12, "{").unwrap().line(), 12);
+    /// ```
+    pub fn line(&self) -> usize {
+        match self {
+            LineReport::Malformed { line, .. }
+            | LineReport::Invalid { line, .. }
+            | LineReport::Internal { line, .. } => *line,
+            LineReport::Evaluated(e) => e.line,
+        }
+    }
+
+    /// Whether the line could not be evaluated (the output line has a
+    /// top-level `"error"`). An input the exact oracle cannot judge (NaN, ∞)
+    /// is still evaluated: its error is inside `results.exact`.
+    ///
+    /// ```
+    /// use rayoracle::eval::evaluate;
+    /// let nan = r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":"nan"}"#;
+    /// assert!(!evaluate(1, nan).unwrap().is_error());
+    /// assert!(evaluate(1, "[]").unwrap().is_error());
+    /// ```
+    pub fn is_error(&self) -> bool {
+        !matches!(self, LineReport::Evaluated(_))
+    }
+
+    /// The JSON line (no newline).
+    ///
+    /// ```
+    /// use rayoracle::eval::evaluate;
+    /// assert_eq!(evaluate(2, "{}").unwrap().to_json(), r#"{"line":2,"error":"kind: missing"}"#);
+    /// ```
+    pub fn to_json(&self) -> String {
+        self.to_json_in(None)
+    }
+
+    /// The JSON line with a leading `"file"` key when `file` is given, for
+    /// output that merges several input files.
+    ///
+    /// ```
+    /// use rayoracle::eval::evaluate;
+    /// assert_eq!(
+    ///     evaluate(2, "{}").unwrap().to_json_in(Some("a.jsonl")),
+    ///     r#"{"file":"a.jsonl","line":2,"error":"kind: missing"}"#
+    /// );
+    /// ```
+    pub fn to_json_in(&self, file: Option<&str>) -> String {
+        let json = match self {
+            LineReport::Malformed { line, error } => serde_json::to_string(&ErrorJson {
+                file,
+                line: *line,
+                kind: None,
+                family: None,
+                error: &error.to_string(),
+            }),
+            LineReport::Invalid {
+                line,
+                kind,
+                family,
+                error,
+            } => serde_json::to_string(&ErrorJson {
+                file,
+                line: *line,
+                kind: Some(kind),
+                family: family.as_deref(),
+                error,
+            }),
+            LineReport::Internal { line, error } => serde_json::to_string(&ErrorJson {
+                file,
+                line: *line,
+                kind: None,
+                family: None,
+                error,
+            }),
+            LineReport::Evaluated(e) => serde_json::to_string(&EvaluationJson {
+                file,
+                line: e.line,
+                kind: e.kind,
+                family: e.family.as_deref(),
+                results: ResultsJson(e),
+            }),
+        };
+        // Every value above is a string, number, bool, null or a sequence or
+        // map of them with string keys: serialisation cannot fail.
+        json.unwrap_or_else(|e| format!(r#"{{"error":"internal: {e}"}}"#))
+    }
+}
+
+/// Evaluates one input line: `None` for a blank line (only whitespace),
+/// otherwise the [`LineReport`]. Never panics: a panic inside an
+/// implementation becomes [`LineReport::Internal`].
+///
+/// ```
+/// use rayoracle::eval::{evaluate, LineReport, Outcome};
+/// let line = r#"{"kind":"camera","position":[0,0,0],"dir":[0,0,-1],"up":[0,1,0],"angle":1,"res":[3,3],"pixel":[1,1]}"#;
+/// let Some(LineReport::Evaluated(e)) = evaluate(1, line) else { panic!() };
+/// assert!(matches!(e.exact, Outcome::Ray(r) if r.dir.z == -1.0));
+/// ```
+pub fn evaluate(line_no: usize, line: &str) -> Option<LineReport> {
+    if line.trim().is_empty() {
+        return None;
+    }
+    let parsed = match parse_line(line) {
+        Ok(c) => c,
+        Err(error) => {
+            return Some(LineReport::Malformed {
+                line: line_no,
+                error,
+            });
+        }
+    };
+    let run = || {
+        let case = &parsed.case;
+        if let Case::Camera(p, _) = case
+            && let Err(e) = p.build()
+        {
+            return LineReport::Invalid {
+                line: line_no,
+                kind: case.kind(),
+                family: parsed.family.clone(),
+                error: e.to_string(),
+            };
+        }
+        let exact = exact(case);
+        let columns = Implementation::ALL
+            .iter()
+            .map(|&implementation| {
+                let outcome = implementation.run(case);
+                let comparison = compare(&exact, &outcome);
+                Column {
+                    implementation,
+                    outcome,
+                    comparison,
+                }
+            })
+            .collect();
+        LineReport::Evaluated(Evaluation {
+            line: line_no,
+            kind: case.kind(),
+            family: parsed.family.clone(),
+            exact,
+            columns,
+        })
+    };
+    Some(std::panic::catch_unwind(run).unwrap_or_else(|payload| {
+        let msg = payload
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "unknown panic".to_string());
+        LineReport::Internal {
+            line: line_no,
+            error: format!("internal error: {msg}"),
+        }
+    }))
+}
+
+/// Evaluates one input line and returns its JSON line (no newline); the
+/// empty string for a blank line, which produces no output.
+///
+/// ```
+/// use rayoracle::eval::eval_line;
+/// let out = eval_line(1, r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#);
+/// assert_eq!(out, concat!(
+///     r#"{"line":1,"kind":"sphere","results":{"#,
+///     r#""exact":{"class":"two","roots":[4.0,6.0],"roots_bits":["0x40800000","0x40c00000"]},"#,
+///     r#""reference":{"class":"two","roots":[4.0,6.0],"roots_bits":["0x40800000","0x40c00000"],"#,
+///     r#""class_match":true,"ulps":[0,0],"bits":[0.0,0.0]}}}"#,
+/// ));
+/// assert_eq!(eval_line(3, r#"{"kind":"sphere"}"#), r#"{"line":3,"error":"origin: missing"}"#);
+/// assert_eq!(eval_line(4, "  "), "");
+/// ```
+pub fn eval_line(line_no: usize, line: &str) -> String {
+    evaluate(line_no, line)
+        .map(|r| r.to_json())
+        .unwrap_or_default()
+}
+
+// ---------------------------------------------------------------------------
+// JSON shapes. Field order here is the output's key order.
+
+#[derive(Serialize)]
+struct ErrorJson<'a> {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    file: Option<&'a str>,
+    line: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    kind: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    family: Option<&'a str>,
+    error: &'a str,
+}
+
+#[derive(Serialize)]
+struct EvaluationJson<'a> {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    file: Option<&'a str>,
+    line: usize,
+    kind: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    family: Option<&'a str>,
+    results: ResultsJson<'a>,
+}
+
+/// `{"exact":…, <implementation>:…, …}` in that order.
+struct ResultsJson<'a>(&'a Evaluation);
+
+impl Serialize for ResultsJson<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let e = self.0;
+        let mut map = s.serialize_map(Some(1 + e.columns.len()))?;
+        map.serialize_entry("exact", &OutcomeJson::new(&e.exact, None))?;
+        for c in &e.columns {
+            map.serialize_entry(
+                c.implementation.name(),
+                &OutcomeJson::new(&c.outcome, Some(&c.comparison)),
+            )?;
+        }
+        map.end()
+    }
+}
+
+fn bits_str(x: f32) -> String {
+    format!("{:#010x}", x.to_bits())
+}
+
+/// The comparison keys: absent (`None`), or `class_match` with `ulps` and
+/// `bits` that are `null` on a mismatch.
+#[derive(Serialize)]
+struct ComparisonJson {
+    class_match: bool,
+    ulps: Option<Vec<u64>>,
+    bits: Option<Vec<f64>>,
+}
+
+impl ComparisonJson {
+    fn new(c: &Comparison) -> Option<ComparisonJson> {
+        match c {
+            Comparison::NotCompared => None,
+            Comparison::ClassMismatch => Some(ComparisonJson {
+                class_match: false,
+                ulps: None,
+                bits: None,
+            }),
+            Comparison::Ulps(u) => Some(ComparisonJson {
+                class_match: true,
+                ulps: Some(u.clone()),
+                bits: Some(u.iter().map(|&u| ulp::bits(u)).collect()),
+            }),
+        }
+    }
+}
+
+#[derive(Serialize)]
+#[serde(untagged)]
+enum OutcomeJson {
+    Hit {
+        class: &'static str,
+        roots: Vec<f32>,
+        roots_bits: Vec<String>,
+        #[serde(flatten)]
+        cmp: Option<ComparisonJson>,
+    },
+    Ray {
+        class: &'static str,
+        origin: [f32; 3],
+        dir: [f32; 3],
+        dir_bits: [String; 3],
+        #[serde(flatten)]
+        cmp: Option<ComparisonJson>,
+    },
+    Error {
+        error: String,
+        #[serde(flatten)]
+        cmp: Option<ComparisonJson>,
+    },
+}
+
+impl OutcomeJson {
+    fn new(o: &Outcome, c: Option<&Comparison>) -> OutcomeJson {
+        let cmp = c.and_then(ComparisonJson::new);
+        match o {
+            Outcome::Hit { class, roots } => OutcomeJson::Hit {
+                class,
+                roots: roots.as_slice().to_vec(),
+                roots_bits: roots.as_slice().iter().map(|&t| bits_str(t)).collect(),
+                cmp,
+            },
+            Outcome::Ray(r) => OutcomeJson::Ray {
+                class: "ray",
+                origin: r.origin.to_array(),
+                dir: r.dir.to_array(),
+                dir_bits: r.dir.to_array().map(bits_str),
+                cmp,
+            },
+            Outcome::Error(e) => OutcomeJson::Error {
+                error: e.clone(),
+                cmp,
+            },
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Summary.
+
+const KINDS: [&str; 4] = ["plane", "sphere", "quadric", "camera"];
+
+/// Per kind and implementation: how its results compare with the exact ones.
+///
+/// ```
+/// use rayoracle::eval::ImplTally;
+/// let t = ImplTally::default();
+/// assert_eq!((t.compared, t.class_mismatches, t.values, t.zero_ulp, t.max_ulps), (0, 0, 0, 0, 0));
+/// ```
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct ImplTally {
+    /// Cases compared (the exact oracle had an answer).
+    pub compared: usize,
+    /// Compared cases whose class differs from the exact one.
+    pub class_mismatches: usize,
+    /// Roots (or camera components) compared, in cases whose class matched.
+    pub values: usize,
+    /// Of those, how many are at 0 ulps.
+    pub zero_ulp: usize,
+    /// The largest ULP distance seen (`u64::MAX`: a NaN against a number).
+    pub max_ulps: u64,
+}
+
+/// Per kind: cases, errors, and one [`ImplTally`] per implementation.
+///
+/// ```
+/// use rayoracle::eval::KindTally;
+/// assert_eq!(KindTally::default().cases, 0);
+/// ```
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct KindTally {
+    /// Well-formed lines of this kind.
+    pub cases: usize,
+    /// Of those, how many have no exact answer (NaN/∞ input) or no meaning
+    /// (a camera that cannot be built).
+    pub errors: usize,
+    /// Per implementation, in [`Implementation::ALL`] order.
+    pub impls: Vec<ImplTally>,
+}
+
+/// Tallies [`LineReport`]s and renders a plain-text table.
+///
+/// ```
+/// use rayoracle::eval::{evaluate, Summary};
+/// let mut s = Summary::default();
+/// s.add(&evaluate(1, r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap());
+/// s.add(&evaluate(2, r#"{"kind":"sphere"}"#).unwrap());
+/// assert_eq!(s.kind("sphere").unwrap().cases, 1);
+/// assert_eq!(s.kind("sphere").unwrap().impls[0].zero_ulp, 2);
+/// assert_eq!(s.malformed, 1);
+/// assert!(!s.all_ok());
+/// assert!(s.render().contains("sphere"));
+/// ```
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Summary {
+    /// Non-blank lines seen.
+    pub lines: usize,
+    /// Lines that are not valid cases.
+    pub malformed: usize,
+    /// Well-formed cases that have no meaning (a camera that cannot be
+    /// built); also counted in their kind's `cases` and `errors`.
+    pub invalid: usize,
+    /// Lines whose evaluation panicked (caught).
+    pub internal: usize,
+    /// Per kind, in the order plane, sphere, quadric, camera.
+    pub kinds: [KindTally; 4],
+}
+
+impl Summary {
+    /// The tally for `kind`, if it is one of the four kinds.
+    ///
+    /// ```
+    /// use rayoracle::eval::Summary;
+    /// assert!(Summary::default().kind("plane").is_some());
+    /// assert!(Summary::default().kind("cube").is_none());
+    /// ```
+    pub fn kind(&self, kind: &str) -> Option<&KindTally> {
+        KINDS
+            .iter()
+            .position(|&k| k == kind)
+            .map(|i| &self.kinds[i])
+    }
+
+    fn kind_mut(&mut self, kind: &str) -> Option<&mut KindTally> {
+        let i = KINDS.iter().position(|&k| k == kind)?;
+        let t = &mut self.kinds[i];
+        if t.impls.len() < Implementation::ALL.len() {
+            t.impls
+                .resize(Implementation::ALL.len(), ImplTally::default());
+        }
+        Some(t)
+    }
+
+    /// Adds one line's report.
+    ///
+    /// ```
+    /// use rayoracle::eval::{evaluate, Summary};
+    /// let mut s = Summary::default();
+    /// s.add(&evaluate(1, r#"{"kind":"plane","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,3],"normal":["inf",0,1]}"#).unwrap());
+    /// assert_eq!(s.kind("plane").unwrap().errors, 1);
+    /// assert!(s.all_ok());
+    /// ```
+    pub fn add(&mut self, report: &LineReport) {
+        self.lines += 1;
+        match report {
+            LineReport::Malformed { .. } => self.malformed += 1,
+            LineReport::Internal { .. } => self.internal += 1,
+            LineReport::Invalid { kind, .. } => {
+                self.invalid += 1;
+                if let Some(t) = self.kind_mut(kind) {
+                    t.cases += 1;
+                    t.errors += 1;
+                }
+            }
+            LineReport::Evaluated(e) => {
+                let Some(t) = self.kind_mut(e.kind) else {
+                    return;
+                };
+                t.cases += 1;
+                if matches!(e.exact, Outcome::Error(_)) {
+                    t.errors += 1;
+                }
+                for c in &e.columns {
+                    let Some(i) = Implementation::ALL
+                        .iter()
+                        .position(|&x| x == c.implementation)
+                    else {
+                        continue;
+                    };
+                    let it = &mut t.impls[i];
+                    match &c.comparison {
+                        Comparison::NotCompared => {}
+                        Comparison::ClassMismatch => {
+                            it.compared += 1;
+                            it.class_mismatches += 1;
+                        }
+                        Comparison::Ulps(u) => {
+                            it.compared += 1;
+                            it.values += u.len();
+                            it.zero_ulp += u.iter().filter(|&&x| x == 0).count();
+                            it.max_ulps = it.max_ulps.max(u.iter().copied().max().unwrap_or(0));
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// Whether every line was evaluated (no malformed line, no camera that
+    /// cannot be built, no internal error). NaN/∞ inputs do not count
+    /// against this: they are evaluated, and only the exact oracle declines.
+    ///
+    /// ```
+    /// use rayoracle::eval::{evaluate, Summary};
+    /// let mut s = Summary::default();
+    /// assert!(s.all_ok());
+    /// s.add(&evaluate(1, "not json").unwrap());
+    /// assert!(!s.all_ok());
+    /// ```
+    pub fn all_ok(&self) -> bool {
+        self.malformed == 0 && self.invalid == 0 && self.internal == 0
+    }
+
+    /// A short plain-text table, one row per kind and implementation, and a
+    /// line for malformed input.
+    ///
+    /// ```
+    /// use rayoracle::eval::{evaluate, Summary};
+    /// let mut s = Summary::default();
+    /// s.add(&evaluate(1, r#"{"kind":"plane","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,3],"normal":[0,0,1]}"#).unwrap());
+    /// let table = s.render();
+    /// assert!(table.lines().next().unwrap().starts_with("kind"));
+    /// assert!(table.contains("plane"));
+    /// assert!(table.contains("reference"));
+    /// ```
+    pub fn render(&self) -> String {
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "{:<8} {:>6} {:>6}  {:<10} {:>8} {:>7} {:>7} {:>9}",
+            "kind", "cases", "errors", "impl", "mismatch", "values", "0-ulp", "max-ulps"
+        );
+        for (kind, t) in KINDS.iter().zip(&self.kinds) {
+            if t.cases == 0 {
+                continue;
+            }
+            for (i, imp) in Implementation::ALL.iter().enumerate() {
+                let it = t.impls.get(i).cloned().unwrap_or_default();
+                let (k, c, e) = if i == 0 {
+                    (kind.to_string(), t.cases.to_string(), t.errors.to_string())
+                } else {
+                    (String::new(), String::new(), String::new())
+                };
+                let max = if it.max_ulps == u64::MAX {
+                    "nan".to_string()
+                } else {
+                    it.max_ulps.to_string()
+                };
+                let _ = writeln!(
+                    out,
+                    "{:<8} {:>6} {:>6}  {:<10} {:>8} {:>7} {:>7} {:>9}",
+                    k,
+                    c,
+                    e,
+                    imp.name(),
+                    it.class_mismatches,
+                    it.values,
+                    it.zero_ulp,
+                    max
+                );
+            }
+        }
+        let _ = write!(
+            out,
+            "{} non-blank lines, {} malformed",
+            self.lines, self.malformed
+        );
+        if self.invalid > 0 {
+            let _ = write!(out, ", {} invalid", self.invalid);
+        }
+        if self.internal > 0 {
+            let _ = write!(out, ", {} internal errors", self.internal);
+        }
+        out.push('\n');
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn num(bits: u32) -> String {
+        format!("\"{:#010x}\"", bits)
+    }
+
+    fn nums(bits: &[u32]) -> String {
+        bits.iter().map(|&b| num(b)).collect::<Vec<_>>().join(",")
+    }
+
+    /// Interesting floats more often than uniform bits would give them.
+    fn any_bits() -> impl Strategy<Value = u32> {
+        prop_oneof![
+            any::<u32>(),
+            prop::sample::select(vec![
+                0u32,
+                0x8000_0000,
+                1,
+                0x7f7f_ffff,
+                0xff7f_ffff,
+                0x7f80_0000,
+                0x7fc0_0000,
+                0x3f80_0000,
+                0xbf80_0000,
+                0x0080_0000,
+            ]),
+            (-4i32..4).prop_map(|i| (i as f32).to_bits()),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 300, .. ProptestConfig::default() })]
+
+        #[test]
+        fn arbitrary_inputs_are_evaluated_without_panics(
+            v in prop::collection::vec(any_bits(), 16),
+            kind in 0usize..4,
+            px in 0u32..4,
+        ) {
+            let line = match kind {
+                0 => format!(r#"{{"kind":"plane","origin":[{}],"dir":[{}],"point":[{}],"normal":[{}]}}"#,
+                    nums(&v[0..3]), nums(&v[3..6]), nums(&v[6..9]), nums(&v[9..12])),
+                1 => format!(r#"{{"kind":"sphere","origin":[{}],"dir":[{}],"center":[{}],"radius":{}}}"#,
+                    nums(&v[0..3]), nums(&v[3..6]), nums(&v[6..9]), num(v[9])),
+                2 => format!(r#"{{"kind":"quadric","origin":[{}],"dir":[{}],"coeffs":[{}]}}"#,
+                    nums(&v[0..3]), nums(&v[3..6]), nums(&v[6..16])),
+                _ => format!(r#"{{"kind":"camera","position":[{}],"dir":[{}],"up":[{}],"angle":{},"res":[4,4],"pixel":[{px},3]}}"#,
+                    nums(&v[0..3]), nums(&v[3..6]), nums(&v[6..9]), num(v[9])),
+            };
+            // Whatever the implementations do (even panic), evaluation gives
+            // one well-formed JSON line for this line.
+            let report = evaluate(1, &line).unwrap();
+            prop_assert!(!matches!(report, LineReport::Malformed { .. }), "{line}: {report:?}");
+            let json: serde_json::Value = serde_json::from_str(&report.to_json()).unwrap();
+            prop_assert_eq!(json["line"].as_u64(), Some(1));
+            match &report {
+                LineReport::Evaluated(e) => {
+                    let keys: Vec<&String> = json["results"].as_object().unwrap().keys().collect();
+                    prop_assert_eq!(keys.len(), 1 + Implementation::ALL.len());
+                    prop_assert_eq!(e.columns.len(), Implementation::ALL.len());
+                    prop_assert_eq!(json["kind"].as_str(), Some(e.kind));
+                }
+                LineReport::Internal { error, .. } => {
+                    prop_assert!(json["error"].as_str().unwrap().starts_with("internal error: "), "{error}");
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// The exact oracle's `round_to_f32` gallops downward forever when the
+    /// root lies in `(−MAX − ulp/2, −MAX)` (it should round to `−MAX`):
+    /// "attempt to multiply with overflow" in debug builds, an endless loop
+    /// in release builds. Here `t = −MAX − p/3` for a tiny `p`.
+    #[test]
+    #[ignore = "bug in exact::round::round_to_f32 (not eval); hangs in release builds"]
+    fn a_root_just_below_minus_max_rounds_to_minus_max() {
+        let line = r#"{"kind":"plane","origin":[0,"0x7f7fffff",0],"dir":[-1,0,-2],"point":["0x3498c525",0,0],"normal":[-1,3,-1]}"#;
+        let Some(LineReport::Evaluated(e)) = evaluate(1, line) else {
+            panic!("not evaluated: {}", eval_line(1, line));
+        };
+        assert_eq!(
+            e.exact,
+            Outcome::Hit {
+                class: "hit",
+                roots: Roots::one(-f32::MAX)
+            }
+        );
+    }
+
+    #[test]
+    fn a_class_mismatch_has_null_ulps_and_bits() {
+        let e = Evaluation {
+            line: 5,
+            kind: "plane",
+            family: None,
+            exact: Outcome::Hit {
+                class: "hit",
+                roots: Roots::one(1.0),
+            },
+            columns: vec![Column {
+                implementation: Implementation::Reference,
+                outcome: Outcome::Hit {
+                    class: "parallel",
+                    roots: Roots::none(),
+                },
+                comparison: Comparison::ClassMismatch,
+            }],
+        };
+        let r = LineReport::Evaluated(e);
+        assert_eq!(
+            r.to_json(),
+            r#"{"line":5,"kind":"plane","results":{"exact":{"class":"hit","roots":[1.0],"roots_bits":["0x3f800000"]},"reference":{"class":"parallel","roots":[],"roots_bits":[],"class_match":false,"ulps":null,"bits":null}}}"#
+        );
+        let mut s = Summary::default();
+        s.add(&r);
+        let t = &s.kind("plane").unwrap().impls[0];
+        assert_eq!((t.compared, t.class_mismatches, t.values), (1, 1, 0));
+    }
+
+    #[test]
+    fn non_finite_roots_are_null_with_exact_bits_and_nan_ulps_render_as_nan() {
+        let e = Evaluation {
+            line: 1,
+            kind: "sphere",
+            family: None,
+            exact: Outcome::Hit {
+                class: "two",
+                roots: Roots::two(1.0, f32::INFINITY),
+            },
+            columns: vec![Column {
+                implementation: Implementation::Reference,
+                outcome: Outcome::Hit {
+                    class: "two",
+                    roots: Roots::two(f32::NAN, f32::INFINITY),
+                },
+                comparison: compare(
+                    &Outcome::Hit {
+                        class: "two",
+                        roots: Roots::two(1.0, f32::INFINITY),
+                    },
+                    &Outcome::Hit {
+                        class: "two",
+                        roots: Roots::two(f32::NAN, f32::INFINITY),
+                    },
+                ),
+            }],
+        };
+        let r = LineReport::Evaluated(e);
+        let json = r.to_json();
+        assert!(json.contains(r#""exact":{"class":"two","roots":[1.0,null],"roots_bits":["0x3f800000","0x7f800000"]}"#), "{json}");
+        assert!(
+            json.contains(r#""ulps":[18446744073709551615,0],"bits":[64.0,0.0]"#),
+            "{json}"
+        );
+        let mut s = Summary::default();
+        s.add(&r);
+        assert_eq!(s.kind("sphere").unwrap().impls[0].max_ulps, u64::MAX);
+        assert!(s.render().contains(" nan\n"), "{}", s.render());
+    }
+}
