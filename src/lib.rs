@@ -1,3 +1,7 @@
+// `!(x >= 0.0)` is how these kernels say "negative or NaN"; rewriting it as
+// `x < 0.0` would silently change what NaN inputs do on one path only.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 pub mod camera;
 pub mod case;
 pub mod check;
@@ -8,6 +12,7 @@ pub mod num;
 pub mod plane;
 pub mod quadric;
 pub mod ray;
+pub mod ray4;
 pub mod sphere;
 pub mod ulp;
 

@@ -40,7 +40,9 @@
 //! cancel, so the bound is relative to their size, not to the result.
 
 pub mod exact;
+pub mod kernel;
 pub mod reference;
+pub mod x4;
 
 use glam::Vec3;
 

@@ -1,8 +1,8 @@
 //! The reference camera: a double-word basis built once, plain f32 per pixel.
 
-use super::{CameraError, CameraParams, MAX_RESOLUTION};
+use super::{CameraError, CameraParams, MAX_RESOLUTION, kernel};
 use crate::Ray;
-use crate::num::scale::{exponent_of_max, ldexp3};
+use crate::num::scale::normalized3;
 use crate::num::{Ff, Lane};
 use glam::Vec3;
 
@@ -68,8 +68,7 @@ fn check_vec(v: Vec3, zero: CameraError, nonfinite: CameraError) -> Result<(), C
 /// assert_eq!(pixel_offsets([4, 2], 0, 1), (-0.75, 0.5));
 /// ```
 pub fn pixel_offsets(res: [u32; 2], px: u32, py: u32) -> (f32, f32) {
-    let off = |p: u32, r: u32| (2 * p as i64 + 1 - r as i64) as f32 / r as f32;
-    (off(px, res[0]), off(py, res[1]))
+    (kernel::offset(px, res[0]), kernel::offset(py, res[1]))
 }
 
 impl Camera {
@@ -98,10 +97,10 @@ impl Camera {
         }
         // Exact prescaling: only the directions of dir and up matter for the
         // axes; |dir| = |dir'|·2^kd.
-        let d = p.dir.to_array();
-        let kd = exponent_of_max(&d);
-        let dir = ff3(ldexp3(d, -kd));
-        let up = ff3(ldexp3(p.up.to_array(), -exponent_of_max(&p.up.to_array())));
+        let (d, sd) = normalized3(p.dir.to_array());
+        let kd = sd.k;
+        let dir = ff3(d);
+        let up = ff3(normalized3(p.up.to_array()).0);
 
         let x_hat = normalize_ff(cross_ff(dir, up)).ok_or(CameraError::DirParallelToUp)?;
         let y_hat = normalize_ff(cross_ff(dir, x_hat)).ok_or(CameraError::DirParallelToUp)?;
@@ -138,12 +137,13 @@ impl Camera {
     /// ```
     pub fn ray(&self, px: u32, py: u32) -> Ray {
         let (u, v) = pixel_offsets(self.params.res, px, py);
-        let f = self.params.dir;
-        let dir = Vec3::new(
-            (f.x + u * self.x.x) + v * self.y.x,
-            (f.y + u * self.x.y) + v * self.y.y,
-            (f.z + u * self.x.z) + v * self.y.z,
+        let dir = kernel::pixel_dir(
+            self.params.dir.to_array(),
+            self.x.to_array(),
+            self.y.to_array(),
+            u,
+            v,
         );
-        Ray::new(self.params.position, dir)
+        Ray::new(self.params.position, Vec3::from_array(dir))
     }
 }

@@ -57,6 +57,11 @@ pub fn round_to_f32(cmp: impl Fn(&Dyadic) -> Ordering, guess: f64) -> f32 {
     if cmp(&-&limit) != Ordering::Greater {
         return f32::NEG_INFINITY;
     }
+    // Between −(2^128 − 2^103) and −MAX there is no float below x to be its
+    // floor, and the nearest is −MAX.
+    if cmp(&value_of(-MAX_KEY)) == Ordering::Less {
+        return -f32::MAX;
+    }
     // floor: the largest key whose value is ≤ x. -MAX_KEY qualifies now.
     let le = |k: i64| cmp(&value_of(k)) != Ordering::Less;
     let g = if guess.is_finite() {
@@ -160,7 +165,16 @@ mod tests {
             f32::INFINITY
         );
         let below = &overflow_threshold() - &Dyadic::new(1, 0);
-        assert_eq!(ratio(below, Dyadic::new(1, 0), 0.0), f32::MAX);
+        assert_eq!(ratio(below.clone(), Dyadic::new(1, 0), 0.0), f32::MAX);
+        // Its mirror image used to send the downward search past −MAX
+        // forever (found by eval's random-input test).
+        for guess in [0.0, -1e38, -3.4e38, f64::NAN] {
+            assert_eq!(ratio(-below.clone(), Dyadic::new(1, 0), guess), -f32::MAX);
+        }
+        assert_eq!(
+            ratio(-overflow_threshold(), Dyadic::new(1, 0), 0.0),
+            f32::NEG_INFINITY
+        );
         // Half the smallest subnormal is a tie between 0 and 2^-149: even is 0.
         assert_eq!(
             ratio(Dyadic::new(1, -150), Dyadic::new(1, 0), 0.0).to_bits(),

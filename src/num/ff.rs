@@ -122,6 +122,22 @@ impl<L: Lane> Ff<L> {
         Ff { hi, lo }
     }
 
+    /// `self` with the sign of `s` applied: `−self` where `s` has its sign
+    /// bit set (including `−0`), `self` otherwise. Exact.
+    ///
+    /// ```
+    /// use rayoracle::num::Ff;
+    /// assert_eq!(Ff::from(2.0f32).with_sign_of(-0.0).hi, -2.0);
+    /// ```
+    #[inline(always)]
+    pub fn with_sign_of(self, s: L) -> Self {
+        let sign = L::splat(1.0).copysign(s);
+        Ff {
+            hi: self.hi * sign,
+            lo: self.lo * sign,
+        }
+    }
+
     /// The value rounded to one lane: `hi`.
     ///
     /// ```

@@ -36,26 +36,37 @@ pub trait Lane:
     /// `self > other ? self : other`: when either is NaN, `other`. This is
     /// SSE's `maxps` rule, written out so the scalar path matches it.
     fn max(self, other: Self) -> Self;
-    /// `self` where it is finite, `+0` where it is ±∞ or NaN.
+    /// `self < other ? self : other`: when either is NaN, `other` (SSE's
+    /// `minps` rule).
+    fn min(self, other: Self) -> Self;
+    /// `self` where it is finite, `+0` where it is ±∞ or NaN: decided by
+    /// `self − self == 0`, which is false exactly for ±∞ and NaN.
     fn finite_or_zero(self) -> Self;
+    /// For `x ≥ 0`: the power of two `2^k ≤ x < 2^(k+1)`, clamped to
+    /// `[2⁻¹²⁶, 2¹²⁶]` (subnormals and zero give `2⁻¹²⁶`, ∞ and NaN `2¹²⁶`).
+    /// It is `x` with its significand bits cleared, then clamped.
+    fn pow2_floor(self) -> Self;
+    /// For a power of two `2^k` with `k` in `[−126, 126]`: `2^−k`, exactly,
+    /// by integer arithmetic on the bits (`0x7f000000 − bits`).
+    fn recip_pow2(self) -> Self;
+    /// For a power of two `2^k` (normal): `k`.
+    fn pow2_exponent(self) -> Self::Int;
     /// The magnitude of `self` with the sign bit of `sign`.
     fn copysign(self, sign: Self) -> Self;
-    /// `⌊log₂|x|⌋` for finite non-zero `x` (subnormals included); `0` for
-    /// zero, ±∞ and NaN, so that scaling by it is then a no-op.
-    fn ilogb(self) -> Self::Int;
     /// `x · 2^e`, exact unless the result overflows or is subnormal.
     ///
     /// `e` may lie anywhere in `[-600, 600]`: the scale is applied as three
     /// factors `2^e₁ · 2^e₂ · 2^e₃`, each a normal number, in one direction,
     /// so the only rounding is the one the final result needs.
     fn ldexp(self, e: Self::Int) -> Self;
-    /// Broadcasts an integer constant.
-    fn splat_int(e: i32) -> Self::Int;
-    /// Lane-wise integer maximum.
-    fn max_int(a: Self::Int, b: Self::Int) -> Self::Int;
+    /// `if a > b { x } else { y }`, lane by lane (false for NaN).
+    fn select_gt(a: Self, b: Self, x: Self, y: Self) -> Self;
 }
 
 const SIGN: u32 = 0x8000_0000;
+const EXP: u32 = 0x7f80_0000;
+/// 2^126.
+const P126: f32 = f32::from_bits(0x7e80_0000);
 
 /// `2^e` for `e` in `[-126, 127]`, built from its bits.
 #[inline]
@@ -83,26 +94,29 @@ impl Lane for f32 {
         if self > other { self } else { other }
     }
     #[inline]
+    fn min(self, other: Self) -> Self {
+        if self < other { self } else { other }
+    }
+    #[inline]
     fn finite_or_zero(self) -> Self {
-        if self.is_finite() { self } else { 0.0 }
+        if self - self == 0.0 { self } else { 0.0 }
+    }
+    #[inline]
+    fn pow2_floor(self) -> Self {
+        let p = f32::from_bits(self.to_bits() & EXP);
+        Lane::min(Lane::max(p, f32::MIN_POSITIVE), P126)
+    }
+    #[inline]
+    fn recip_pow2(self) -> Self {
+        f32::from_bits(0x7f00_0000 - self.to_bits())
+    }
+    #[inline]
+    fn pow2_exponent(self) -> i32 {
+        (self.to_bits() >> 23) as i32 - 127
     }
     #[inline]
     fn copysign(self, sign: Self) -> Self {
         f32::from_bits((self.to_bits() & !SIGN) | (sign.to_bits() & SIGN))
-    }
-    #[inline]
-    fn ilogb(self) -> i32 {
-        let a = Lane::abs(self);
-        if !(a.is_finite() && a != 0.0) {
-            return 0;
-        }
-        if a < f32::MIN_POSITIVE {
-            // Subnormal: 2^32 lifts it into the normal range exactly.
-            let b = a * 4_294_967_296.0;
-            ((b.to_bits() >> 23) as i32 - 127) - 32
-        } else {
-            (a.to_bits() >> 23) as i32 - 127
-        }
     }
     #[inline]
     fn ldexp(self, e: i32) -> Self {
@@ -113,12 +127,8 @@ impl Lane for f32 {
         self * exp2i(e1) * exp2i(e2) * exp2i(e3)
     }
     #[inline]
-    fn splat_int(e: i32) -> i32 {
-        e
-    }
-    #[inline]
-    fn max_int(a: i32, b: i32) -> i32 {
-        a.max(b)
+    fn select_gt(a: Self, b: Self, x: Self, y: Self) -> Self {
+        if a > b { x } else { y }
     }
 }
 
@@ -153,25 +163,36 @@ impl Lane for f32x4 {
         self.simd_gt(other).select(self, other)
     }
     #[inline]
+    fn min(self, other: Self) -> Self {
+        self.simd_lt(other).select(self, other)
+    }
+    #[inline]
     fn finite_or_zero(self) -> Self {
-        self.is_finite().select(self, f32x4::ZERO)
+        // The mask is all ones where finite; and-ing keeps x, else +0.
+        self & (self - self).simd_eq(f32x4::ZERO)
+    }
+    #[inline]
+    fn pow2_floor(self) -> Self {
+        let e: f32x4 = wide::bytemuck::cast(wide::u32x4::splat(EXP));
+        Lane::min(
+            Lane::max(self & e, f32x4::splat(f32::MIN_POSITIVE)),
+            f32x4::splat(P126),
+        )
+    }
+    #[inline]
+    fn recip_pow2(self) -> Self {
+        let b: i32x4 = wide::bytemuck::cast(self);
+        wide::bytemuck::cast(i32x4::splat(0x7f00_0000) - b)
+    }
+    #[inline]
+    fn pow2_exponent(self) -> i32x4 {
+        let b: i32x4 = wide::bytemuck::cast(self);
+        (b >> 23) - i32x4::splat(127)
     }
     #[inline]
     fn copysign(self, sign: Self) -> Self {
         let s: f32x4 = wide::bytemuck::cast(wide::u32x4::splat(SIGN));
         (self & !s) | (sign & s)
-    }
-    #[inline]
-    fn ilogb(self) -> i32x4 {
-        let a = Lane::abs(self);
-        let normal_bits: i32x4 = wide::bytemuck::cast(a);
-        let lifted: i32x4 = wide::bytemuck::cast(a * f32x4::splat(4_294_967_296.0));
-        let e_normal = (normal_bits >> 23) - i32x4::splat(127);
-        let e_sub = (lifted >> 23) - i32x4::splat(127 + 32);
-        let is_sub: i32x4 = wide::bytemuck::cast(a.simd_lt(f32x4::splat(f32::MIN_POSITIVE)));
-        let e = is_sub.select(e_sub, e_normal);
-        let ok: i32x4 = wide::bytemuck::cast(a.is_finite() & a.simd_ne(f32x4::ZERO));
-        ok.select(e, i32x4::ZERO)
     }
     #[inline]
     fn ldexp(self, e: i32x4) -> Self {
@@ -182,40 +203,14 @@ impl Lane for f32x4 {
         self * exp2i_x4(e1) * exp2i_x4(e2) * exp2i_x4(e3)
     }
     #[inline]
-    fn splat_int(e: i32) -> i32x4 {
-        i32x4::splat(e)
-    }
-    #[inline]
-    fn max_int(a: i32x4, b: i32x4) -> i32x4 {
-        a.max(b)
+    fn select_gt(a: Self, b: Self, x: Self, y: Self) -> Self {
+        a.simd_gt(b).select(x, y)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn ilogb_matches_definition() {
-        for &(x, e) in &[
-            (1.0f32, 0),
-            (1.5, 0),
-            (2.0, 1),
-            (0.75, -1),
-            (f32::MAX, 127),
-            (f32::MIN_POSITIVE, -126),
-            (f32::from_bits(1), -149),
-            (f32::from_bits(0x0040_0000), -127),
-            (0.0, 0),
-            (f32::INFINITY, 0),
-            (f32::NAN, 0),
-        ] {
-            assert_eq!(Lane::ilogb(x), e, "ilogb({x:e})");
-            assert_eq!(Lane::ilogb(-x), e, "ilogb(-{x:e})");
-            let v = Lane::ilogb(f32x4::splat(x)).to_array();
-            assert_eq!(v, [e; 4], "x4 ilogb({x:e})");
-        }
-    }
 
     #[test]
     fn ldexp_is_exact_across_the_range() {
@@ -233,6 +228,52 @@ mod tests {
                 let v = Lane::ldexp(f32x4::splat(x), i32x4::splat(e)).to_array();
                 assert_eq!(v.map(f32::to_bits), [s.to_bits(); 4]);
             }
+        }
+    }
+
+    #[test]
+    fn pow2_helpers_agree_on_both_paths() {
+        for x in [
+            0.0f32,
+            1.0,
+            1.5,
+            3.0,
+            1e-40,
+            f32::from_bits(1),
+            1e30,
+            f32::MAX,
+            f32::INFINITY,
+            f32::NAN,
+            2f32.powi(126),
+            2f32.powi(127),
+        ] {
+            let p = Lane::pow2_floor(x);
+            let want = if x.is_nan() || x >= 2f32.powi(126) {
+                2f32.powi(126)
+            } else if x < f32::MIN_POSITIVE {
+                f32::MIN_POSITIVE
+            } else {
+                2f32.powi(x.log2().floor() as i32)
+            };
+            assert_eq!(p, want, "pow2_floor({x:e})");
+            assert_eq!(Lane::recip_pow2(p), 1.0 / p);
+            assert_eq!(2f32.powi(Lane::pow2_exponent(p)), p);
+            let v = f32x4::splat(x);
+            assert_eq!(Lane::pow2_floor(v).to_array(), [p; 4]);
+            assert_eq!(
+                Lane::recip_pow2(Lane::pow2_floor(v)).to_array(),
+                [1.0 / p; 4]
+            );
+            assert_eq!(
+                Lane::pow2_exponent(Lane::pow2_floor(v)).to_array(),
+                [Lane::pow2_exponent(p); 4]
+            );
+            let f = Lane::finite_or_zero(x);
+            assert_eq!(
+                Lane::finite_or_zero(v).to_array().map(f32::to_bits),
+                [f.to_bits(); 4]
+            );
+            assert_eq!(f, if x.is_finite() { x } else { 0.0 });
         }
     }
 

@@ -35,7 +35,9 @@
 //!   general within `1 + κ·2⁻¹⁸` ulps ([`ROOT_ULPS`], asserted by the tests).
 
 pub mod exact;
+pub mod kernel;
 pub mod reference;
+pub mod x4;
 
 use crate::hit::{Intersection, Roots};
 use glam::Vec3;

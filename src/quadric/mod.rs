@@ -44,7 +44,9 @@
 //! The origin is not prescaled: the bounds hold for `|o| < 2⁴⁰`.
 
 pub mod exact;
+pub mod kernel;
 pub mod reference;
+pub mod x4;
 
 use crate::Ray;
 use crate::hit::{Intersection, Roots};

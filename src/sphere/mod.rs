@@ -53,7 +53,9 @@
 //!   tests find 0 in almost all cases.
 
 pub mod exact;
+pub mod kernel;
 pub mod reference;
+pub mod x4;
 
 use crate::Ray;
 use crate::hit::{Intersection, Roots};

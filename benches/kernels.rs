@@ -1,0 +1,260 @@
+//! Reference against x4 for every kernel, over batches of 4096 rays drawn
+//! from a realistic mix (seeded), plus parry3d's ball ray cast as an
+//! outside peer for the sphere. Run with `cargo bench --bench kernels`; the
+//! ratios of the run are printed at the end (and written to
+//! `target/criterion/ratios.md`).
+//!
+//! Four ways of running a kernel, per batch:
+//! * `reference/per-ray`: one `black_box`ed call per ray, so the optimiser
+//!   cannot fuse calls across rays: the scalar code as written.
+//! * `reference/slice`: a plain loop over the slice, which LLVM may
+//!   auto-vectorise (4 lanes with SSE, 16 with AVX-512 under native).
+//! * `x4`: the SIMD kernel over rays already packed four to a `Ray4`.
+//! * `parry3d` (sphere only): `Ball::cast_local_ray`, one `black_box`ed call
+//!   per ray.
+
+use criterion::{BenchmarkId, Criterion, Throughput, black_box};
+use glam::Vec3;
+use rand::rngs::SmallRng;
+use rand::{Rng, SeedableRng};
+use rayoracle::Ray;
+use rayoracle::camera::{Camera, CameraParams};
+use rayoracle::hit::Intersection;
+use rayoracle::plane::{self, Plane};
+use rayoracle::quadric::{self, Quadric};
+use rayoracle::ray4::Ray4;
+use rayoracle::sphere::{self, Sphere};
+use wide::f32x4;
+
+const N: usize = 4096;
+
+fn camera() -> Camera {
+    CameraParams::new(
+        Vec3::new(0.0, 1.0, 6.0),
+        Vec3::new(0.0, -0.15, -1.0),
+        Vec3::Y,
+        0.9,
+        [64, 64],
+    )
+    .build()
+    .expect("valid camera")
+}
+
+/// Primary rays of a 64×64 camera, jittered, looking at the scene.
+fn rays(rng: &mut SmallRng) -> Vec<Ray> {
+    let cam = camera();
+    (0..N)
+        .map(|i| {
+            let r = cam.ray((i % 64) as u32, (i / 64) as u32);
+            let j = Vec3::new(
+                rng.random_range(-0.01..0.01),
+                rng.random_range(-0.01..0.01),
+                0.0,
+            );
+            Ray::new(r.origin, r.dir + j)
+        })
+        .collect()
+}
+
+fn pack(rays: &[Ray]) -> Vec<Ray4> {
+    rays.chunks_exact(4)
+        .map(|c| Ray4::from_rays([c[0], c[1], c[2], c[3]]))
+        .collect()
+}
+
+fn bench_group<P: Copy>(
+    c: &mut Criterion,
+    name: &str,
+    rays: &[Ray],
+    prim: P,
+    scalar: impl Fn(&Ray, &P) -> Option<f32>,
+    simd: impl Fn(&Ray4) -> f32x4,
+) {
+    let packed = pack(rays);
+    let mut g = c.benchmark_group(name);
+    g.throughput(Throughput::Elements(rays.len() as u64));
+    g.bench_function(BenchmarkId::new("reference", "per-ray"), |b| {
+        b.iter(|| {
+            let mut acc = 0.0f32;
+            for r in rays {
+                acc += black_box(scalar(black_box(r), &prim)).unwrap_or(0.0);
+            }
+            acc
+        })
+    });
+    g.bench_function(BenchmarkId::new("reference", "slice"), |b| {
+        b.iter(|| {
+            black_box(rays)
+                .iter()
+                .map(|r| scalar(r, &prim).unwrap_or(0.0))
+                .sum::<f32>()
+        })
+    });
+    g.bench_function(BenchmarkId::new("x4", "packed"), |b| {
+        b.iter(|| {
+            let mut acc = f32x4::ZERO;
+            for r in black_box(&packed) {
+                acc += simd(r);
+            }
+            acc
+        })
+    });
+    g.finish();
+}
+
+fn benches(c: &mut Criterion) {
+    let mut rng = SmallRng::seed_from_u64(0x5eed);
+    let rays = rays(&mut rng);
+    let (t_min, t_max) = (f32x4::ZERO, f32x4::splat(f32::INFINITY));
+    let finite = |m: f32x4, t: f32x4| m.select(t, f32x4::ZERO);
+
+    let s = Sphere::new(Vec3::new(0.3, 0.5, -1.0), 1.2);
+    let s4 = sphere::x4::Sphere4::splat(&s);
+    bench_group(
+        c,
+        "sphere",
+        &rays,
+        s,
+        |r, s| sphere::reference::intersect(r, s).nearest(0.0, f32::INFINITY),
+        |r| {
+            let (m, t) = sphere::x4::intersect(r, &s4).nearest(t_min, t_max);
+            finite(m, t)
+        },
+    );
+    // The outside peer, same rays, ball moved to the origin (local ray).
+    {
+        let ball = parry3d::shape::Ball::new(s.radius);
+        let local: Vec<parry3d::query::Ray> = rays
+            .iter()
+            .map(|r| {
+                let o = (r.origin - s.center).to_array();
+                let d = r.dir.to_array();
+                parry3d::query::Ray::new(o.into(), d.into())
+            })
+            .collect();
+        let mut g = c.benchmark_group("sphere");
+        g.throughput(Throughput::Elements(N as u64));
+        g.bench_function(BenchmarkId::new("parry3d", "per-ray"), |b| {
+            use parry3d::query::RayCast;
+            b.iter(|| {
+                let mut acc = 0.0f32;
+                for r in &local {
+                    acc += black_box(ball.cast_local_ray(black_box(r), f32::MAX, false))
+                        .unwrap_or(0.0);
+                }
+                acc
+            })
+        });
+        g.finish();
+    }
+
+    let p = Plane::new(Vec3::new(0.0, -1.0, 0.0), Vec3::new(0.05, 1.0, 0.02));
+    let p4 = plane::x4::Plane4::splat(&p);
+    bench_group(
+        c,
+        "plane",
+        &rays,
+        p,
+        |r, p| plane::reference::intersect(r, p).nearest(0.0, f32::INFINITY),
+        |r| {
+            let (m, t) = plane::x4::intersect(r, &p4).nearest(t_min, t_max);
+            finite(m, t)
+        },
+    );
+
+    // A one-sheet hyperboloid x² + z² − y² = 0.5, tilted by the mix of terms.
+    let q = Quadric::new([1.0, -1.0, 1.0, 0.1, 0.0, 0.05, 0.0, 0.2, 0.0, -0.5]);
+    let q4 = quadric::x4::Quadric4::splat(&q);
+    bench_group(
+        c,
+        "quadric",
+        &rays,
+        q,
+        |r, q| quadric::reference::intersect(r, q).nearest(0.0, f32::INFINITY),
+        |r| {
+            let (m, t) = quadric::x4::intersect(r, &q4).nearest(t_min, t_max);
+            finite(m, t)
+        },
+    );
+
+    // Camera: 4096 pixel rays; the x4 path makes four consecutive pixels.
+    let cam = camera();
+    let mut g = c.benchmark_group("camera");
+    g.throughput(Throughput::Elements(N as u64));
+    g.bench_function(BenchmarkId::new("reference", "per-ray"), |b| {
+        b.iter(|| {
+            let mut acc = 0.0f32;
+            for i in 0..N as u32 {
+                acc += black_box(cam.ray(black_box(i % 64), i / 64)).dir.x;
+            }
+            acc
+        })
+    });
+    g.bench_function(BenchmarkId::new("reference", "slice"), |b| {
+        b.iter(|| {
+            (0..N as u32)
+                .map(|i| cam.ray(i % 64, i / 64).dir.x)
+                .sum::<f32>()
+        })
+    });
+    g.bench_function(BenchmarkId::new("x4", "packed"), |b| {
+        b.iter(|| {
+            let mut acc = f32x4::ZERO;
+            for i in (0..N as u32).step_by(4) {
+                acc += black_box(cam.ray4_row(black_box(i % 64), i / 64)).dir[0];
+            }
+            acc
+        })
+    });
+    g.finish();
+}
+
+/// Reads criterion's point estimates back and prints x4 / reference ratios.
+fn print_ratios() {
+    let base = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/criterion");
+    let ns = |group: &str, id: &str| -> Option<f64> {
+        let path = base.join(group).join(id).join("new/estimates.json");
+        let v: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(path).ok()?).ok()?;
+        v["median"]["point_estimate"].as_f64()
+    };
+    let mut out = String::from(
+        "| kernel | reference per-ray (Mrays/s) | reference slice (Mrays/s) | x4 (Mrays/s) | x4 ÷ per-ray | x4 ÷ slice | parry3d (Mrays/s) |\n|---|---|---|---|---|---|---|\n",
+    );
+    for k in ["camera", "plane", "sphere", "quadric"] {
+        let rate = |id: &str| ns(k, id).map(|t| N as f64 / t * 1e3);
+        let (pr, sl, x4) = (
+            rate("reference/per-ray"),
+            rate("reference/slice"),
+            rate("x4/packed"),
+        );
+        let peer = if k == "sphere" {
+            rate("parry3d/per-ray")
+        } else {
+            None
+        };
+        let f = |x: Option<f64>| x.map_or("–".into(), |v| format!("{v:.1}"));
+        let r = |a: Option<f64>, b: Option<f64>| match (a, b) {
+            (Some(a), Some(b)) => format!("{:.2}×", a / b),
+            _ => "–".into(),
+        };
+        out += &format!(
+            "| {k} | {} | {} | {} | {} | {} | {} |\n",
+            f(pr),
+            f(sl),
+            f(x4),
+            r(x4, pr),
+            r(x4, sl),
+            f(peer)
+        );
+    }
+    println!("\n{out}");
+    let _ = std::fs::write(base.join("ratios.md"), out);
+}
+
+fn main() {
+    let mut c = Criterion::default().configure_from_args();
+    benches(&mut c);
+    c.final_summary();
+    print_ratios();
+}

@@ -1,0 +1,56 @@
+//! Four camera rays at once (`wide::f32x4`), bit-identical to
+//! [`super::Camera::ray`]: the same [`super::kernel`] at `f32x4`.
+
+use super::{Camera, kernel};
+use crate::ray4::Ray4;
+use wide::f32x4;
+
+impl Camera {
+    /// The rays of four arbitrary pixels `[[X, Y]; 4]`.
+    ///
+    /// ```
+    /// use rayoracle::camera::CameraParams;
+    /// use glam::Vec3;
+    /// let cam = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [8, 6]).build().unwrap();
+    /// let px = [[0, 0], [7, 5], [3, 2], [4, 1]];
+    /// assert_eq!(cam.ray4(px).to_rays(), px.map(|[x, y]| cam.ray(x, y)));
+    /// ```
+    #[inline]
+    pub fn ray4(&self, pixels: [[u32; 2]; 4]) -> Ray4 {
+        let [w, h] = self.params.res;
+        let u = f32x4::from(pixels.map(|p| kernel::offset(p[0], w)));
+        let v = f32x4::from(pixels.map(|p| kernel::offset(p[1], h)));
+        let splat = |v: glam::Vec3| v.to_array().map(f32x4::splat);
+        let dir = kernel::pixel_dir(splat(self.params.dir), splat(self.x), splat(self.y), u, v);
+        Ray4 {
+            origin: splat(self.params.position),
+            dir,
+        }
+    }
+
+    /// Four consecutive pixels of row `py`: `(px, py) … (px + 3, py)`.
+    ///
+    /// ```
+    /// use rayoracle::camera::CameraParams;
+    /// use glam::Vec3;
+    /// let cam = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [8, 6]).build().unwrap();
+    /// assert_eq!(cam.ray4_row(4, 2).to_rays()[3], cam.ray(7, 2));
+    /// ```
+    #[inline]
+    pub fn ray4_row(&self, px: u32, py: u32) -> Ray4 {
+        self.ray4([[px, py], [px + 1, py], [px + 2, py], [px + 3, py]])
+    }
+
+    /// A 2×2 tile: `(px, py), (px + 1, py), (px, py + 1), (px + 1, py + 1)`.
+    ///
+    /// ```
+    /// use rayoracle::camera::CameraParams;
+    /// use glam::Vec3;
+    /// let cam = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [8, 6]).build().unwrap();
+    /// assert_eq!(cam.ray4_tile(2, 2).to_rays()[2], cam.ray(2, 3));
+    /// ```
+    #[inline]
+    pub fn ray4_tile(&self, px: u32, py: u32) -> Ray4 {
+        self.ray4([[px, py], [px + 1, py], [px, py + 1], [px + 1, py + 1]])
+    }
+}

@@ -1,0 +1,133 @@
+//! Four rays against four planes at once (`wide::f32x4`), bit-identical to
+//! [`super::reference`]: both run [`super::kernel::solve`], this one at
+//! `f32x4`, classified with masks and selects.
+
+use super::{Plane, PlaneHit, kernel};
+use crate::ray4::{Ray4, gather3};
+use wide::{f32x4, i32x4};
+
+/// Four planes, structure-of-arrays.
+///
+/// ```
+/// use rayoracle::plane::{Plane, x4::Plane4};
+/// use glam::Vec3;
+/// assert_eq!(Plane4::splat(&Plane::new(Vec3::ZERO, Vec3::Y)).normal[1].to_array(), [1.0; 4]);
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct Plane4 {
+    /// A point on each plane.
+    pub point: [f32x4; 3],
+    /// Each plane's normal.
+    pub normal: [f32x4; 3],
+}
+
+impl Plane4 {
+    /// Packs four planes.
+    ///
+    /// ```
+    /// use rayoracle::plane::{Plane, x4::Plane4};
+    /// use glam::Vec3;
+    /// let p = [0.0, 1.0, 2.0, 3.0].map(|y| Plane::new(Vec3::new(0.0, y, 0.0), Vec3::Y));
+    /// assert_eq!(Plane4::from_planes(p).point[1].to_array(), [0.0, 1.0, 2.0, 3.0]);
+    /// ```
+    pub fn from_planes(p: [Plane; 4]) -> Plane4 {
+        Plane4 {
+            point: gather3(p.map(|p| p.point)),
+            normal: gather3(p.map(|p| p.normal)),
+        }
+    }
+    /// The same plane in every lane.
+    ///
+    /// ```
+    /// use rayoracle::plane::{Plane, x4::Plane4};
+    /// use glam::Vec3;
+    /// assert_eq!(Plane4::splat(&Plane::new(Vec3::X, Vec3::Y)).point[0].to_array(), [1.0; 4]);
+    /// ```
+    pub fn splat(p: &Plane) -> Plane4 {
+        Plane4::from_planes([*p; 4])
+    }
+}
+
+/// Four results: a class per lane (0 hit, 1 parallel, 2 in the plane) and
+/// the root (NaN where there is none).
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, plane::{Plane, PlaneHit, x4}};
+/// use glam::Vec3;
+/// let r = Ray4::splat(Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::new(1.0, -4.0, 0.0)));
+/// let h = x4::intersect(&r, &x4::Plane4::splat(&Plane::new(Vec3::ZERO, Vec3::Y)));
+/// assert_eq!(h.lanes(), [PlaneHit::Hit(0.5); 4]);
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct PlaneHit4 {
+    /// 0 hit, 1 parallel, 2 in the plane.
+    pub class: i32x4,
+    /// The root where class is 0.
+    pub t: f32x4,
+}
+
+/// Intersects four lines with four planes, lane by lane.
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, plane::{Plane, reference, x4}};
+/// use glam::Vec3;
+/// let p = Plane::new(Vec3::ZERO, Vec3::Y);
+/// let rays = [Vec3::Y, Vec3::X, -Vec3::Y, Vec3::new(1.0, 1.0, 0.0)].map(|d| Ray::new(Vec3::Y, d));
+/// let h = x4::intersect(&Ray4::from_rays(rays), &x4::Plane4::splat(&p));
+/// assert_eq!(h.lanes(), rays.map(|r| reference::intersect(&r, &p)));
+/// ```
+#[inline]
+pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+    let k = kernel::solve(ray.origin, ray.dir, p.point, p.normal);
+    let zero = f32x4::ZERO;
+    let hit = k.den.simd_ne(zero);
+    let in_plane = !hit & k.num.simd_eq(zero);
+    let as_int = |m: f32x4| -> i32x4 { wide::bytemuck::cast(m) };
+    // class = 1 − (hit ? 1 : 0) + (in_plane ? 1 : 0), masks being −1.
+    let class = i32x4::splat(1) + as_int(hit) - as_int(in_plane);
+    PlaneHit4 {
+        class,
+        t: hit.select(k.t, f32x4::splat(f32::NAN)),
+    }
+}
+
+impl PlaneHit4 {
+    /// The four results as scalar values.
+    ///
+    /// ```
+    /// use rayoracle::plane::{PlaneHit, x4::PlaneHit4};
+    /// use wide::{f32x4, i32x4};
+    /// let h = PlaneHit4 { class: i32x4::from([0, 1, 2, 0]), t: f32x4::splat(2.0) };
+    /// assert_eq!(h.lanes(), [PlaneHit::Hit(2.0), PlaneHit::Parallel, PlaneHit::InPlane, PlaneHit::Hit(2.0)]);
+    /// ```
+    pub fn lanes(&self) -> [PlaneHit; 4] {
+        let (c, t) = (self.class.to_array(), self.t.to_array());
+        [0, 1, 2, 3].map(|i| match c[i] {
+            0 => PlaneHit::Hit(t[i]),
+            1 => PlaneHit::Parallel,
+            _ => PlaneHit::InPlane,
+        })
+    }
+
+    /// The nearest solution per lane in `[t_min, t_max]` and the mask of
+    /// lanes that have one (`+∞` elsewhere); a ray in the plane gives
+    /// `t_min`. The rule of [`crate::hit::Intersection::nearest`].
+    ///
+    /// ```
+    /// use rayoracle::plane::x4::PlaneHit4;
+    /// use wide::{f32x4, i32x4};
+    /// let h = PlaneHit4 { class: i32x4::from([0, 1, 2, 0]), t: f32x4::from([1.0, 0.0, 0.0, -1.0]) };
+    /// let (hit, t) = h.nearest(f32x4::ZERO, f32x4::splat(5.0));
+    /// assert_eq!(hit.to_bitmask(), 0b0101);
+    /// assert_eq!(t.to_array(), [1.0, f32::INFINITY, 0.0, f32::INFINITY]);
+    /// ```
+    #[inline]
+    pub fn nearest(&self, t_min: f32x4, t_max: f32x4) -> (f32x4, f32x4) {
+        let hit: f32x4 = wide::bytemuck::cast(self.class.simd_eq(i32x4::ZERO));
+        let every: f32x4 = wide::bytemuck::cast(self.class.simd_eq(i32x4::splat(2)));
+        let ok = hit & self.t.simd_ge(t_min) & self.t.simd_le(t_max);
+        let ok_all = every & t_min.simd_le(t_max);
+        let t = ok.select(self.t, ok_all.select(t_min, f32x4::splat(f32::INFINITY)));
+        (ok | ok_all, t)
+    }
+}

@@ -1,0 +1,162 @@
+//! Four rays against four spheres at once (`wide::f32x4`), bit-identical
+//! to [`super::reference`]: both run [`super::kernel::solve`], this one at
+//! `f32x4`, and the classification uses masks and selects, no branches.
+
+use super::{Sphere, SphereHit, kernel};
+use crate::ray4::{Ray4, gather3};
+use wide::{f32x4, i32x4};
+
+/// Four spheres, structure-of-arrays (often the same sphere four times).
+///
+/// ```
+/// use rayoracle::sphere::{Sphere, x4::Sphere4};
+/// use glam::Vec3;
+/// let s = Sphere4::splat(&Sphere::new(Vec3::ZERO, 2.0));
+/// assert_eq!(s.radius.to_array(), [2.0; 4]);
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct Sphere4 {
+    /// Centre x, y, z.
+    pub center: [f32x4; 3],
+    /// Radius.
+    pub radius: f32x4,
+}
+
+impl Sphere4 {
+    /// Packs four spheres.
+    ///
+    /// ```
+    /// use rayoracle::sphere::{Sphere, x4::Sphere4};
+    /// use glam::Vec3;
+    /// let s = [1.0, 2.0, 3.0, 4.0].map(|r| Sphere::new(Vec3::ZERO, r));
+    /// assert_eq!(Sphere4::from_spheres(s).radius.to_array(), [1.0, 2.0, 3.0, 4.0]);
+    /// ```
+    pub fn from_spheres(s: [Sphere; 4]) -> Sphere4 {
+        Sphere4 {
+            center: gather3(s.map(|s| s.center)),
+            radius: f32x4::from(s.map(|s| s.radius)),
+        }
+    }
+    /// The same sphere in every lane.
+    ///
+    /// ```
+    /// use rayoracle::sphere::{Sphere, x4::Sphere4};
+    /// use glam::Vec3;
+    /// assert_eq!(Sphere4::splat(&Sphere::new(Vec3::X, 1.0)).center[0].to_array(), [1.0; 4]);
+    /// ```
+    pub fn splat(s: &Sphere) -> Sphere4 {
+        Sphere4::from_spheres([*s; 4])
+    }
+}
+
+/// Four results: a class per lane (0 none, 1 tangent, 2 two) and the roots
+/// (`t0 = t1` for a tangent, NaN where there is none).
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, sphere::{Sphere, SphereHit, x4}};
+/// use glam::Vec3;
+/// let r = Ray4::splat(Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z));
+/// let h = x4::intersect(&r, &x4::Sphere4::splat(&Sphere::new(Vec3::ZERO, 1.0)));
+/// assert_eq!(h.lanes(), [SphereHit::Two(4.0, 6.0); 4]);
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct SphereHit4 {
+    /// 0 none, 1 tangent, 2 two.
+    pub class: i32x4,
+    /// The smaller root (the tangent root for class 1).
+    pub t0: f32x4,
+    /// The larger root (the tangent root for class 1).
+    pub t1: f32x4,
+}
+
+/// Intersects four lines with four spheres, lane by lane.
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, sphere::{Sphere, SphereHit, reference, x4}};
+/// use glam::Vec3;
+/// let rays = [-5.0, 0.0, 5.0, 1.0].map(|z| Ray::new(Vec3::new(0.0, 1.0, z), Vec3::Z));
+/// let s = Sphere::new(Vec3::ZERO, 1.0);
+/// let h = x4::intersect(&Ray4::from_rays(rays), &x4::Sphere4::splat(&s));
+/// assert_eq!(h.lanes(), rays.map(|r| reference::intersect(&r, &s)));
+/// ```
+#[inline]
+pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+    let p = kernel::solve(ray.origin, ray.dir, s.center, s.radius);
+    let zero = f32x4::ZERO;
+    let none = p.a.simd_eq(zero) | !p.disc.simd_ge(zero);
+    let tangent = !none & p.disc.simd_eq(zero);
+    let nan = f32x4::splat(f32::NAN);
+    let t0 = none.select(nan, tangent.select(p.tangent, p.t0));
+    let t1 = none.select(nan, tangent.select(p.tangent, p.t1));
+    let as_int = |m: f32x4| -> i32x4 { wide::bytemuck::cast(m) };
+    // Masks are all ones (−1 as i32): class = 2 − (none ? 2 : 0) − (tangent ? 1 : 0).
+    let class = i32x4::splat(2) + as_int(none) + as_int(none) + as_int(tangent);
+    SphereHit4 { class, t0, t1 }
+}
+
+impl SphereHit4 {
+    /// The four results as scalar values.
+    ///
+    /// ```
+    /// use rayoracle::sphere::{SphereHit, x4::SphereHit4};
+    /// use wide::{f32x4, i32x4};
+    /// let h = SphereHit4 { class: i32x4::from([0, 1, 2, 2]), t0: f32x4::from([0.0, 1.0, 2.0, 3.0]), t1: f32x4::from([0.0, 1.0, 5.0, 6.0]) };
+    /// assert_eq!(h.lanes()[1], SphereHit::Tangent(1.0));
+    /// ```
+    pub fn lanes(&self) -> [SphereHit; 4] {
+        let (c, t0, t1) = (
+            self.class.to_array(),
+            self.t0.to_array(),
+            self.t1.to_array(),
+        );
+        [0, 1, 2, 3].map(|i| match c[i] {
+            0 => SphereHit::None,
+            1 => SphereHit::Tangent(t0[i]),
+            _ => SphereHit::Two(t0[i], t1[i]),
+        })
+    }
+
+    /// The nearest root per lane in `[t_min, t_max]`, and the mask of lanes
+    /// that have one; `+∞` where none. The same rule as
+    /// [`crate::hit::Intersection::nearest`].
+    ///
+    /// ```
+    /// use rayoracle::sphere::x4::SphereHit4;
+    /// use wide::{f32x4, i32x4};
+    /// let h = SphereHit4 { class: i32x4::splat(2), t0: f32x4::splat(-1.0), t1: f32x4::splat(3.0) };
+    /// let (hit, t) = h.nearest(f32x4::ZERO, f32x4::splat(10.0));
+    /// assert_eq!(t.to_array(), [3.0; 4]);
+    /// assert_eq!(hit.to_bitmask(), 0b1111);
+    /// ```
+    #[inline]
+    pub fn nearest(&self, t_min: f32x4, t_max: f32x4) -> (f32x4, f32x4) {
+        let any: f32x4 = wide::bytemuck::cast(self.class.simd_gt(i32x4::ZERO));
+        let two: f32x4 = wide::bytemuck::cast(self.class.simd_eq(i32x4::splat(2)));
+        let within = |t: f32x4| t.simd_ge(t_min) & t.simd_le(t_max);
+        let ok0 = any & within(self.t0);
+        let ok1 = two & within(self.t1);
+        let t = ok0.select(self.t0, ok1.select(self.t1, f32x4::splat(f32::INFINITY)));
+        (ok0 | ok1, t)
+    }
+}
+
+/// Convenience for slices: every ray against one sphere, four at a time
+/// (tails handled by [`crate::ray4::for_each4`]).
+///
+/// ```
+/// use rayoracle::{Ray, sphere::{Sphere, SphereHit, x4}};
+/// use glam::Vec3;
+/// let rays = vec![Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z); 5];
+/// let hits = x4::intersect_slice(&rays, &Sphere::new(Vec3::ZERO, 1.0));
+/// assert_eq!(hits, vec![SphereHit::Two(4.0, 6.0); 5]);
+/// ```
+pub fn intersect_slice(rays: &[crate::Ray], sphere: &Sphere) -> Vec<SphereHit> {
+    let s4 = Sphere4::splat(sphere);
+    let mut out = Vec::with_capacity(rays.len());
+    crate::ray4::for_each4(
+        rays,
+        |r| intersect(&Ray4::from_rays(r), &s4).lanes(),
+        &mut out,
+    );
+    out
+}

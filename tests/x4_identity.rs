@@ -1,0 +1,217 @@
+//! x4 against the reference, bit for bit, on packets that mix unrelated
+//! cases: a miss beside a two-hit beside a NaN beside a tangent, with
+//! ±0, ±∞, subnormals and values near f32::MAX in any lane.
+
+use glam::Vec3;
+use proptest::prelude::*;
+use rayoracle::Ray;
+use rayoracle::camera::CameraParams;
+use rayoracle::hit::Intersection;
+use rayoracle::plane::{self, Plane, PlaneHit};
+use rayoracle::quadric::{self, Quadric, QuadricHit};
+use rayoracle::ray4::{Ray4, for_each4};
+use rayoracle::sphere::{self, Sphere, SphereHit};
+use wide::f32x4;
+
+/// Any f32: every bit pattern, with the interesting ones over-represented.
+fn any_f32() -> impl Strategy<Value = f32> {
+    prop_oneof![
+        3 => (-8i32..8).prop_map(|i| i as f32),
+        3 => (-1e3f32..1e3),
+        2 => any::<u32>().prop_map(f32::from_bits),
+        1 => prop::sample::select(vec![
+            0.0, -0.0, f32::INFINITY, f32::NEG_INFINITY, f32::NAN, f32::MAX, -f32::MAX,
+            f32::MIN_POSITIVE, f32::from_bits(1), -f32::from_bits(1), f32::EPSILON, 1e30, -1e-30,
+            3.4e38, 1.7e38, 1e-40,
+        ]),
+    ]
+}
+
+fn vec3() -> impl Strategy<Value = Vec3> {
+    (any_f32(), any_f32(), any_f32()).prop_map(|(x, y, z)| Vec3::new(x, y, z))
+}
+
+fn ray() -> impl Strategy<Value = Ray> {
+    (vec3(), vec3()).prop_map(|(o, d)| Ray::new(o, d))
+}
+
+/// Sensible geometry, so packets also hold real hits, tangents and misses.
+fn tame_sphere_case() -> impl Strategy<Value = (Ray, Sphere)> {
+    (-4i32..4, -4i32..4, -4i32..4, 1i32..4, -3i32..3, -3i32..3).prop_map(
+        |(ox, oy, cz, r, dx, dy)| {
+            let ray = Ray::new(
+                Vec3::new(ox as f32, oy as f32, -10.0),
+                Vec3::new(dx as f32, dy as f32, 4.0),
+            );
+            (ray, Sphere::new(Vec3::new(0.0, 0.0, cz as f32), r as f32))
+        },
+    )
+}
+
+fn sphere_case() -> impl Strategy<Value = (Ray, Sphere)> {
+    prop_oneof![
+        tame_sphere_case(),
+        (ray(), vec3(), any_f32()).prop_map(|(r, c, rad)| (r, Sphere::new(c, rad))),
+    ]
+}
+
+fn plane_case() -> impl Strategy<Value = (Ray, Plane)> {
+    prop_oneof![
+        (-4i32..4, -4i32..4, 0i32..3).prop_map(|(y, dy, axis)| {
+            let mut n = Vec3::ZERO;
+            n[axis as usize] = 1.0;
+            (
+                Ray::new(
+                    Vec3::new(1.0, y as f32, 2.0),
+                    Vec3::new(1.0, dy as f32, 0.0),
+                ),
+                Plane::new(Vec3::ZERO, n),
+            )
+        }),
+        (ray(), vec3(), vec3()).prop_map(|(r, a, n)| (r, Plane::new(a, n))),
+    ]
+}
+
+fn quadric_case() -> impl Strategy<Value = (Ray, Quadric)> {
+    let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+    prop_oneof![
+        (-3i32..3, -3i32..3, -1i32..2, -1i32..2).prop_map(move |(ox, oy, dx, dz)| {
+            (
+                Ray::new(
+                    Vec3::new(ox as f32, oy as f32, 0.0),
+                    Vec3::new(dx as f32, 0.0, dz as f32),
+                ),
+                cyl,
+            )
+        }),
+        (ray(), prop::array::uniform10(any_f32())).prop_map(|(r, k)| (r, Quadric::new(k))),
+    ]
+}
+
+/// Bit equality, with any NaN equal to any NaN.
+fn same(a: f32, b: f32) -> bool {
+    a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan())
+}
+
+fn same_roots<H: Intersection>(a: &H, b: &H) -> bool {
+    let (ra, rb) = (a.roots(), b.roots());
+    a.class() == b.class()
+        && ra.as_slice().len() == rb.as_slice().len()
+        && ra
+            .as_slice()
+            .iter()
+            .zip(rb.as_slice())
+            .all(|(x, y)| same(*x, *y))
+}
+
+fn same_opt(a: Option<f32>, hit: bool, t: f32) -> bool {
+    match a {
+        Some(x) => hit && same(x, t),
+        None => !hit && t == f32::INFINITY,
+    }
+}
+
+const T_MIN: f32 = 0.0;
+const T_MAX: f32 = 1e30;
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2048, ..ProptestConfig::default() })]
+
+    #[test]
+    fn sphere_lanes_equal_the_reference(cases in prop::array::uniform4(sphere_case())) {
+        let r4 = Ray4::from_rays(cases.map(|c| c.0));
+        let s4 = sphere::x4::Sphere4::from_spheres(cases.map(|c| c.1));
+        let h4 = sphere::x4::intersect(&r4, &s4);
+        let (mask, t) = h4.nearest(f32x4::splat(T_MIN), f32x4::splat(T_MAX));
+        let (mask, t) = (mask.to_bitmask(), t.to_array());
+        for (i, (r, s)) in cases.iter().enumerate() {
+            let want: SphereHit = sphere::reference::intersect(r, s);
+            prop_assert!(same_roots(&h4.lanes()[i], &want), "lane {i}: {:?} vs {:?} for {r:?} {s:?}", h4.lanes()[i], want);
+            prop_assert!(same_opt(want.nearest(T_MIN, T_MAX), mask >> i & 1 == 1, t[i]), "nearest lane {i}");
+        }
+    }
+
+    #[test]
+    fn plane_lanes_equal_the_reference(cases in prop::array::uniform4(plane_case())) {
+        let r4 = Ray4::from_rays(cases.map(|c| c.0));
+        let p4 = plane::x4::Plane4::from_planes(cases.map(|c| c.1));
+        let h4 = plane::x4::intersect(&r4, &p4);
+        let (mask, t) = h4.nearest(f32x4::splat(T_MIN), f32x4::splat(T_MAX));
+        let (mask, t) = (mask.to_bitmask(), t.to_array());
+        for (i, (r, p)) in cases.iter().enumerate() {
+            let want: PlaneHit = plane::reference::intersect(r, p);
+            prop_assert!(same_roots(&h4.lanes()[i], &want), "lane {i}: {:?} vs {:?} for {r:?} {p:?}", h4.lanes()[i], want);
+            prop_assert!(same_opt(want.nearest(T_MIN, T_MAX), mask >> i & 1 == 1, t[i]), "nearest lane {i}");
+        }
+    }
+
+    #[test]
+    fn quadric_lanes_equal_the_reference(cases in prop::array::uniform4(quadric_case())) {
+        let r4 = Ray4::from_rays(cases.map(|c| c.0));
+        let q4 = quadric::x4::Quadric4::from_quadrics(cases.map(|c| c.1));
+        let h4 = quadric::x4::intersect(&r4, &q4);
+        let (mask, t) = h4.nearest(f32x4::splat(T_MIN), f32x4::splat(T_MAX));
+        let (mask, t) = (mask.to_bitmask(), t.to_array());
+        for (i, (r, q)) in cases.iter().enumerate() {
+            let want: QuadricHit = quadric::reference::intersect(r, q);
+            prop_assert!(same_roots(&h4.lanes()[i], &want), "lane {i}: {:?} vs {:?} for {r:?} {q:?}", h4.lanes()[i], want);
+            prop_assert!(same_opt(want.nearest(T_MIN, T_MAX), mask >> i & 1 == 1, t[i]), "nearest lane {i}");
+        }
+    }
+
+    #[test]
+    fn camera_packets_equal_the_reference(
+        dir in vec3(), up in vec3(), angle in any_f32(),
+        w in 1u32..5000, h in 1u32..5000, px in prop::array::uniform4((0u32..5000, 0u32..5000)),
+    ) {
+        let p = CameraParams::new(Vec3::new(1.0, -2.0, 3.0), dir, up, angle, [w, h]);
+        if let Ok(cam) = p.build() {
+            let px = px.map(|(x, y)| [x % w, y % h]);
+            let got = cam.ray4(px).to_rays();
+            for i in 0..4 {
+                let want = cam.ray(px[i][0], px[i][1]);
+                for c in 0..3 {
+                    prop_assert!(same(got[i].dir[c], want.dir[c]), "pixel {:?} component {c}", px[i]);
+                }
+                prop_assert_eq!(got[i].origin, want.origin);
+            }
+        }
+    }
+
+    /// Tails of 1 to 3 rays: the helper must give exactly one result per ray,
+    /// equal to the reference, whatever the length.
+    #[test]
+    fn slices_of_any_length_match_ray_by_ray(cases in prop::collection::vec(sphere_case(), 1..12)) {
+        let sphere = cases[0].1;
+        let rays: Vec<Ray> = cases.iter().map(|c| c.0).collect();
+        let got = sphere::x4::intersect_slice(&rays, &sphere);
+        prop_assert_eq!(got.len(), rays.len());
+        for (r, g) in rays.iter().zip(&got) {
+            prop_assert!(same_roots(g, &sphere::reference::intersect(r, &sphere)));
+        }
+    }
+}
+
+#[test]
+fn tail_lanes_never_read_past_the_slice() {
+    // Each kernel call records the packet it saw: the filler lanes of the
+    // last packet repeat the last real element instead of anything else.
+    let items: Vec<u32> = (1..=7).collect();
+    let mut seen = Vec::new();
+    let mut out = Vec::new();
+    for_each4(
+        &items,
+        |p| {
+            seen.push(p);
+            p.map(|x| x * 2)
+        },
+        &mut out,
+    );
+    assert_eq!(out, vec![2, 4, 6, 8, 10, 12, 14]);
+    assert_eq!(seen, vec![[1, 2, 3, 4], [5, 6, 7, 7]]);
+    for n in 1..=3 {
+        let mut out = Vec::new();
+        for_each4(&items[..n], |p| p, &mut out);
+        assert_eq!(out, items[..n].to_vec());
+    }
+}
