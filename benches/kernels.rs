@@ -13,7 +13,7 @@
 //! * `parry3d` (sphere only): `Ball::cast_local_ray`, one `black_box`ed call
 //!   per ray.
 
-use criterion::{BenchmarkId, Criterion, Throughput, black_box};
+use criterion::{BenchmarkId, Criterion, Throughput};
 use glam::Vec3;
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
@@ -24,6 +24,7 @@ use rayoracle::plane::{self, Plane};
 use rayoracle::quadric::{self, Quadric};
 use rayoracle::ray4::Ray4;
 use rayoracle::sphere::{self, Sphere};
+use std::hint::black_box;
 use wide::f32x4;
 
 const N: usize = 4096;

@@ -929,12 +929,12 @@ mod tests {
         }
     }
 
-    /// The exact oracle's `round_to_f32` gallops downward forever when the
-    /// root lies in `(−MAX − ulp/2, −MAX)` (it should round to `−MAX`):
-    /// "attempt to multiply with overflow" in debug builds, an endless loop
-    /// in release builds. Here `t = −MAX − p/3` for a tiny `p`.
+    /// Regression: the exact oracle's `round_to_f32` used to gallop downward
+    /// forever when the root lies in `(−MAX − ulp/2, −MAX)` (it must round
+    /// to `−MAX`): "attempt to multiply with overflow" in debug builds, an
+    /// endless loop in release builds. Found by the random-input property
+    /// above; here `t = −MAX − p/3` for a tiny `p`.
     #[test]
-    #[ignore = "bug in exact::round::round_to_f32 (not eval); hangs in release builds"]
     fn a_root_just_below_minus_max_rounds_to_minus_max() {
         let line = r#"{"kind":"plane","origin":[0,"0x7f7fffff",0],"dir":[-1,0,-2],"point":["0x3498c525",0,0],"normal":[-1,3,-1]}"#;
         let Some(LineReport::Evaluated(e)) = evaluate(1, line) else {

@@ -102,7 +102,9 @@ fn digest_all() -> [u64; 4] {
                 .iter()
                 .chain(px.map(|[x, y]| cam.ray(x, y)).iter())
             {
-                r.dir.to_array().map(|c| out[3].add(c));
+                for c in r.dir.to_array() {
+                    out[3].add(c);
+                }
             }
         } else {
             out[3].add(-1.0);

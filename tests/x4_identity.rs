@@ -17,7 +17,7 @@ use wide::f32x4;
 fn any_f32() -> impl Strategy<Value = f32> {
     prop_oneof![
         3 => (-8i32..8).prop_map(|i| i as f32),
-        3 => (-1e3f32..1e3),
+        3 => -1e3f32..1e3,
         2 => any::<u32>().prop_map(f32::from_bits),
         1 => prop::sample::select(vec![
             0.0, -0.0, f32::INFINITY, f32::NEG_INFINITY, f32::NAN, f32::MAX, -f32::MAX,

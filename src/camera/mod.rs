@@ -29,7 +29,7 @@
 //!   non-finite `dir`/`up`, `dir` parallel to `up`, `angle` outside `(0, π)`,
 //!   a zero resolution.
 //!
-//! # Accuracy ([`reference`])
+//! # Accuracy ([`reference`](mod@reference))
 //!
 //! The basis (`x`, `y`) is built once per camera in double-word arithmetic
 //! from exactly prescaled `dir` and `up`, with `tan` evaluated in f64 (so the

@@ -98,6 +98,7 @@ impl Lane for f32 {
         if self < other { self } else { other }
     }
     #[inline]
+    #[allow(clippy::eq_op)] // x − x is 0 for finite x and NaN otherwise: the test itself.
     fn finite_or_zero(self) -> Self {
         if self - self == 0.0 { self } else { 0.0 }
     }
@@ -167,6 +168,7 @@ impl Lane for f32x4 {
         self.simd_lt(other).select(self, other)
     }
     #[inline]
+    #[allow(clippy::eq_op)] // x − x is 0 for finite x and NaN otherwise: the test itself.
     fn finite_or_zero(self) -> Self {
         // The mask is all ones where finite; and-ing keeps x, else +0.
         self & (self - self).simd_eq(f32x4::ZERO)

@@ -20,7 +20,7 @@
 //!   to a known power of two, so subnormal normals and planes at `10³⁰` are
 //!   handled, not just moderate inputs.
 //!
-//! # Accuracy ([`reference`])
+//! # Accuracy ([`reference`](mod@reference))
 //!
 //! `a − o` is formed exactly (TwoSum), both dot products are double-word
 //! (exact products, AccurateDWPlusDW sums) and the quotient is a double-word

@@ -1,5 +1,5 @@
 //! Four rays against four planes at once (`wide::f32x4`), bit-identical to
-//! [`super::reference`]: both run [`super::kernel::solve`], this one at
+//! [`super::reference`](mod@super::reference): both run [`super::kernel::solve`], this one at
 //! `f32x4`, classified with masks and selects.
 
 use super::{Plane, PlaneHit, kernel};

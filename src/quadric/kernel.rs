@@ -1,5 +1,5 @@
 //! The quadric's arithmetic, written once over [`Lane`] and instantiated at
-//! `f32` by [`super::reference`] and at `f32x4` by [`super::x4`] (see
+//! `f32` by [`super::reference`](mod@super::reference) and at `f32x4` by [`super::x4`] (see
 //! [`crate::sphere::kernel`] for why).
 
 use crate::num::scale::{Scale, normalized3};

@@ -33,7 +33,7 @@
 //!   factor. [`Quadric::from_sphere`] builds the sphere's coefficients, and
 //!   the tests check that the quadric path classifies it like the sphere.
 //!
-//! # Accuracy ([`reference`])
+//! # Accuracy ([`reference`](mod@reference))
 //!
 //! The coefficients are prescaled by a common power of two (the surface does
 //! not change) and `d` into `[1, 2)` (roots scale back exactly). α, β and γ

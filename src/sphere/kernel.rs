@@ -1,5 +1,5 @@
 //! The sphere's arithmetic, written once over [`Lane`] and instantiated at
-//! `f32` by [`super::reference`] and at `f32x4` by [`super::x4`]: the two
+//! `f32` by [`super::reference`](mod@super::reference) and at `f32x4` by [`super::x4`]: the two
 //! paths run the same IEEE operations in the same order, so they agree bit
 //! for bit on every input (see [`crate::num`]). Only the classification —
 //! branches on one path, masks on the other — is written twice.

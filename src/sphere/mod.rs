@@ -25,7 +25,7 @@
 //! A zero direction is not a line: [`SphereHit::None`]. The radius enters
 //! only as `R²`, so `−R` is the same sphere.
 //!
-//! # The numerically careful form ([`reference`])
+//! # The numerically careful form ([`reference`](mod@reference))
 //!
 //! * **Ray Tracing Gems ch. 7** (Haines, Günther & Akenine-Möller, *Precision
 //!   improvements for ray/sphere intersection*): compute the discriminant from

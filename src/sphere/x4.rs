@@ -1,5 +1,5 @@
 //! Four rays against four spheres at once (`wide::f32x4`), bit-identical
-//! to [`super::reference`]: both run [`super::kernel::solve`], this one at
+//! to [`super::reference`](mod@super::reference): both run [`super::kernel::solve`], this one at
 //! `f32x4`, and the classification uses masks and selects, no branches.
 
 use super::{Sphere, SphereHit, kernel};
