@@ -44,6 +44,11 @@ pub enum Implementation {
     /// The scalar references: `plane::reference`, `sphere::reference`,
     /// `quadric::reference` and `camera::Camera`.
     Reference,
+    /// The four-lane SIMD kernels (`*::x4`). The case is run four times,
+    /// once in each lane, with unrelated cases (a hit, a NaN, a miss or a
+    /// tangent) in the other three lanes; all four placements must agree
+    /// bit for bit, or the column reports an error.
+    X4,
 }
 
 impl Implementation {
@@ -53,7 +58,7 @@ impl Implementation {
     /// use rayoracle::eval::Implementation;
     /// assert!(Implementation::ALL.contains(&Implementation::Reference));
     /// ```
-    pub const ALL: &'static [Implementation] = &[Implementation::Reference];
+    pub const ALL: &'static [Implementation] = &[Implementation::Reference, Implementation::X4];
 
     /// The key in `eval` output.
     ///
@@ -64,6 +69,7 @@ impl Implementation {
     pub fn name(self) -> &'static str {
         match self {
             Implementation::Reference => "reference",
+            Implementation::X4 => "x4",
         }
     }
 
@@ -90,6 +96,7 @@ impl Implementation {
                     Err(e) => Outcome::Error(e.to_string()),
                 },
             },
+            Implementation::X4 => crate::x4_column::run(case),
         }
     }
 }
@@ -489,6 +496,8 @@ pub fn evaluate(line_no: usize, line: &str) -> Option<LineReport> {
 ///     r#"{"line":1,"kind":"sphere","results":{"#,
 ///     r#""exact":{"class":"two","roots":[4.0,6.0],"roots_bits":["0x40800000","0x40c00000"]},"#,
 ///     r#""reference":{"class":"two","roots":[4.0,6.0],"roots_bits":["0x40800000","0x40c00000"],"#,
+///     r#""class_match":true,"ulps":[0,0],"bits":[0.0,0.0]},"#,
+///     r#""x4":{"class":"two","roots":[4.0,6.0],"roots_bits":["0x40800000","0x40c00000"],"#,
 ///     r#""class_match":true,"ulps":[0,0],"bits":[0.0,0.0]}}}"#,
 /// ));
 /// assert_eq!(eval_line(3, r#"{"kind":"sphere"}"#), r#"{"line":3,"error":"origin: missing"}"#);

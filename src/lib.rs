@@ -15,5 +15,6 @@ pub mod ray;
 pub mod ray4;
 pub mod sphere;
 pub mod ulp;
+pub mod x4_column;
 
 pub use ray::Ray;

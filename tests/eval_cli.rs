@@ -9,6 +9,8 @@ const SPHERE: &str =
 const SPHERE_OUT: &str = concat!(
     r#""results":{"exact":{"class":"two","roots":[4.0,6.0],"roots_bits":["0x40800000","0x40c00000"]},"#,
     r#""reference":{"class":"two","roots":[4.0,6.0],"roots_bits":["0x40800000","0x40c00000"],"#,
+    r#""class_match":true,"ulps":[0,0],"bits":[0.0,0.0]},"#,
+    r#""x4":{"class":"two","roots":[4.0,6.0],"roots_bits":["0x40800000","0x40c00000"],"#,
     r#""class_match":true,"ulps":[0,0],"bits":[0.0,0.0]}}}"#
 );
 const PLANE: &str =
@@ -118,7 +120,8 @@ fn mixed_input_gives_one_line_per_case_in_order_and_exit_1() {
         concat!(
             r#"{"line":7,"kind":"sphere","family":"nan","results":{"#,
             r#""exact":{"error":"an input is NaN or infinite, so it has no exact value"},"#,
-            r#""reference":{"class":"none","roots":[],"roots_bits":[]}}}"#
+            r#""reference":{"class":"none","roots":[],"roots_bits":[]},"#,
+            r#""x4":{"class":"none","roots":[],"roots_bits":[]}}}"#
         )
     );
     assert_eq!(
@@ -126,7 +129,8 @@ fn mixed_input_gives_one_line_per_case_in_order_and_exit_1() {
         concat!(
             r#"{"line":8,"kind":"plane","results":{"#,
             r#""exact":{"class":"hit","roots":[2.0],"roots_bits":["0x40000000"]},"#,
-            r#""reference":{"class":"hit","roots":[2.0],"roots_bits":["0x40000000"],"class_match":true,"ulps":[0],"bits":[0.0]}}}"#
+            r#""reference":{"class":"hit","roots":[2.0],"roots_bits":["0x40000000"],"class_match":true,"ulps":[0],"bits":[0.0]},"#,
+            r#""x4":{"class":"hit","roots":[2.0],"roots_bits":["0x40000000"],"class_match":true,"ulps":[0],"bits":[0.0]}}}"#
         )
     );
     let quadric = json(lines[7]);
@@ -145,6 +149,8 @@ fn mixed_input_gives_one_line_per_case_in_order_and_exit_1() {
             r#"{"line":10,"kind":"camera","results":{"#,
             r#""exact":{"class":"ray","origin":[1.0,2.0,3.0],"dir":[0.0,0.0,-1.0],"dir_bits":["0x00000000","0x00000000","0xbf800000"]},"#,
             r#""reference":{"class":"ray","origin":[1.0,2.0,3.0],"dir":[0.0,0.0,-1.0],"dir_bits":["0x00000000","0x00000000","0xbf800000"],"#,
+            r#""class_match":true,"ulps":[0,0,0],"bits":[0.0,0.0,0.0]},"#,
+            r#""x4":{"class":"ray","origin":[1.0,2.0,3.0],"dir":[0.0,0.0,-1.0],"dir_bits":["0x00000000","0x00000000","0xbf800000"],"#,
             r#""class_match":true,"ulps":[0,0,0],"bits":[0.0,0.0,0.0]}}}"#
         )
     );

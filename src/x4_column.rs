@@ -1,0 +1,120 @@
+//! The `x4` column of `eval`: each case is run in every lane of a packet
+//! whose other lanes hold unrelated cases, and the four placements must
+//! agree bit for bit.
+
+use crate::Ray;
+use crate::case::Case;
+use crate::eval::Outcome;
+use crate::plane::{self, Plane};
+use crate::quadric::{self, Quadric};
+use crate::ray4::Ray4;
+use crate::sphere::{self, Sphere};
+use glam::Vec3;
+
+const NAN3: Vec3 = Vec3::splat(f32::NAN);
+
+/// Neighbours for a sphere case: a two-hit, a NaN, a tangent.
+fn sphere_decoys() -> [(Ray, Sphere); 3] {
+    let unit = Sphere::new(Vec3::ZERO, 1.0);
+    [
+        (Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), unit),
+        (Ray::new(NAN3, Vec3::Z), unit),
+        (Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z), unit),
+    ]
+}
+
+fn plane_decoys() -> [(Ray, Plane); 3] {
+    let ground = Plane::new(Vec3::ZERO, Vec3::Y);
+    [
+        (Ray::new(Vec3::Y, -Vec3::Y), ground),
+        (Ray::new(NAN3, Vec3::X), ground),
+        (Ray::new(Vec3::Y, Vec3::X), ground),
+    ]
+}
+
+fn quadric_decoys() -> [(Ray, Quadric); 3] {
+    let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+    [
+        (Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), cyl),
+        (Ray::new(NAN3, Vec3::X), cyl),
+        (Ray::new(Vec3::new(1.0, 0.0, 0.0), Vec3::Z), cyl),
+    ]
+}
+
+/// The case placed in lane `lane` and the decoys in the others.
+fn packet<T: Copy>(case: T, decoys: [T; 3], lane: usize) -> [T; 4] {
+    let mut d = decoys.into_iter();
+    core::array::from_fn(|i| {
+        if i == lane {
+            case
+        } else {
+            d.next().unwrap_or(case)
+        }
+    })
+}
+
+/// Bit equality of outcomes, any NaN equal to any NaN.
+fn same(a: &Outcome, b: &Outcome) -> bool {
+    let bits = |o: &Outcome| {
+        o.values()
+            .iter()
+            .map(|x| if x.is_nan() { u32::MAX } else { x.to_bits() })
+            .collect::<Vec<_>>()
+    };
+    a.class() == b.class() && bits(a) == bits(b)
+}
+
+/// Runs `case` through the x4 kernels in each of the four lanes.
+///
+/// ```
+/// use rayoracle::case::parse_line;
+/// use rayoracle::eval::Outcome;
+/// use rayoracle::hit::Roots;
+/// let c = parse_line(r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap();
+/// assert_eq!(rayoracle::x4_column::run(&c.case), Outcome::Hit { class: "two", roots: Roots::two(4.0, 6.0) });
+/// ```
+pub fn run(case: &Case) -> Outcome {
+    let per_lane: Vec<Outcome> = (0..4).map(|lane| in_lane(case, lane)).collect();
+    if per_lane.iter().all(|o| same(o, &per_lane[0])) {
+        per_lane[0].clone()
+    } else {
+        Outcome::Error(format!("x4 lanes disagree: {per_lane:?}"))
+    }
+}
+
+fn in_lane(case: &Case, lane: usize) -> Outcome {
+    match case {
+        Case::Plane(r, p) => {
+            let pk = packet((*r, *p), plane_decoys(), lane);
+            let h = plane::x4::intersect(
+                &Ray4::from_rays(pk.map(|c| c.0)),
+                &plane::x4::Plane4::from_planes(pk.map(|c| c.1)),
+            );
+            Outcome::hit(&h.lanes()[lane])
+        }
+        Case::Sphere(r, s) => {
+            let pk = packet((*r, *s), sphere_decoys(), lane);
+            let h = sphere::x4::intersect(
+                &Ray4::from_rays(pk.map(|c| c.0)),
+                &sphere::x4::Sphere4::from_spheres(pk.map(|c| c.1)),
+            );
+            Outcome::hit(&h.lanes()[lane])
+        }
+        Case::Quadric(r, q) => {
+            let pk = packet((*r, *q), quadric_decoys(), lane);
+            let h = quadric::x4::intersect(
+                &Ray4::from_rays(pk.map(|c| c.0)),
+                &quadric::x4::Quadric4::from_quadrics(pk.map(|c| c.1)),
+            );
+            Outcome::hit(&h.lanes()[lane])
+        }
+        Case::Camera(p, px) => match p.build() {
+            Ok(cam) => {
+                let [w, h] = p.res;
+                let corners = [[0, 0], [w - 1, h - 1], [w / 2, 0]];
+                Outcome::Ray(cam.ray4(packet(*px, corners, lane)).to_rays()[lane])
+            }
+            Err(e) => Outcome::Error(e.to_string()),
+        },
+    }
+}
