@@ -195,6 +195,29 @@ impl Outcome {
             Outcome::Error(_) => Vec::new(),
         }
     }
+
+    /// Whether two outcomes are the same class with the same bits (any NaN
+    /// equal to any NaN; `+0` and `−0` differ): the bit-identity that x4
+    /// owes the reference.
+    ///
+    /// ```
+    /// use rayoracle::eval::Outcome;
+    /// use rayoracle::hit::Roots;
+    /// let a = Outcome::Hit { class: "hit", roots: Roots::one(0.0) };
+    /// let b = Outcome::Hit { class: "hit", roots: Roots::one(-0.0) };
+    /// assert!(a.same_bits(&a) && !a.same_bits(&b));
+    /// let n = Outcome::Hit { class: "hit", roots: Roots::one(f32::NAN) };
+    /// assert!(n.same_bits(&Outcome::Hit { class: "hit", roots: Roots::one(-f32::NAN) }));
+    /// ```
+    pub fn same_bits(&self, other: &Outcome) -> bool {
+        let bits = |o: &Outcome| -> Vec<u32> {
+            o.values()
+                .iter()
+                .map(|v| if v.is_nan() { u32::MAX } else { v.to_bits() })
+                .collect()
+        };
+        self.class() == other.class() && bits(self) == bits(other)
+    }
 }
 
 /// How an implementation's outcome compares with the exact one.

@@ -53,17 +53,6 @@ fn packet<T: Copy>(case: T, decoys: [T; 3], lane: usize) -> [T; 4] {
     })
 }
 
-/// Bit equality of outcomes, any NaN equal to any NaN.
-fn same(a: &Outcome, b: &Outcome) -> bool {
-    let bits = |o: &Outcome| {
-        o.values()
-            .iter()
-            .map(|x| if x.is_nan() { u32::MAX } else { x.to_bits() })
-            .collect::<Vec<_>>()
-    };
-    a.class() == b.class() && bits(a) == bits(b)
-}
-
 /// Runs `case` through the x4 kernels in each of the four lanes.
 ///
 /// ```
@@ -75,7 +64,7 @@ fn same(a: &Outcome, b: &Outcome) -> bool {
 /// ```
 pub fn run(case: &Case) -> Outcome {
     let per_lane: Vec<Outcome> = (0..4).map(|lane| in_lane(case, lane)).collect();
-    if per_lane.iter().all(|o| same(o, &per_lane[0])) {
+    if per_lane.iter().all(|o| o.same_bits(&per_lane[0])) {
         per_lane[0].clone()
     } else {
         Outcome::Error(format!("x4 lanes disagree: {per_lane:?}"))

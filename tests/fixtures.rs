@@ -231,6 +231,24 @@ fn run_line(parsed: &CaseLine, kind_prefix: &str) -> Result<CaseReport, Vec<Stri
             None
         }
     };
+    // x4 must give the reference's bits on every fixture line, placed in
+    // each lane among unrelated cases.
+    {
+        use rayoracle::eval::Implementation;
+        let (r, x) = (
+            Implementation::Reference.run(&parsed.case),
+            Implementation::X4.run(&parsed.case),
+        );
+        let bits = |o: &rayoracle::eval::Outcome| {
+            o.values()
+                .iter()
+                .map(|v| if v.is_nan() { u32::MAX } else { v.to_bits() })
+                .collect::<Vec<_>>()
+        };
+        if r.class() != x.class() || bits(&r) != bits(&x) {
+            errs.push(format!("x4 {x:?} differs from the reference {r:?}"));
+        }
+    }
     if let Some(expect) = &parsed.expect {
         match std::panic::catch_unwind(|| check_expect(&parsed.case, expect)) {
             Ok(e) => errs.extend(e),

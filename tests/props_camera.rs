@@ -54,6 +54,7 @@ proptest! {
         let got = p.build().map(|cam| cam.ray(px[0], px[1]));
         let r = checked(check_camera(&p, px, got))?;
         prop_assert_eq!(r.status, Status::Checked);
+        x4_agrees(&rayoracle::case::Case::Camera(p, px))?;
     }
 
     /// The corners and the centre of every image.

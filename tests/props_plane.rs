@@ -12,6 +12,7 @@ use rayoracle::plane::{Plane, PlaneHit, exact, reference};
 use support::*;
 
 fn judge(ray: &Ray, p: &Plane) -> Result<rayoracle::check::CaseReport, TestCaseError> {
+    x4_agrees(&rayoracle::case::Case::Plane(*ray, *p))?;
     checked(check_plane(ray, p, reference::intersect(ray, p)))
 }
 

@@ -11,6 +11,7 @@ use rayoracle::quadric::{Quadric, QuadricHit, exact, reference};
 use support::*;
 
 fn judge(ray: &Ray, q: &Quadric) -> Result<CaseReport, TestCaseError> {
+    x4_agrees(&rayoracle::case::Case::Quadric(*ray, *q))?;
     checked(check_quadric(ray, q, reference::intersect(ray, q)))
 }
 

@@ -12,6 +12,7 @@ use rayoracle::sphere::{Sphere, SphereHit, exact, reference};
 use support::*;
 
 fn judge(ray: &Ray, s: &Sphere) -> Result<CaseReport, TestCaseError> {
+    x4_agrees(&rayoracle::case::Case::Sphere(*ray, *s))?;
     checked(check_sphere(ray, s, reference::intersect(ray, s)))
 }
 

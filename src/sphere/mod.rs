@@ -32,8 +32,12 @@
 //!   the closest-approach vector `l = f − (b/a) d` as `Δ = a (R² − |l|²)`,
 //!   which does not cancel for a far sphere as `b² − ac` does; then
 //!   `q = −(b + sign(b)√Δ)`, `t₀ = c/q`, `t₁ = q/a`. Here it is used in a
-//!   division-free form, `a Δ = (aR)² − |a f − b d|²`, so that exactly
-//!   tangent inputs with exact arithmetic give exactly 0.
+//!   division-free form, `a Δ = (aR)² − |a f − b d|²`, so that an exactly
+//!   tangent input gives exactly 0 whenever both squares are exact in
+//!   double-word arithmetic, i.e. while `a·R` (after prescaling) needs at
+//!   most 24 bits: true for small-integer data (the property tests use
+//!   Pythagorean quadruples up to 64); beyond that a tangent may come out as
+//!   a near-miss or a near-double root, inside the documented band.
 //! * **Compensated `c = |f|² − R²`** for origins close to the surface: `f` is
 //!   formed exactly (TwoSum of `o` and `−C`), and `|f|² − R²` in double-word
 //!   arithmetic from exact squares.

@@ -107,3 +107,27 @@ pub fn pythagorean_triple(k: i32) -> impl Strategy<Value = [i32; 3]> {
             [a, b, m * m + n * n]
         })
 }
+
+/// The x4 kernels must give the reference's bits on the same families the
+/// oracle tests draw: the case is run in each lane of a packet among
+/// unrelated cases (`eval`'s x4 column), and compared bit for bit.
+pub fn x4_agrees(case: &rayoracle::case::Case) -> Result<(), TestCaseError> {
+    use rayoracle::eval::Implementation;
+    let (r, x) = (
+        Implementation::Reference.run(case),
+        Implementation::X4.run(case),
+    );
+    let bits = |o: &rayoracle::eval::Outcome| {
+        o.values()
+            .iter()
+            .map(|v| if v.is_nan() { u32::MAX } else { v.to_bits() })
+            .collect::<Vec<_>>()
+    };
+    if r.class() == x.class() && bits(&r) == bits(&x) {
+        Ok(())
+    } else {
+        Err(TestCaseError::fail(format!(
+            "x4 {x:?} != reference {r:?} for {case:?}"
+        )))
+    }
+}
