@@ -32,9 +32,11 @@
 //!   designed to reproduce (parallel planes from exact products, tangents
 //!   from small integers, lines on a surface) are not asserted here; the
 //!   property tests assert them for the inputs where they hold.
-//! * **Quadric domain.** The quadric bounds are documented for `|o| < 2⁴⁰`
-//!   only; outside it the report is [`Status::OutOfDomain`] and nothing is
-//!   checked.
+//! * **Domains.** Each kernel states where its bounds hold
+//!   ([`plane::in_domain`], [`sphere::in_domain`], [`quadric::in_domain`]:
+//!   no underflow in the double-word products after prescaling, and
+//!   `|o| < 2⁴⁰` for the quadric). Outside it the report is
+//!   [`Status::OutOfDomain`] and nothing is checked.
 //! * **Camera.** Construction must fail exactly when the oracle's does, with
 //!   the same [`CameraError`]. Otherwise the origin must be the camera
 //!   position bit for bit, and each direction component within
@@ -253,6 +255,8 @@ pub enum Violation {
         /// The candidate's origin.
         got: [f32; 3],
     },
+    /// The sphere and the same sphere written as a quadric disagree.
+    SphereAsQuadric(String),
     /// The camera was built where the oracle's failed, or the other way
     /// round, or both failed differently.
     Construction {
@@ -292,6 +296,7 @@ impl fmt::Display for Violation {
                 "camera: dir[{}] is {:e}, oracle {:e}: {:.3} ulps of S = {:e} > bound {}",
                 c.axis, c.got, c.exact, c.err_ulps, c.scale, c.bound
             ),
+            Violation::SphereAsQuadric(what) => write!(f, "sphere as quadric: {what}"),
             Violation::Origin { exact, got } => {
                 write!(f, "camera: origin {got:?} is not the position {exact:?}")
             }
@@ -454,6 +459,10 @@ pub fn check_plane(ray: &Ray, p: &Plane, got: PlaneHit) -> Result<CaseReport, Vi
         return Ok(r);
     };
     let mut r = report("plane", exact.class(), got.class());
+    if !plane::in_domain(ray, p) {
+        r.status = Status::OutOfDomain;
+        return Ok(r);
+    }
     // Finite inputs, so the exact d·n exists.
     let d = vec3(ray.dir.to_array()).expect("finite");
     let n = vec3(p.normal.to_array()).expect("finite");
@@ -498,15 +507,18 @@ pub fn check_sphere(ray: &Ray, s: &Sphere, got: SphereHit) -> Result<CaseReport,
         return Ok(r);
     };
     let mut r = report("sphere", exact.class(), got.class());
+    if !sphere::in_domain(ray, s) {
+        r.status = Status::OutOfDomain;
+        return Ok(r);
+    }
     r.margin = (&q.alpha * &q.discriminant()).mul_pow2(-2).to_f64();
     r.band = sphere::band(ray, s);
     let in_band = r.margin.abs() <= r.band;
     if classes(&mut r, in_band)? {
-        let k = sphere::condition(ray, s);
-        // A tangent's one root: the larger κ (both are huge or infinite).
+        // κ at the exact roots; a double root's is infinite.
         let kappa = match exact {
-            SphereHit::Tangent(_) => [k[0].max(k[1]), f64::INFINITY],
-            _ => k,
+            SphereHit::Two(t0, t1) => [t0, t1].map(|t| sphere::condition_at(ray, s, t as f64)),
+            _ => [f64::INFINITY; 2],
         };
         roots(
             &mut r,
@@ -519,14 +531,11 @@ pub fn check_sphere(ray: &Ray, s: &Sphere, got: SphereHit) -> Result<CaseReport,
     Ok(r)
 }
 
-/// `2⁴⁰`: the quadric bounds are documented for `|o| < 2⁴⁰` only.
-const QUADRIC_ORIGIN_LIMIT: f32 = 1_099_511_627_776.0;
-
 /// Judges an answer to a ray–quadric case. Margin `β² − 4αγ` (exact), band
 /// [`quadric::band`], also tolerating a class mismatch when the exact
 /// `0 < |α| ≤ 2⁻⁴⁴ Σ|α terms|`; κ [`quadric::condition`] (for such an α
-/// the same κ evaluated at the exact roots), bound [`quadric::ROOT_ULPS`]. Origins with a component of magnitude `≥ 2⁴⁰`
-/// are [`Status::OutOfDomain`].
+/// the same κ evaluated at the exact roots), bound [`quadric::ROOT_ULPS`].
+/// Cases outside [`quadric::in_domain`] are [`Status::OutOfDomain`].
 ///
 /// ```
 /// use rayoracle::check::check_quadric;
@@ -547,12 +556,7 @@ pub fn check_quadric(ray: &Ray, q: &Quadric, got: QuadricHit) -> Result<CaseRepo
         return Ok(r);
     };
     let mut r = report("quadric", exact.class(), got.class());
-    if ray
-        .origin
-        .to_array()
-        .iter()
-        .any(|x| x.abs() >= QUADRIC_ORIGIN_LIMIT)
-    {
+    if !quadric::in_domain(ray, q) {
         r.status = Status::OutOfDomain;
         return Ok(r);
     }
@@ -564,18 +568,14 @@ pub fn check_quadric(ray: &Ray, q: &Quadric, got: QuadricHit) -> Result<CaseRepo
     let alpha_in_band = !eq.alpha.is_zero() && alpha <= sa * 2f64.powi(-44);
     let in_band = r.margin.abs() <= r.band || alpha_in_band;
     if classes(&mut r, in_band)? {
-        // `condition` finds the roots again in f64, which cannot see an α
-        // this small (it may take it for 0 and give the linear root's κ to
-        // both); there, evaluate the same κ at the exact roots instead.
-        let kappa = if alpha_in_band {
-            let mut k = [f64::INFINITY; 2];
+        // κ at the exact roots: `condition` would find them again in f64,
+        // which cannot see a tiny α and loses roots to cancellation.
+        let mut kappa = [f64::INFINITY; 2];
+        if !matches!(exact, QuadricHit::One(_)) || eq.alpha.is_zero() {
             for (i, t) in exact.roots().as_slice().iter().enumerate() {
-                k[i] = quadric_kappa_at(ray, q, &eq, *t as f64);
+                kappa[i] = quadric_kappa_at(ray, q, &eq, *t as f64);
             }
-            k
-        } else {
-            quadric::condition(ray, q)
-        };
+        }
         roots(
             &mut r,
             exact.roots().as_slice(),
@@ -591,12 +591,17 @@ pub fn check_quadric(ray: &Ray, q: &Quadric, got: QuadricHit) -> Result<CaseRepo
 /// 3Σ|γ terms|) / (|2αt + β| |t|)`, at a given root `t`, with the exact α
 /// and β in `p'(t) = 2αt + β`.
 fn quadric_kappa_at(ray: &Ray, q: &Quadric, eq: &crate::exact::Quadratic, t: f64) -> f64 {
-    if t == 0.0 {
-        return 0.0;
-    }
     let (at, bt, gt) = quadric::terms(ray, q);
     let abs_sum = |xs: &[f64]| xs.iter().map(|x| x.abs()).sum::<f64>();
     let (sa, sb, sg) = (abs_sum(&at), abs_sum(&bt), abs_sum(&gt));
+    if t == 0.0 || !t.is_finite() {
+        // A zero root is promised exactly only when γ has no terms at all.
+        return if t == 0.0 && sg == 0.0 {
+            0.0
+        } else {
+            f64::INFINITY
+        };
+    }
     let dp = (2.0 * eq.alpha.to_f64() * t + eq.beta.to_f64()).abs();
     (3.0 * sa * t * t + 3.0 * sb * t.abs() + 3.0 * sg) / (dp * t.abs())
 }
@@ -679,6 +684,66 @@ pub fn check_camera(
         }
     }
     Ok(r)
+}
+
+/// The quadric class that corresponds to a sphere class (tangent ↔ one).
+fn sphere_as_quadric_hit(h: SphereHit) -> QuadricHit {
+    match h {
+        SphereHit::None => QuadricHit::None,
+        SphereHit::Tangent(t) => QuadricHit::One(t),
+        SphereHit::Two(t0, t1) => QuadricHit::Two(t0, t1),
+    }
+}
+
+/// The sphere and the same sphere written as a quadric (seed 1.4b) agree:
+///
+/// * when [`Quadric::from_sphere`] is exact (e.g. small integer centre and
+///   radius), the two exact oracles solve the same polynomial, so they give
+///   corresponding classes and bit-identical roots (a zero direction is the
+///   one exception: no line for the sphere, a point for the quadric);
+/// * each reference is acceptable against its own oracle;
+/// * where both references are outside their bands, they give the same
+///   class.
+///
+/// Returns `Ok(false)` when the check does not apply (inexact coefficients
+/// or non-finite inputs), `Ok(true)` when it ran and passed.
+///
+/// ```
+/// use rayoracle::check::sphere_as_quadric;
+/// use rayoracle::{Ray, sphere::Sphere};
+/// use glam::Vec3;
+/// let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
+/// assert_eq!(sphere_as_quadric(&ray, &Sphere::new(Vec3::new(1.0, 0.0, 0.0), 2.0)), Ok(true));
+/// ```
+pub fn sphere_as_quadric(ray: &Ray, s: &Sphere) -> Result<bool, Violation> {
+    let (q, exact) = Quadric::from_sphere(s);
+    if !exact || ray.dir == glam::Vec3::ZERO {
+        return Ok(false);
+    }
+    let (Ok(es), Ok(eq)) = (
+        sphere::exact::intersect(ray, s),
+        quadric::exact::intersect(ray, &q),
+    ) else {
+        return Ok(false);
+    };
+    if sphere_as_quadric_hit(es) != eq {
+        return Err(Violation::SphereAsQuadric(format!(
+            "exact sphere {es:?} but exact quadric {eq:?}"
+        )));
+    }
+    let hs = sphere::reference::intersect(ray, s);
+    let hq = quadric::reference::intersect(ray, &q);
+    let rs = check_sphere(ray, s, hs)?;
+    let rq = check_quadric(ray, &q, hq)?;
+    if rs.status == Status::Checked
+        && rq.status == Status::Checked
+        && core::mem::discriminant(&sphere_as_quadric_hit(hs)) != core::mem::discriminant(&hq)
+    {
+        return Err(Violation::SphereAsQuadric(format!(
+            "reference sphere {hs:?} but reference quadric {hq:?}"
+        )));
+    }
+    Ok(true)
 }
 
 #[cfg(test)]

@@ -2,8 +2,8 @@
 
 use super::{CameraError, CameraParams, MAX_RESOLUTION, kernel};
 use crate::Ray;
+use crate::num::Ff;
 use crate::num::scale::normalized3;
-use crate::num::{Ff, Lane};
 use glam::Vec3;
 
 /// A validated camera with its basis: `x` (right, half-width) and `y` (down,
@@ -106,8 +106,12 @@ impl Camera {
         let y_hat = normalize_ff(cross_ff(dir, x_hat)).ok_or(CameraError::DirParallelToUp)?;
 
         let focus = (dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]).sqrt();
-        // tan in f64, carried as a double-word: independent of the platform's tanf.
-        let h64 = (p.angle as f64 / 2.0).tan();
+        // tan in f64, carried as a double-word: independent of the platform's
+        // tanf. The prescale 2^kd of |dir| is folded in here, in f64, so that
+        // each basis component is rounded once, at its true magnitude (a
+        // basis rounded while scaled and then rescaled would round twice when
+        // the scaled value is subnormal).
+        let h64 = (p.angle as f64 / 2.0).tan() * 2f64.powi(kd);
         let h = Ff {
             hi: h64 as f32,
             lo: (h64 - (h64 as f32) as f64) as f32,
@@ -115,8 +119,8 @@ impl Camera {
         let aspect = Ff::from(p.res[0] as f32) / Ff::from(p.res[1] as f32);
         let len_y = focus * h;
         let len_x = len_y * aspect;
-        let x = x_hat.map(|c| (c * len_x).round().ldexp(kd));
-        let y = y_hat.map(|c| (c * len_y).round().ldexp(kd));
+        let x = x_hat.map(|c| (c * len_x).round());
+        let y = y_hat.map(|c| (c * len_y).round());
         let (x, y) = (Vec3::from_array(x), Vec3::from_array(y));
         if !(x.is_finite() && y.is_finite()) {
             return Err(CameraError::BasisOverflow);

@@ -88,3 +88,45 @@ pub fn normalized3<L: Lane>(v: [L; 3]) -> ([L; 3], Scale<L>) {
     let s = Scale::of_max(&v);
     (s.apply3(v), s)
 }
+
+/// Whether a magnitude is zero or within `[2^lo, 2^hi]`: the kernels'
+/// domains ([`crate::plane::in_domain`] and the others) are stated with it.
+/// A product of f32 values is formed exactly by Dekker's TwoProduct only
+/// while it is above about `2⁻¹⁰³` (its error term must not underflow).
+///
+/// ```
+/// use rayoracle::num::scale::in_range;
+/// assert!(in_range(0.0, -50, 50) && in_range(1e-15, -50, 50));
+/// assert!(!in_range(1e-16, -50, 50) && !in_range(1e16, -50, 50));
+/// ```
+pub fn in_range(s: f64, lo: i32, hi: i32) -> bool {
+    s == 0.0 || (2f64.powi(lo)..=2f64.powi(hi)).contains(&s)
+}
+
+/// What scaling `x` by `s` in f32 loses: `|x·2^−k − fl(x·2^−k)|`, zero
+/// unless a value far below the largest one of its group is pushed into the
+/// subnormal range and rounded. The kernels' domains require the total loss
+/// to be negligible (`≤ 2⁻⁶⁰`) against the sums it feeds.
+///
+/// ```
+/// use rayoracle::num::scale::{Scale, crush_loss};
+/// let s = Scale::of_max(&[1.7e38f32, 4.9e-39]);
+/// assert_eq!(crush_loss(1.7e38, s), 0.0);
+/// assert!(crush_loss(4.9e-39, s) > 0.0);
+/// ```
+pub fn crush_loss(x: f32, s: Scale<f32>) -> f64 {
+    if !x.is_finite() {
+        return 0.0;
+    }
+    (x as f64 * 2f64.powi(-s.k) - s.apply(x) as f64).abs()
+}
+
+/// `loss ≤ 2⁻⁶⁰ · scale`: a prescaling loss that cannot matter.
+///
+/// ```
+/// assert!(rayoracle::num::scale::negligible(1e-30, 1.0));
+/// assert!(!rayoracle::num::scale::negligible(1e-10, 1.0));
+/// ```
+pub fn negligible(loss: f64, scale: f64) -> bool {
+    loss <= scale * 2f64.powi(-60)
+}

@@ -136,3 +136,44 @@ pub fn band(ray: &Ray, plane: &Plane) -> f64 {
 }
 
 use crate::Ray;
+
+/// The accuracy domain of [`reference::intersect`](mod@reference): with the
+/// kernel's own prescaling (`n`, `d` and the pair `(a, o)` each by the power
+/// of two of its largest magnitude, `a` and `o` rounded as the kernel rounds
+/// them), the sums `Σ|dᵢnᵢ|` and `Σ|(aᵢ − oᵢ)nᵢ|` are each 0 or within
+/// `[2⁻⁷⁰, 2¹⁰⁰]` ([`crate::num::scale::in_range`]): a term too small for an
+/// exact product is then negligible against its sum. What the prescaling of
+/// `(a, o)` rounds away must be negligible against `Σ|(aᵢ − oᵢ)nᵢ|`
+/// ([`crate::num::scale::crush_loss`]). Outside it the class and
+/// root bounds are not promised: a component `2¹²⁶` times smaller than its
+/// group's largest is rounded away by the prescaling, and matters when it
+/// meets the only non-zero component of the normal.
+///
+/// ```
+/// use rayoracle::{Ray, plane::{Plane, in_domain}};
+/// use glam::Vec3;
+/// let p = Plane::new(Vec3::ZERO, Vec3::Z);
+/// assert!(in_domain(&Ray::new(Vec3::new(0.0, -5.0, 2.0), Vec3::Z), &p));
+/// assert!(!in_domain(&Ray::new(Vec3::new(0.0, -5.0, 2.3e-41), Vec3::Z), &p));
+/// ```
+pub fn in_domain(ray: &Ray, plane: &Plane) -> bool {
+    use crate::num::scale::{Scale, crush_loss, in_range, negligible};
+    let n = plane.normal.to_array();
+    let d = ray.dir.to_array();
+    let (a, o) = (plane.point.to_array(), ray.origin.to_array());
+    let up = |v: [f32; 3]| -> [f64; 3] {
+        let s = Scale::of_max(&v);
+        v.map(|x| x as f64 * 2f64.powi(-s.k))
+    };
+    let (n, d) = (up(n), up(d));
+    let sa = Scale::of_max(&[a[0], a[1], a[2], o[0], o[1], o[2]]);
+    let w = [0, 1, 2].map(|i| sa.apply(a[i]) as f64 - sa.apply(o[i]) as f64);
+    let w_exact = [0, 1, 2].map(|i| (a[i] as f64 - o[i] as f64) * 2f64.powi(-sa.k));
+    let s_num: f64 = (0..3).map(|i| (w[i] * n[i]).abs()).sum();
+    let s_exact: f64 = (0..3).map(|i| (w_exact[i] * n[i]).abs()).sum();
+    let loss: f64 = (0..3)
+        .map(|i| (crush_loss(a[i], sa) + crush_loss(o[i], sa)) * n[i].abs())
+        .sum();
+    let s_den: f64 = (0..3).map(|i| (d[i] * n[i]).abs()).sum();
+    negligible(loss, s_exact) && in_range(s_num, -70, 100) && in_range(s_den, -70, 100)
+}

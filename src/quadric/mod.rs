@@ -41,7 +41,10 @@
 //! double-word arithmetic, so each is accurate to about `2⁻⁴⁶` of the sum of
 //! its terms' magnitudes; the solve is double-word and rounded once. The
 //! classification band and root bound follow ([`band`], [`ROOT_ULPS`]).
-//! The origin is not prescaled: the bounds hold for `|o| < 2⁴⁰`.
+//! The origin is not prescaled, so the bounds hold on a stated domain
+//! ([`in_domain`]): `|o| < 2⁴⁰`, and the products `β²` and `αγ`, measured
+//! by the sums of their terms' magnitudes after the prescaling, must be 0 or
+//! within `[2⁻¹⁰⁰, 2¹⁰⁰]`.
 
 pub mod exact;
 pub mod kernel;
@@ -204,6 +207,54 @@ pub(crate) fn terms(ray: &Ray, q: &Quadric) -> ([f64; 6], [f64; 12], [f64; 10]) 
         k[9],
     ];
     (alpha, beta, gamma)
+}
+
+/// The accuracy domain of [`reference::intersect`](mod@reference): `|oᵢ| <
+/// 2⁴⁰`, and, with the coefficients and `d` prescaled as the kernel does,
+/// `(Σ|β terms|)²` and `Σ|α terms| · Σ|γ terms|` each 0 or within
+/// `[2⁻¹⁰⁰, 2¹⁰⁰]` ([`crate::num::scale::in_range`]), so that the
+/// discriminant `β² − 4αγ` is formed from exact products; and what the
+/// prescaling of the coefficients rounds away must be negligible against
+/// each of those sums ([`crate::num::scale::crush_loss`]).
+///
+/// ```
+/// use rayoracle::{Ray, quadric::{Quadric, in_domain}};
+/// use glam::Vec3;
+/// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+/// assert!(in_domain(&Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), &cyl));
+/// let unit = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
+/// assert!(!in_domain(&Ray::new(Vec3::new(1e-40, 0.0, 0.0), Vec3::Z), &unit));
+/// ```
+pub fn in_domain(ray: &Ray, q: &Quadric) -> bool {
+    use crate::num::scale::{Scale, crush_loss, in_range, negligible};
+    if ray
+        .origin
+        .to_array()
+        .iter()
+        .any(|x| x.abs() >= 2f32.powi(40))
+    {
+        return false;
+    }
+    let sq = Scale::of_max(&q.coeffs);
+    let k = q.coeffs.map(|x| sq.apply(x));
+    let d = ray.dir.to_array();
+    let sd = Scale::of_max(&d);
+    let scaled = Ray::new(ray.origin, glam::Vec3::from_array(sd.apply3(d)));
+    let (a, b, g) = terms(&scaled, &Quadric::new(k));
+    let sum = |t: &[f64]| t.iter().map(|x| x.abs()).sum::<f64>();
+    let (sa, sb, sg) = (sum(&a), sum(&b), sum(&g));
+    // What prescaling the coefficients rounds away, as it reaches α, β, γ:
+    // the same terms with each coefficient replaced by its loss.
+    // (Lifted by 2¹⁰⁰ so that the f32 coefficients `terms` takes hold them.)
+    let lift = 2f64.powi(100);
+    let loss = q.coeffs.map(|x| (crush_loss(x, sq) * lift) as f32);
+    let (la, lb, lg) = terms(&scaled, &Quadric::new(loss));
+    let ok = |l: &[f64], s: f64| negligible(sum(l) / lift, s);
+    let exact_ok = ok(&la, sa) && ok(&lb, sb) && ok(&lg, sg);
+    exact_ok
+        && in_range(sb * sb, -100, 100)
+        && in_range(sa * sg, -100, 100)
+        && in_range(sa.max(sb).max(sg), -100, 50)
 }
 
 /// The classification band on the discriminant `β² − 4αγ`: the reference's

@@ -146,6 +146,44 @@ fn f64_terms(ray: &Ray, s: &Sphere) -> ([f64; 3], [f64; 3], f64) {
     (f, d, s.radius as f64)
 }
 
+/// The accuracy domain of [`reference::intersect`](mod@reference): with the
+/// kernel's prescaling (`d` and `(f, R)` by the power of two of their
+/// largest magnitudes), `Σ|fᵢdᵢ|` is 0 or within `[2⁻⁵⁰, 2⁵⁰]`
+/// ([`crate::num::scale::in_range`]); `a = d·d` and `|f|² + R²` are in range
+/// by construction. What the prescaling of `(o, C, R)` rounds away must be
+/// negligible against `max(|f|, R)` ([`crate::num::scale::crush_loss`]). Outside it `b = f·d` and its square lose the exactness
+/// of their products to underflow, and the bounds are not promised.
+///
+/// ```
+/// use rayoracle::{Ray, sphere::{Sphere, in_domain}};
+/// use glam::Vec3;
+/// let s = Sphere::new(Vec3::ZERO, 1.0);
+/// assert!(in_domain(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), &s));
+/// assert!(!in_domain(&Ray::new(Vec3::new(1.0, 0.0, 1e-20), Vec3::Z), &s));
+/// ```
+pub fn in_domain(ray: &Ray, s: &Sphere) -> bool {
+    use crate::num::scale::{Scale, crush_loss, in_range, negligible};
+    // What prescaling (o, C, R) rounds away must be negligible against
+    // max(|f|, R), the scale of everything computed from f = o − C.
+    let (o, c) = (ray.origin.to_array(), s.center.to_array());
+    let ss = Scale::of_max(&[o[0], o[1], o[2], c[0], c[1], c[2], s.radius]);
+    let loss: f64 = (0..3)
+        .map(|i| crush_loss(o[i], ss) + crush_loss(c[i], ss))
+        .sum::<f64>()
+        + crush_loss(s.radius, ss);
+    let (f, d, r) = f64_terms(ray, s);
+    let m = f.iter().fold(r.abs(), |m, x| m.max(x.abs()));
+    if m == 0.0 {
+        return true;
+    }
+    if !negligible(loss, m * 2f64.powi(-ss.k)) {
+        return false;
+    }
+    let d = d.map(|x| x * 2f64.powi(-Scale::of_max(&ray.dir.to_array()).k));
+    let f = f.map(|x| x / m);
+    in_range((0..3).map(|i| (f[i] * d[i]).abs()).sum(), -50, 50)
+}
+
 /// The classification band: the reference's class is only promised to match
 /// the exact one when the exact `|aΔ|` exceeds this.
 ///
@@ -203,24 +241,36 @@ pub fn condition(ray: &Ray, s: &Sphere) -> [f64; 2] {
         return [f64::INFINITY; 2];
     }
     let sq = disc.sqrt();
-    let roots = [(-b - sq) / a, (-b + sq) / a];
+    [(-b - sq) / a, (-b + sq) / a].map(|t| condition_at(ray, s, t))
+}
+
+/// [`condition`] at a given root `t` (the tests pass the oracle's exact
+/// roots, since re-deriving them in f64 can fail where `o − C` is not exact
+/// in f64). Infinite at `t = 0`, where no relative bound exists.
+///
+/// ```
+/// use rayoracle::{Ray, sphere::{Sphere, condition_at}};
+/// use glam::Vec3;
+/// let k = condition_at(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), &Sphere::new(Vec3::ZERO, 1.0), 4.0);
+/// assert!(k > 1.0 && k < 4.0);
+/// ```
+pub fn condition_at(ray: &Ray, s: &Sphere, t: f64) -> f64 {
+    if t == 0.0 || !t.is_finite() {
+        return f64::INFINITY;
+    }
+    let (f, d, r) = f64_terms(ray, s);
     let o = [0, 1, 2].map(|i| ray.origin[i] as f64);
     let cc = [0, 1, 2].map(|i| s.center[i] as f64);
-    roots.map(|t| {
-        if t == 0.0 {
-            return 0.0;
-        }
-        // Implicit differentiation of g(t) = |f + t d|² − R² = 0:
-        // ∂t/∂x = −(∂g/∂x)/(∂g/∂t), ∂g/∂t = 2 (f + t d)·d.
-        let p = [0, 1, 2].map(|i| f[i] + t * d[i]);
-        let gt = 2.0 * (0..3).map(|i| p[i] * d[i]).sum::<f64>();
-        let mut sum = 0.0;
-        for i in 0..3 {
-            sum += (o[i] * 2.0 * p[i]).abs(); // ∂g/∂oᵢ = 2pᵢ
-            sum += (cc[i] * 2.0 * p[i]).abs(); // ∂g/∂Cᵢ = −2pᵢ
-            sum += (d[i] * 2.0 * p[i] * t).abs(); // ∂g/∂dᵢ = 2pᵢ t
-        }
-        sum += (r * 2.0 * r).abs(); // ∂g/∂R = −2R
-        sum / (gt.abs() * t.abs())
-    })
+    // Implicit differentiation of g(t) = |f + t d|² − R² = 0:
+    // ∂t/∂x = −(∂g/∂x)/(∂g/∂t), ∂g/∂t = 2 (f + t d)·d.
+    let p = [0, 1, 2].map(|i| f[i] + t * d[i]);
+    let gt = 2.0 * (0..3).map(|i| p[i] * d[i]).sum::<f64>();
+    let mut sum = 0.0;
+    for i in 0..3 {
+        sum += (o[i] * 2.0 * p[i]).abs(); // ∂g/∂oᵢ = 2pᵢ
+        sum += (cc[i] * 2.0 * p[i]).abs(); // ∂g/∂Cᵢ = −2pᵢ
+        sum += (d[i] * 2.0 * p[i] * t).abs(); // ∂g/∂dᵢ = 2pᵢ t
+    }
+    sum += (r * 2.0 * r).abs(); // ∂g/∂R = −2R
+    sum / (gt.abs() * t.abs())
 }
