@@ -94,8 +94,10 @@ fn digest_all() -> [u64; 4] {
             value(&mut rng),
             [rng.random_range(1..4000), rng.random_range(1..4000)],
         );
+        // Drawn whatever the camera, so that one kernel's behaviour never
+        // shifts the inputs the others see.
+        let px = [0; 4].map(|_| [rng.random_range(0..p.res[0]), rng.random_range(0..p.res[1])]);
         if let Ok(cam) = p.build() {
-            let px = [0; 4].map(|_| [rng.random_range(0..p.res[0]), rng.random_range(0..p.res[1])]);
             for r in cam
                 .ray4(px)
                 .to_rays()
@@ -117,10 +119,10 @@ fn digest_all() -> [u64; 4] {
 fn outputs_are_the_same_bits_on_every_build() {
     let got = digest_all();
     let want: [u64; 4] = [
-        6704574951083331369,
-        15638979048613111429,
-        8658208031197900289,
-        9431184347931800196,
+        15653110373939544661,
+        845456662206226893,
+        12071707664359204229,
+        1486946723411266596,
     ];
     assert_eq!(
         got, want,

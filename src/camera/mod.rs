@@ -33,8 +33,9 @@
 //!
 //! The basis (`x`, `y`) is built once per camera in double-word arithmetic
 //! from exactly prescaled `dir` and `up`, with `tan` evaluated in f64 (so the
-//! basis does not depend on the platform's `tanf`) and each basis component
-//! rounded once. Per pixel the direction is `(fᵢ + u·xᵢ) + v·yᵢ` in plain f32,
+//! basis does not depend on the platform's `tanf`), powers of two kept out of
+//! the double-word products, and each basis component rounded once at its
+//! true magnitude (through f64, which holds a double-word exactly). Per pixel the direction is `(fᵢ + u·xᵢ) + v·yᵢ` in plain f32,
 //! three roundings. Each component is within [`COMPONENT_ULPS`] ulps of
 //! `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|` of the oracle's (f64) value: the terms may
 //! cancel, so the bound is relative to their size, not to the result.

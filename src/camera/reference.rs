@@ -44,8 +44,16 @@ fn cross_ff(a: [Ff<f32>; 3], b: [Ff<f32>; 3]) -> [Ff<f32>; 3] {
     ]
 }
 
-/// `v/|v|` in double-word; `None` when `|v| = 0`.
+/// `v/|v|` in double-word; `None` when `|v| = 0`. `v` is first scaled by
+/// the power of two of its largest component (exactly, and without changing
+/// `v/|v|`), so that `|v|²` is neither subnormal nor overflowing: a cross
+/// product of nearly parallel vectors can be `10⁻²¹` and its square `10⁻⁴²`.
 fn normalize_ff(v: [Ff<f32>; 3]) -> Option<[Ff<f32>; 3]> {
+    let s = crate::num::scale::Scale::of_max(&[v[0].hi, v[1].hi, v[2].hi]);
+    let v = v.map(|c| Ff {
+        hi: s.apply(c.hi),
+        lo: s.apply(c.lo),
+    });
     let n = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
     (n.hi > 0.0).then(|| v.map(|c| c / n))
 }
@@ -106,21 +114,25 @@ impl Camera {
         let y_hat = normalize_ff(cross_ff(dir, x_hat)).ok_or(CameraError::DirParallelToUp)?;
 
         let focus = (dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]).sqrt();
-        // tan in f64, carried as a double-word: independent of the platform's
-        // tanf. The prescale 2^kd of |dir| is folded in here, in f64, so that
-        // each basis component is rounded once, at its true magnitude (a
-        // basis rounded while scaled and then rescaled would round twice when
-        // the scaled value is subnormal).
-        let h64 = (p.angle as f64 / 2.0).tan() * 2f64.powi(kd);
+        // tan(angle/2) in f64, independent of the platform's tanf. Its
+        // binary exponent, together with the prescale 2^kd of |dir|, is kept
+        // apart from the double-word products (whose significand stays in
+        // [1, 2), never subnormal), and each basis component is rounded once,
+        // at its true magnitude, from the exact f64 value of its double-word.
+        let h64 = (p.angle as f64 / 2.0).tan();
+        let eh = ((h64.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+        let hm = h64 * 2f64.powi(-eh);
         let h = Ff {
-            hi: h64 as f32,
-            lo: (h64 - (h64 as f32) as f64) as f32,
+            hi: hm as f32,
+            lo: (hm - (hm as f32) as f64) as f32,
         };
         let aspect = Ff::from(p.res[0] as f32) / Ff::from(p.res[1] as f32);
         let len_y = focus * h;
         let len_x = len_y * aspect;
-        let x = x_hat.map(|c| (c * len_x).round());
-        let y = y_hat.map(|c| (c * len_y).round());
+        let scale = 2f64.powi(kd + eh);
+        let round = |v: Ff<f32>| ((v.hi as f64 + v.lo as f64) * scale) as f32;
+        let x = x_hat.map(|c| round(c * len_x));
+        let y = y_hat.map(|c| round(c * len_y));
         let (x, y) = (Vec3::from_array(x), Vec3::from_array(y));
         if !(x.is_finite() && y.is_finite()) {
             return Err(CameraError::BasisOverflow);

@@ -172,6 +172,11 @@ pub(crate) fn terms(ray: &Ray, q: &Quadric) -> ([f64; 6], [f64; 12], [f64; 10]) 
     let k = q.coeffs.map(|x| x as f64);
     let o = ray.origin.to_array().map(|x| x as f64);
     let d = ray.dir.to_array().map(|x| x as f64);
+    terms64(&k, &o, &d)
+}
+
+/// [`terms`] on f64 inputs.
+fn terms64(k: &[f64; 10], o: &[f64; 3], d: &[f64; 3]) -> ([f64; 6], [f64; 12], [f64; 10]) {
     let alpha = [
         k[0] * d[0] * d[0],
         k[1] * d[1] * d[1],
@@ -211,7 +216,8 @@ pub(crate) fn terms(ray: &Ray, q: &Quadric) -> ([f64; 6], [f64; 12], [f64; 10]) 
 
 /// The accuracy domain of [`reference::intersect`](mod@reference): `|oᵢ| <
 /// 2⁴⁰`, and, with the coefficients and `d` prescaled as the kernel does,
-/// `(Σ|β terms|)²` and `Σ|α terms| · Σ|γ terms|` each 0 or within
+/// `Σ|α terms|`, `Σ|β terms|`, `Σ|γ terms|` each 0 or within `[2⁻¹⁰⁰,
+/// 2⁵⁰]` and `(Σ|β terms|)²` and `Σ|α terms| · Σ|γ terms|` each 0 or within
 /// `[2⁻¹⁰⁰, 2¹⁰⁰]` ([`crate::num::scale::in_range`]), so that the
 /// discriminant `β² − 4αγ` is formed from exact products; and what the
 /// prescaling of the coefficients rounds away must be negligible against
@@ -226,7 +232,7 @@ pub(crate) fn terms(ray: &Ray, q: &Quadric) -> ([f64; 6], [f64; 12], [f64; 10]) 
 /// assert!(!in_domain(&Ray::new(Vec3::new(1e-40, 0.0, 0.0), Vec3::Z), &unit));
 /// ```
 pub fn in_domain(ray: &Ray, q: &Quadric) -> bool {
-    use crate::num::scale::{Scale, crush_loss, in_range, negligible};
+    use crate::num::scale::{Scale, in_range, negligible};
     if ray
         .origin
         .to_array()
@@ -236,25 +242,27 @@ pub fn in_domain(ray: &Ray, q: &Quadric) -> bool {
         return false;
     }
     let sq = Scale::of_max(&q.coeffs);
-    let k = q.coeffs.map(|x| sq.apply(x));
     let d = ray.dir.to_array();
     let sd = Scale::of_max(&d);
-    let scaled = Ray::new(ray.origin, glam::Vec3::from_array(sd.apply3(d)));
-    let (a, b, g) = terms(&scaled, &Quadric::new(k));
+    let o = ray.origin.to_array().map(|x| x as f64);
+    // The terms with the prescaled inputs exactly (f64) and as the kernel
+    // rounds them (f32): their difference is what prescaling loses.
+    let exact_k = q.coeffs.map(|x| x as f64 * 2f64.powi(-sq.k));
+    let exact_d = d.map(|x| x as f64 * 2f64.powi(-sd.k));
+    let (a, b, g) = terms64(&exact_k, &o, &exact_d);
+    let (ra, rb, rg) = terms64(
+        &q.coeffs.map(|x| sq.apply(x) as f64),
+        &o,
+        &sd.apply3(d).map(|x| x as f64),
+    );
     let sum = |t: &[f64]| t.iter().map(|x| x.abs()).sum::<f64>();
+    let loss = |t: &[f64], r: &[f64]| t.iter().zip(r).map(|(x, y)| (x - y).abs()).sum::<f64>();
     let (sa, sb, sg) = (sum(&a), sum(&b), sum(&g));
-    // What prescaling the coefficients rounds away, as it reaches α, β, γ:
-    // the same terms with each coefficient replaced by its loss.
-    // (Lifted by 2¹⁰⁰ so that the f32 coefficients `terms` takes hold them.)
-    let lift = 2f64.powi(100);
-    let loss = q.coeffs.map(|x| (crush_loss(x, sq) * lift) as f32);
-    let (la, lb, lg) = terms(&scaled, &Quadric::new(loss));
-    let ok = |l: &[f64], s: f64| negligible(sum(l) / lift, s);
-    let exact_ok = ok(&la, sa) && ok(&lb, sb) && ok(&lg, sg);
-    exact_ok
-        && in_range(sb * sb, -100, 100)
-        && in_range(sa * sg, -100, 100)
-        && in_range(sa.max(sb).max(sg), -100, 50)
+    let lossless = negligible(loss(&a, &ra), sa)
+        && negligible(loss(&b, &rb), sb)
+        && negligible(loss(&g, &rg), sg);
+    let each = [sa, sb, sg].iter().all(|&s| in_range(s, -100, 50));
+    lossless && each && in_range(sb * sb, -100, 100) && in_range(sa * sg, -100, 100)
 }
 
 /// The classification band on the discriminant `β² − 4αγ`: the reference's

@@ -1,0 +1,462 @@
+//! What each `cargo fuzz` target checks, as library functions: a target in
+//! `fuzz/fuzz_targets/` is one line around one of [`plane`], [`sphere`],
+//! [`quadric`], [`camera`] or [`eval_line`], and `cargo test` replays every
+//! committed corpus and regression input through the same functions
+//! (`tests/fuzz_replay.rs`).
+//!
+//! A kernel input is four cases, one per lane, decoded with `arbitrary`
+//! from the fuzzer's bytes, so the fuzzer chooses what goes in which lane.
+//! For every input:
+//!
+//! 1. each x4 lane equals the reference bit for bit (class, roots, and
+//!    `nearest` over a fuzzer-chosen interval);
+//! 2. each reference answer is acceptable against the exact oracle
+//!    ([`crate::check`]: class outside the band, roots within their bound);
+//! 3. for spheres, the same sphere written as a quadric agrees
+//!    ([`crate::check::sphere_as_quadric`]);
+//! 4. nothing panics.
+//!
+//! Every float is a [`FuzzF32`]: a mode byte picks raw bits (so NaN, ±∞,
+//! subnormals and values near `f32::MAX` are all reachable), a table of
+//! special values, exact wide-range values `m·2^e`, a fine grid, or small
+//! integers (which make exact tangents, parallels and surfaces reachable).
+//! [`encode_f32`] writes any float back as raw bits, which is how corpora are
+//! built from the fixtures ([`encode_case`]).
+
+use crate::Ray;
+use crate::camera::CameraParams;
+use crate::case::Case;
+use crate::check::{self, Violation};
+use crate::hit::Intersection;
+use crate::num::Lane;
+use crate::plane::{self, Plane};
+use crate::quadric::{self, Quadric};
+use crate::ray4::Ray4;
+use crate::sphere::{self, Sphere};
+use arbitrary::{Arbitrary, Unstructured};
+use glam::Vec3;
+use wide::f32x4;
+
+/// Special values the fuzzer can pick by index.
+const SPECIALS: [f32; 16] = [
+    0.0,
+    -0.0,
+    f32::INFINITY,
+    f32::NEG_INFINITY,
+    f32::NAN,
+    f32::MAX,
+    -f32::MAX,
+    f32::MIN_POSITIVE,
+    f32::from_bits(1),
+    -f32::from_bits(1),
+    f32::EPSILON,
+    1.0,
+    -1.0,
+    1e30,
+    1e-30,
+    3.0e38,
+];
+
+/// A fuzzed `f32`. Mode byte (mod 8): 0 raw bits (4 bytes), 1 a special
+/// value, 2 `i16 · 2^i8` (exact, any magnitude), 3 `i16/256`, 4–7 an `i8`.
+///
+/// ```
+/// use arbitrary::{Arbitrary, Unstructured};
+/// use rayoracle::fuzz::FuzzF32;
+/// let x = FuzzF32::arbitrary(&mut Unstructured::new(&[4, 0xfd])).unwrap();
+/// assert_eq!(x.0, -3.0);
+/// let n = FuzzF32::arbitrary(&mut Unstructured::new(&[0, 0, 0, 0xc0, 0x7f])).unwrap();
+/// assert!(n.0.is_nan());
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct FuzzF32(pub f32);
+
+impl<'a> Arbitrary<'a> for FuzzF32 {
+    fn arbitrary(u: &mut Unstructured<'a>) -> arbitrary::Result<Self> {
+        let x = match u8::arbitrary(u)? % 8 {
+            0 => f32::from_bits(u32::arbitrary(u)?),
+            1 => SPECIALS[usize::from(u8::arbitrary(u)?) % SPECIALS.len()],
+            2 => {
+                let m = i16::arbitrary(u)? as f32;
+                let e = i8::arbitrary(u)? as i32;
+                m.ldexp(e.clamp(-149 - 15, 127))
+            }
+            3 => i16::arbitrary(u)? as f32 / 256.0,
+            _ => i8::arbitrary(u)? as f32,
+        };
+        Ok(FuzzF32(x))
+    }
+}
+
+/// Appends the bytes that decode to exactly `x` (mode 0, raw bits).
+///
+/// ```
+/// use arbitrary::{Arbitrary, Unstructured};
+/// use rayoracle::fuzz::{FuzzF32, encode_f32};
+/// let mut b = Vec::new();
+/// encode_f32(-1.5e-40, &mut b);
+/// assert_eq!(FuzzF32::arbitrary(&mut Unstructured::new(&b)).unwrap().0, -1.5e-40);
+/// ```
+pub fn encode_f32(x: f32, out: &mut Vec<u8>) {
+    out.push(0);
+    out.extend(x.to_bits().to_le_bytes());
+}
+
+fn vec3(u: &mut Unstructured<'_>) -> arbitrary::Result<Vec3> {
+    Ok(Vec3::new(
+        FuzzF32::arbitrary(u)?.0,
+        FuzzF32::arbitrary(u)?.0,
+        FuzzF32::arbitrary(u)?.0,
+    ))
+}
+
+fn f(u: &mut Unstructured<'_>) -> arbitrary::Result<f32> {
+    Ok(FuzzF32::arbitrary(u)?.0)
+}
+
+fn encode3(v: Vec3, out: &mut Vec<u8>) {
+    v.to_array().iter().for_each(|&x| encode_f32(x, out));
+}
+
+/// Why a fuzz input failed: which check, which lane, and the case.
+///
+/// ```
+/// use rayoracle::fuzz::Failure;
+/// assert_eq!(Failure("x".into()).to_string(), "x");
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Failure(pub String);
+
+impl core::fmt::Display for Failure {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for Failure {}
+
+fn judged(
+    lane: usize,
+    case: &dyn core::fmt::Debug,
+    r: Result<impl Sized, Violation>,
+) -> Result<(), Failure> {
+    r.map(|_| ())
+        .map_err(|v| Failure(format!("lane {lane}: {v}\n  case: {case:?}")))
+}
+
+/// Same class, same root bits (any NaN equals any NaN).
+fn same_hit<H: Intersection + core::fmt::Debug>(a: &H, b: &H) -> bool {
+    let (ra, rb) = (a.roots(), b.roots());
+    let same = |x: f32, y: f32| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
+    a.class() == b.class()
+        && ra.as_slice().len() == rb.as_slice().len()
+        && ra
+            .as_slice()
+            .iter()
+            .zip(rb.as_slice())
+            .all(|(&x, &y)| same(x, y))
+}
+
+/// Compares x4's lanes and `nearest` with the reference's.
+fn x4_matches<H: Intersection + core::fmt::Debug>(
+    lanes: [H; 4],
+    reference: &[H; 4],
+    nearest: (f32x4, f32x4),
+    interval: (f32, f32),
+) -> Result<(), Failure> {
+    let (mask, t) = (nearest.0.to_bitmask(), nearest.1.to_array());
+    for i in 0..4 {
+        if !same_hit(&lanes[i], &reference[i]) {
+            return Err(Failure(format!(
+                "lane {i}: x4 {:?} but reference {:?}",
+                lanes[i], reference[i]
+            )));
+        }
+        let want = reference[i].nearest(interval.0, interval.1);
+        let got = (mask >> i & 1 == 1).then_some(t[i]);
+        let agree = match (want, got) {
+            (Some(a), Some(b)) => a.to_bits() == b.to_bits(),
+            (None, None) => t[i] == f32::INFINITY,
+            _ => false,
+        };
+        if !agree {
+            return Err(Failure(format!(
+                "lane {i}: x4 nearest{:?} = {got:?}, reference {want:?}",
+                interval
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Decodes four cases and an interval `[t_min, t_max]` for `nearest`.
+fn decode<'a, T>(
+    data: &'a [u8],
+    one: impl Fn(&mut Unstructured<'a>) -> arbitrary::Result<T>,
+) -> Option<([T; 4], (f32, f32))> {
+    let mut u = Unstructured::new(data);
+    let cases = [
+        one(&mut u).ok()?,
+        one(&mut u).ok()?,
+        one(&mut u).ok()?,
+        one(&mut u).ok()?,
+    ];
+    let interval = (f(&mut u).ok()?, f(&mut u).ok()?);
+    Some((cases, interval))
+}
+
+fn ray(u: &mut Unstructured<'_>) -> arbitrary::Result<Ray> {
+    Ok(Ray::new(vec3(u)?, vec3(u)?))
+}
+
+fn interval4(i: (f32, f32)) -> (f32x4, f32x4) {
+    (f32x4::splat(i.0), f32x4::splat(i.1))
+}
+
+/// The `plane` target.
+///
+/// ```
+/// let mut b = Vec::new();
+/// rayoracle::fuzz::encode_case(&rayoracle::case::parse_line(
+///     r#"{"kind":"plane","origin":[0,1,0],"dir":[0,-1,0],"point":[0,0,0],"normal":[0,1,0]}"#).unwrap().case, &mut b);
+/// assert_eq!(rayoracle::fuzz::plane(&b), Ok(()));
+/// ```
+pub fn plane(data: &[u8]) -> Result<(), Failure> {
+    let Some((cases, interval)) = decode(data, |u| Ok((ray(u)?, Plane::new(vec3(u)?, vec3(u)?))))
+    else {
+        return Ok(());
+    };
+    let reference = cases.map(|(r, p)| plane::reference::intersect(&r, &p));
+    let h4 = plane::x4::intersect(
+        &Ray4::from_rays(cases.map(|c| c.0)),
+        &plane::x4::Plane4::from_planes(cases.map(|c| c.1)),
+    );
+    let (lo, hi) = interval4(interval);
+    x4_matches(h4.lanes(), &reference, h4.nearest(lo, hi), interval)?;
+    for (i, (r, p)) in cases.iter().enumerate() {
+        judged(i, &(r, p), check::check_plane(r, p, reference[i]))?;
+    }
+    Ok(())
+}
+
+/// The `sphere` target (including the sphere written as a quadric).
+///
+/// ```
+/// let mut b = Vec::new();
+/// rayoracle::fuzz::encode_case(&rayoracle::case::parse_line(
+///     r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap().case, &mut b);
+/// assert_eq!(rayoracle::fuzz::sphere(&b), Ok(()));
+/// ```
+pub fn sphere(data: &[u8]) -> Result<(), Failure> {
+    let Some((cases, interval)) = decode(data, |u| Ok((ray(u)?, Sphere::new(vec3(u)?, f(u)?))))
+    else {
+        return Ok(());
+    };
+    let reference = cases.map(|(r, s)| sphere::reference::intersect(&r, &s));
+    let h4 = sphere::x4::intersect(
+        &Ray4::from_rays(cases.map(|c| c.0)),
+        &sphere::x4::Sphere4::from_spheres(cases.map(|c| c.1)),
+    );
+    let (lo, hi) = interval4(interval);
+    x4_matches(h4.lanes(), &reference, h4.nearest(lo, hi), interval)?;
+    for (i, (r, s)) in cases.iter().enumerate() {
+        judged(i, &(r, s), check::check_sphere(r, s, reference[i]))?;
+        judged(i, &(r, s), check::sphere_as_quadric(r, s))?;
+    }
+    Ok(())
+}
+
+/// The `quadric` target.
+///
+/// ```
+/// let mut b = Vec::new();
+/// rayoracle::fuzz::encode_case(&rayoracle::case::parse_line(
+///     r#"{"kind":"quadric","origin":[-5,0,0],"dir":[1,0,0],"coeffs":[1,1,0,0,0,0,0,0,0,-1]}"#).unwrap().case, &mut b);
+/// assert_eq!(rayoracle::fuzz::quadric(&b), Ok(()));
+/// ```
+pub fn quadric(data: &[u8]) -> Result<(), Failure> {
+    let one = |u: &mut Unstructured<'_>| -> arbitrary::Result<(Ray, Quadric)> {
+        let r = ray(u)?;
+        let mut k = [0.0; 10];
+        for c in &mut k {
+            *c = f(u)?;
+        }
+        Ok((r, Quadric::new(k)))
+    };
+    let Some((cases, interval)) = decode(data, one) else {
+        return Ok(());
+    };
+    let reference = cases.map(|(r, q)| quadric::reference::intersect(&r, &q));
+    let h4 = quadric::x4::intersect(
+        &Ray4::from_rays(cases.map(|c| c.0)),
+        &quadric::x4::Quadric4::from_quadrics(cases.map(|c| c.1)),
+    );
+    let (lo, hi) = interval4(interval);
+    x4_matches(h4.lanes(), &reference, h4.nearest(lo, hi), interval)?;
+    for (i, (r, q)) in cases.iter().enumerate() {
+        judged(i, &(r, q), check::check_quadric(r, q, reference[i]))?;
+    }
+    Ok(())
+}
+
+/// The `camera` target: one camera, four pixels (any resolution up to
+/// 65535, 0 included to reach the construction errors).
+///
+/// ```
+/// let mut b = Vec::new();
+/// rayoracle::fuzz::encode_case(&rayoracle::case::parse_line(
+///     r#"{"kind":"camera","position":[0,0,0],"dir":[0,0,-1],"up":[0,1,0],"angle":1,"res":[64,48],"pixel":[3,4]}"#).unwrap().case, &mut b);
+/// assert_eq!(rayoracle::fuzz::camera(&b), Ok(()));
+/// ```
+pub fn camera(data: &[u8]) -> Result<(), Failure> {
+    let mut u = Unstructured::new(data);
+    let decoded = (|| -> arbitrary::Result<_> {
+        let (position, dir, up, angle) = (vec3(&mut u)?, vec3(&mut u)?, vec3(&mut u)?, f(&mut u)?);
+        let res = [
+            u16::arbitrary(&mut u)? as u32,
+            u16::arbitrary(&mut u)? as u32,
+        ];
+        let mut px = [[0u32; 2]; 4];
+        for p in &mut px {
+            *p = [
+                u16::arbitrary(&mut u)? as u32,
+                u16::arbitrary(&mut u)? as u32,
+            ];
+        }
+        Ok((CameraParams::new(position, dir, up, angle, res), px))
+    })();
+    let Ok((p, px)) = decoded else { return Ok(()) };
+    let built = p.build();
+    let px = px.map(|[x, y]| [x % p.res[0].max(1), y % p.res[1].max(1)]);
+    if let Ok(cam) = &built {
+        let got = cam.ray4(px).to_rays();
+        for i in 0..4 {
+            let want = cam.ray(px[i][0], px[i][1]);
+            let same = |a: f32, b: f32| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+            let all_same = (0..3).all(|c| {
+                same(got[i].origin[c], want.origin[c]) && same(got[i].dir[c], want.dir[c])
+            });
+            if !all_same {
+                return Err(Failure(format!(
+                    "lane {i}: x4 {:?} but reference {want:?}\n  camera {p:?} pixel {:?}",
+                    got[i], px[i]
+                )));
+            }
+        }
+    }
+    for (i, pixel) in px.iter().enumerate() {
+        let got = built.map(|cam| cam.ray(pixel[0], pixel[1]));
+        judged(i, &(p, pixel), check::check_camera(&p, *pixel, got))?;
+    }
+    Ok(())
+}
+
+/// The `eval_line` target: any bytes as one `eval` line. It must give one
+/// JSON object that names the line, never an internal error (a panic that
+/// `eval` caught).
+///
+/// ```
+/// assert_eq!(rayoracle::fuzz::eval_line(br#"{"kind":"sphere","radius":[1]}"#), Ok(()));
+/// assert_eq!(rayoracle::fuzz::eval_line(b"\xff\xfe"), Ok(()));
+/// ```
+pub fn eval_line(data: &[u8]) -> Result<(), Failure> {
+    let line = String::from_utf8_lossy(data);
+    let line = line.lines().next().unwrap_or("");
+    let out = crate::eval::eval_line(7, line);
+    if line.trim().is_empty() {
+        return if out.is_empty() {
+            Ok(())
+        } else {
+            Err(Failure(format!("blank line gave output {out}")))
+        };
+    }
+    let v: serde_json::Value =
+        serde_json::from_str(&out).map_err(|e| Failure(format!("not JSON ({e}): {out}")))?;
+    if v["line"] != 7 {
+        return Err(Failure(format!("wrong line number: {out}")));
+    }
+    if v["error"]
+        .as_str()
+        .is_some_and(|e| e.starts_with("internal error"))
+    {
+        return Err(Failure(format!("eval panicked on {line:?}: {out}")));
+    }
+    Ok(())
+}
+
+/// Appends the bytes of one case in its target's format, with raw-bit
+/// floats, so the case decodes exactly. A kernel case fills all four lanes
+/// (the case itself in lane 0 and, in lanes 1–3, the same case, so x4 is
+/// exercised with it everywhere), then the interval `[0, ∞]`.
+///
+/// ```
+/// use rayoracle::case::parse_line;
+/// let c = parse_line(r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap();
+/// let mut b = Vec::new();
+/// rayoracle::fuzz::encode_case(&c.case, &mut b);
+/// assert_eq!(b.len(), 4 * 10 * 5 + 2 * 5);
+/// ```
+pub fn encode_case(case: &Case, out: &mut Vec<u8>) {
+    let interval = |out: &mut Vec<u8>| {
+        encode_f32(0.0, out);
+        encode_f32(f32::INFINITY, out);
+    };
+    match case {
+        Case::Plane(r, p) => {
+            for _ in 0..4 {
+                encode3(r.origin, out);
+                encode3(r.dir, out);
+                encode3(p.point, out);
+                encode3(p.normal, out);
+            }
+            interval(out);
+        }
+        Case::Sphere(r, s) => {
+            for _ in 0..4 {
+                encode3(r.origin, out);
+                encode3(r.dir, out);
+                encode3(s.center, out);
+                encode_f32(s.radius, out);
+            }
+            interval(out);
+        }
+        Case::Quadric(r, q) => {
+            for _ in 0..4 {
+                encode3(r.origin, out);
+                encode3(r.dir, out);
+                q.coeffs.iter().for_each(|&c| encode_f32(c, out));
+            }
+            interval(out);
+        }
+        Case::Camera(p, px) => {
+            encode3(p.position, out);
+            encode3(p.dir, out);
+            encode3(p.up, out);
+            encode_f32(p.angle, out);
+            for r in p.res {
+                out.extend((r.min(65535) as u16).to_le_bytes());
+            }
+            for _ in 0..4 {
+                for c in px {
+                    out.extend((*c as u16).to_le_bytes());
+                }
+            }
+        }
+    }
+}
+
+/// A target's check: the fuzzer's bytes in, a [`Failure`] out.
+pub type Check = fn(&[u8]) -> Result<(), Failure>;
+
+/// The checks by target name, for the replay test and the campaign.
+///
+/// ```
+/// assert!(rayoracle::fuzz::TARGETS.iter().any(|(n, _)| *n == "eval_line"));
+/// ```
+pub const TARGETS: &[(&str, Check)] = &[
+    ("camera", camera),
+    ("plane", plane),
+    ("sphere", sphere),
+    ("quadric", quadric),
+    ("eval_line", eval_line),
+];
