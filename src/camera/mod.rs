@@ -34,8 +34,9 @@
 //! The basis (`x`, `y`) is built once per camera in double-word arithmetic
 //! from exactly prescaled `dir` and `up`, with `tan` evaluated in f64 (so the
 //! basis does not depend on the platform's `tanf`), powers of two kept out of
-//! the double-word products, and each basis component rounded once at its
-//! true magnitude (through f64, which holds a double-word exactly). Per pixel the direction is `(fᵢ + u·xᵢ) + v·yᵢ` in plain f32,
+//! the double-word products, and the last product of each basis component
+//! taken in f64 from the exact double-word values and rounded once at its
+//! true magnitude ([`in_domain`] says where this is accurate). Per pixel the direction is `(fᵢ + u·xᵢ) + v·yᵢ` in plain f32,
 //! three roundings. Each component is within [`COMPONENT_ULPS`] ulps of
 //! `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|` of the oracle's (f64) value: the terms may
 //! cancel, so the bound is relative to their size, not to the result.
@@ -54,7 +55,9 @@ pub use reference::Camera;
 pub const MAX_RESOLUTION: u32 = 1 << 23;
 
 /// Each ray direction component is within this many ulps of
-/// `|fᵢ| + |u xᵢ| + |v yᵢ|` of the oracle's value (see the module docs:
+/// `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|` of the oracle's value, for `Sᵢ < 2¹²⁷`
+/// (a partial sum can reach `Sᵢ`, and above that overflow although the
+/// result would not) (see the module docs:
 /// 1 ulp for the basis, ½ for the offset, ½ for each of the three products
 /// and sums, rounded up, plus ½ for the oracle's own rounding).
 pub const COMPONENT_ULPS: f64 = 4.0;
@@ -187,6 +190,55 @@ impl core::fmt::Display for CameraError {
 }
 
 impl std::error::Error for CameraError {}
+
+/// The accuracy domain of the reference camera's construction: with `dir`
+/// and `up` each prescaled by the power of two of its largest component (as
+/// the construction does), the cross product `dir' × up'` must be at least
+/// `2⁻⁵⁰` long (so its double-word square is not subnormal), and what the
+/// prescaling rounds away must be negligible against it
+/// ([`crate::num::scale::crush_loss`]). A `dir` of `(0, −7·10⁻⁹, 3·10³⁸)`
+/// loses its small component to the prescaling, and an `up` nearly parallel
+/// to it leaves only that component in the cross product. The non-zero
+/// components of the unit axes `x̂` and `ŷ` must also be at least `2⁻¹⁰⁰`.
+///
+/// ```
+/// use rayoracle::camera::{CameraParams, in_domain};
+/// use glam::Vec3;
+/// assert!(in_domain(&CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [4, 4])));
+/// let far = CameraParams::new(Vec3::ZERO, Vec3::new(0.0, -6.7e-9, 3e38), Vec3::new(1.6e-39, 1.2e-38, 63.6), 1.0, [4, 4]);
+/// assert!(!in_domain(&far));
+/// ```
+pub fn in_domain(p: &CameraParams) -> bool {
+    use crate::num::scale::{Scale, crush_loss, in_range, negligible};
+    let (d, u) = (p.dir.to_array(), p.up.to_array());
+    let (sd, su) = (Scale::of_max(&d), Scale::of_max(&u));
+    let exact = |v: [f32; 3], s: Scale<f32>| v.map(|x| x as f64 * 2f64.powi(-s.k));
+    let (de, ue) = (exact(d, sd), exact(u, su));
+    let cross = [
+        de[1] * ue[2] - de[2] * ue[1],
+        de[2] * ue[0] - de[0] * ue[2],
+        de[0] * ue[1] - de[1] * ue[0],
+    ];
+    let len = cross.iter().map(|c| c * c).sum::<f64>().sqrt();
+    let loss: f64 = (0..3)
+        .map(|i| crush_loss(d[i], sd) * 2.0 + crush_loss(u[i], su) * 2.0)
+        .sum();
+    if !(in_range(len, -50, 50) && negligible(loss, len)) {
+        return false;
+    }
+    // The unit axes x̂ = (dir × up)/|…| and ŷ = (dir × x̂)/|…| are built in
+    // f32 double-words: a non-zero component below 2⁻¹⁰⁰ is built in or near
+    // the subnormal range and loses its relative precision.
+    let xh = cross.map(|c| c / len);
+    let yc = [
+        de[1] * xh[2] - de[2] * xh[1],
+        de[2] * xh[0] - de[0] * xh[2],
+        de[0] * xh[1] - de[1] * xh[0],
+    ];
+    let ylen = yc.iter().map(|c| c * c).sum::<f64>().sqrt();
+    let tiny = |c: f64| c != 0.0 && c.abs() < 2f64.powi(-100);
+    !(xh.iter().any(|&c| tiny(c)) || yc.iter().any(|&c| tiny(c / ylen)))
+}
 
 /// `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|` in f64 for pixel `(px, py)`: the scale the
 /// component bound [`COMPONENT_ULPS`] is relative to.

@@ -129,10 +129,14 @@ impl Camera {
         let aspect = Ff::from(p.res[0] as f32) / Ff::from(p.res[1] as f32);
         let len_y = focus * h;
         let len_x = len_y * aspect;
+        // The last product in f64, from the exact values of the double-words:
+        // f64's range keeps it out of the subnormals that a product at the
+        // prescaled magnitude could fall into; one rounding to f32.
         let scale = 2f64.powi(kd + eh);
-        let round = |v: Ff<f32>| ((v.hi as f64 + v.lo as f64) * scale) as f32;
-        let x = x_hat.map(|c| round(c * len_x));
-        let y = y_hat.map(|c| round(c * len_y));
+        let f64_of = |v: Ff<f32>| v.hi as f64 + v.lo as f64;
+        let (lx, ly) = (f64_of(len_x) * scale, f64_of(len_y) * scale);
+        let x = x_hat.map(|c| (f64_of(c) * lx) as f32);
+        let y = y_hat.map(|c| (f64_of(c) * ly) as f32);
         let (x, y) = (Vec3::from_array(x), Vec3::from_array(y));
         if !(x.is_finite() && y.is_finite()) {
             return Err(CameraError::BasisOverflow);
