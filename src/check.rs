@@ -35,7 +35,8 @@
 //! * **Domains.** Each kernel states where its bounds hold
 //!   ([`plane::in_domain`], [`sphere::in_domain`], [`quadric::in_domain`]:
 //!   no underflow in the double-word products after prescaling, and
-//!   `|o| < 2⁴⁰` for the quadric). Outside it the report is
+//!   `|o| < 2⁴⁰` for the quadric; [`camera::in_domain`] for the camera's
+//!   basis). Outside it the report is
 //!   [`Status::OutOfDomain`] and nothing is checked.
 //! * **Camera.** Construction must fail exactly when the oracle's does, with
 //!   the same [`CameraError`]. Otherwise the origin must be the camera
@@ -498,14 +499,23 @@ pub fn check_plane(ray: &Ray, p: &Plane, got: PlaneHit) -> Result<CaseReport, Vi
 /// assert_eq!(check_sphere(&graze, &s, SphereHit::Tangent(5.0)).unwrap().status, Status::Checked);
 /// ```
 pub fn check_sphere(ray: &Ray, s: &Sphere, got: SphereHit) -> Result<CaseReport, Violation> {
-    let (Ok(exact), Ok(q)) = (
-        sphere::exact::intersect(ray, s),
-        sphere::exact::quadratic(ray, s),
-    ) else {
+    let Ok(q) = sphere::exact::quadratic(ray, s) else {
         let mut r = report("sphere", "non_finite", got.class());
         r.status = Status::NonFinite;
         return Ok(r);
     };
+    let exact = sphere::exact::classify(&q);
+    check_sphere_against(ray, s, got, &q, exact)
+}
+
+/// [`check_sphere`] given the exact quadratic and its solution.
+fn check_sphere_against(
+    ray: &Ray,
+    s: &Sphere,
+    got: SphereHit,
+    q: &crate::exact::Quadratic,
+    exact: SphereHit,
+) -> Result<CaseReport, Violation> {
     let mut r = report("sphere", exact.class(), got.class());
     if !sphere::in_domain(ray, s) {
         r.status = Status::OutOfDomain;
@@ -547,14 +557,23 @@ pub fn check_sphere(ray: &Ray, s: &Sphere, got: SphereHit) -> Result<CaseReport,
 /// assert!(check_quadric(&ray, &cyl, QuadricHit::Two(4.0, 6.5)).is_err());
 /// ```
 pub fn check_quadric(ray: &Ray, q: &Quadric, got: QuadricHit) -> Result<CaseReport, Violation> {
-    let (Ok(exact), Ok(eq)) = (
-        quadric::exact::intersect(ray, q),
-        quadric::exact::quadratic(ray, q),
-    ) else {
+    let Ok(eq) = quadric::exact::quadratic(ray, q) else {
         let mut r = report("quadric", "non_finite", got.class());
         r.status = Status::NonFinite;
         return Ok(r);
     };
+    let exact = quadric::exact::classify(&eq);
+    check_quadric_against(ray, q, got, &eq, exact)
+}
+
+/// [`check_quadric`] given the exact quadratic and its solution.
+fn check_quadric_against(
+    ray: &Ray,
+    q: &Quadric,
+    got: QuadricHit,
+    eq: &crate::exact::Quadratic,
+    exact: QuadricHit,
+) -> Result<CaseReport, Violation> {
     let mut r = report("quadric", exact.class(), got.class());
     if !quadric::in_domain(ray, q) {
         r.status = Status::OutOfDomain;
@@ -573,7 +592,7 @@ pub fn check_quadric(ray: &Ray, q: &Quadric, got: QuadricHit) -> Result<CaseRepo
         let mut kappa = [f64::INFINITY; 2];
         if !matches!(exact, QuadricHit::One(_)) || eq.alpha.is_zero() {
             for (i, t) in exact.roots().as_slice().iter().enumerate() {
-                kappa[i] = quadric_kappa_at(ray, q, &eq, *t as f64);
+                kappa[i] = quadric_kappa_at(ray, q, eq, *t as f64);
             }
         }
         roots(
@@ -658,11 +677,21 @@ pub fn check_camera(
             got: got.origin.to_array(),
         });
     }
+    if !camera::in_domain(p) {
+        r.status = Status::OutOfDomain;
+        return Ok(r);
+    }
     // The scale Sᵢ is defined by the reference camera's basis.
     let cam = p
         .build()
         .expect("the oracle built it, so the reference does");
     let scale = camera::component_scale(&cam, pixel[0], pixel[1]);
+    // A partial sum of (fᵢ + u xᵢ) + v yᵢ can reach Sᵢ: at 2¹²⁷ and above it
+    // may overflow although the result would not.
+    if scale.iter().any(|&s| s >= 2f64.powi(127)) {
+        r.status = Status::OutOfDomain;
+        return Ok(r);
+    }
     for (axis, &scale) in scale.iter().enumerate() {
         let (e, g) = (exact.dir[axis], got.dir[axis]);
         let diff = if e == g {
@@ -698,10 +727,11 @@ fn sphere_as_quadric_hit(h: SphereHit) -> QuadricHit {
 /// The sphere and the same sphere written as a quadric (seed 1.4b) agree:
 ///
 /// * when [`Quadric::from_sphere`] is exact (e.g. small integer centre and
-///   radius), the two exact oracles solve the same polynomial, so they give
-///   corresponding classes and bit-identical roots (a zero direction is the
-///   one exception: no line for the sphere, a point for the quadric);
-/// * each reference is acceptable against its own oracle;
+///   radius), the quadric's exact `(α, β, γ)` is the sphere's exact
+///   `(a, 2b, c)` coefficient for coefficient, so the two oracles cannot
+///   differ (a zero direction is the one exception: no line for the sphere);
+/// * the quadric reference is acceptable against the quadric oracle (the
+///   sphere reference's own check is [`check_sphere`]);
 /// * where both references are outside their bands, they give the same
 ///   class.
 ///
@@ -716,26 +746,69 @@ fn sphere_as_quadric_hit(h: SphereHit) -> QuadricHit {
 /// assert_eq!(sphere_as_quadric(&ray, &Sphere::new(Vec3::new(1.0, 0.0, 0.0), 2.0)), Ok(true));
 /// ```
 pub fn sphere_as_quadric(ray: &Ray, s: &Sphere) -> Result<bool, Violation> {
+    let Ok(qs) = sphere::exact::quadratic(ray, s) else {
+        return Ok(false);
+    };
+    let es = sphere::exact::classify(&qs);
+    sphere_as_quadric_given(ray, s, &qs, es)
+}
+
+/// [`check_sphere`] and [`sphere_as_quadric`] together, solving the exact
+/// polynomial once: what the `sphere` fuzz target runs.
+///
+/// ```
+/// use rayoracle::check::check_sphere_and_quadric;
+/// use rayoracle::{Ray, sphere::{Sphere, SphereHit}};
+/// use glam::Vec3;
+/// let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
+/// assert!(check_sphere_and_quadric(&ray, &Sphere::new(Vec3::ZERO, 1.0), SphereHit::Two(4.0, 6.0)).is_ok());
+/// ```
+pub fn check_sphere_and_quadric(
+    ray: &Ray,
+    s: &Sphere,
+    got: SphereHit,
+) -> Result<CaseReport, Violation> {
+    let Ok(qs) = sphere::exact::quadratic(ray, s) else {
+        return check_sphere(ray, s, got);
+    };
+    let es = sphere::exact::classify(&qs);
+    let report = check_sphere_against(ray, s, got, &qs, es)?;
+    sphere_as_quadric_given(ray, s, &qs, es)?;
+    Ok(report)
+}
+
+fn sphere_as_quadric_given(
+    ray: &Ray,
+    s: &Sphere,
+    qs: &crate::exact::Quadratic,
+    es: SphereHit,
+) -> Result<bool, Violation> {
     let (q, exact) = Quadric::from_sphere(s);
     if !exact || ray.dir == glam::Vec3::ZERO {
         return Ok(false);
     }
-    let (Ok(es), Ok(eq)) = (
-        sphere::exact::intersect(ray, s),
-        quadric::exact::intersect(ray, &q),
-    ) else {
+    let Ok(eq) = quadric::exact::quadratic(ray, &q) else {
         return Ok(false);
     };
-    if sphere_as_quadric_hit(es) != eq {
+    if (&eq.alpha, &eq.beta, &eq.gamma) != (&qs.alpha, &qs.beta, &qs.gamma) {
         return Err(Violation::SphereAsQuadric(format!(
-            "exact sphere {es:?} but exact quadric {eq:?}"
+            "exact sphere polynomial ({}, {}, {}) but exact quadric ({}, {}, {})",
+            qs.alpha.to_f64(),
+            qs.beta.to_f64(),
+            qs.gamma.to_f64(),
+            eq.alpha.to_f64(),
+            eq.beta.to_f64(),
+            eq.gamma.to_f64()
         )));
     }
+    // The sphere reference is judged by check_sphere; here only whether it
+    // is outside its band, which is when check_sphere would say Checked.
     let hs = sphere::reference::intersect(ray, s);
+    let sphere_clear = sphere::in_domain(ray, s)
+        && (&qs.alpha * &qs.discriminant()).mul_pow2(-2).to_f64().abs() > sphere::band(ray, s);
     let hq = quadric::reference::intersect(ray, &q);
-    let rs = check_sphere(ray, s, hs)?;
-    let rq = check_quadric(ray, &q, hq)?;
-    if rs.status == Status::Checked
+    let rq = check_quadric_against(ray, &q, hq, &eq, sphere_as_quadric_hit(es))?;
+    if sphere_clear
         && rq.status == Status::Checked
         && core::mem::discriminant(&sphere_as_quadric_hit(hs)) != core::mem::discriminant(&hq)
     {

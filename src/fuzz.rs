@@ -260,8 +260,11 @@ pub fn sphere(data: &[u8]) -> Result<(), Failure> {
     let (lo, hi) = interval4(interval);
     x4_matches(h4.lanes(), &reference, h4.nearest(lo, hi), interval)?;
     for (i, (r, s)) in cases.iter().enumerate() {
-        judged(i, &(r, s), check::check_sphere(r, s, reference[i]))?;
-        judged(i, &(r, s), check::sphere_as_quadric(r, s))?;
+        judged(
+            i,
+            &(r, s),
+            check::check_sphere_and_quadric(r, s, reference[i]),
+        )?;
     }
     Ok(())
 }

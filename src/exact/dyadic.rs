@@ -156,15 +156,6 @@ impl Dyadic {
         let top = (&self.mant >> drop as usize).to_f64().value();
         ldexp_f64(top, self.exp as i64 + drop)
     }
-
-    fn aligned(a: &Dyadic, b: &Dyadic) -> (IBig, IBig, i32) {
-        let e = a.exp.min(b.exp);
-        (
-            &a.mant << (a.exp - e) as usize,
-            &b.mant << (b.exp - e) as usize,
-            e,
-        )
-    }
 }
 
 /// `x · 2^e` in f64 without intermediate overflow or underflow.
@@ -202,24 +193,54 @@ impl PartialOrd for Dyadic {
 
 impl Ord for Dyadic {
     fn cmp(&self, other: &Self) -> Ordering {
-        let (a, b, _) = Dyadic::aligned(self, other);
-        a.cmp(&b)
+        match self.exp.cmp(&other.exp) {
+            Ordering::Equal => self.mant.cmp(&other.mant),
+            Ordering::Greater => (&self.mant << (self.exp - other.exp) as usize).cmp(&other.mant),
+            Ordering::Less => self
+                .mant
+                .cmp(&(&other.mant << (other.exp - self.exp) as usize)),
+        }
     }
 }
 
 impl Add for &Dyadic {
     type Output = Dyadic;
     fn add(self, o: &Dyadic) -> Dyadic {
-        let (a, b, exp) = Dyadic::aligned(self, o);
-        Dyadic { mant: a + b, exp }
+        // Shift only the operand with the larger exponent; borrow the other.
+        match self.exp.cmp(&o.exp) {
+            Ordering::Equal => Dyadic {
+                mant: &self.mant + &o.mant,
+                exp: self.exp,
+            },
+            Ordering::Greater => Dyadic {
+                mant: (&self.mant << (self.exp - o.exp) as usize) + &o.mant,
+                exp: o.exp,
+            },
+            Ordering::Less => Dyadic {
+                mant: &self.mant + (&o.mant << (o.exp - self.exp) as usize),
+                exp: self.exp,
+            },
+        }
     }
 }
 
 impl Sub for &Dyadic {
     type Output = Dyadic;
     fn sub(self, o: &Dyadic) -> Dyadic {
-        let (a, b, exp) = Dyadic::aligned(self, o);
-        Dyadic { mant: a - b, exp }
+        match self.exp.cmp(&o.exp) {
+            Ordering::Equal => Dyadic {
+                mant: &self.mant - &o.mant,
+                exp: self.exp,
+            },
+            Ordering::Greater => Dyadic {
+                mant: (&self.mant << (self.exp - o.exp) as usize) - &o.mant,
+                exp: o.exp,
+            },
+            Ordering::Less => Dyadic {
+                mant: &self.mant - (&o.mant << (o.exp - self.exp) as usize),
+                exp: self.exp,
+            },
+        }
     }
 }
 

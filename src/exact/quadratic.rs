@@ -89,16 +89,13 @@ impl Quadratic {
         &(&self.beta * &self.beta) - &(&self.alpha * &self.gamma).mul_pow2(2)
     }
 
-    /// `p(m) = (α m + β) m + γ`, exactly.
-    fn eval(&self, m: &Dyadic) -> Dyadic {
-        &(&(&(&self.alpha * m) + &self.beta) * m) + &self.gamma
-    }
-
-    /// The sign of `2αm + β`: where `m` lies against the vertex `−β/2α`.
-    fn side_of_vertex(&self, m: &Dyadic) -> Ordering {
-        (&(&self.alpha * m).mul_pow2(1) + &self.beta)
-            .signum()
-            .cmp(&0)
+    /// Where `m` lies against the vertex `−β/2α` (the sign of `2αm + β`)
+    /// and the sign of `p(m) = (αm + β)m + γ`, sharing the product `αm`.
+    fn side_and_sign(&self, m: &Dyadic) -> (Ordering, i32) {
+        let am = &self.alpha * m;
+        let side = (&am.mul_pow2(1) + &self.beta).signum().cmp(&0);
+        let p = &(&(&am + &self.beta) * m) + &self.gamma;
+        (side, p.signum())
     }
 
     /// Classifies and returns the correctly rounded roots.
@@ -140,20 +137,16 @@ impl Quadratic {
                 let (g0, g1) = guess_roots(a, b, c, disc.to_f64());
                 // For α > 0, p < 0 strictly between the roots.
                 let t0 = round_to_f32(
-                    |m| {
-                        if self.side_of_vertex(m) == Ordering::Greater {
-                            return Ordering::Less;
-                        }
-                        self.eval(m).signum().cmp(&0)
+                    |m| match self.side_and_sign(m) {
+                        (Ordering::Greater, _) => Ordering::Less,
+                        (_, p) => p.cmp(&0),
                     },
                     g0,
                 );
                 let t1 = round_to_f32(
-                    |m| {
-                        if self.side_of_vertex(m) == Ordering::Less {
-                            return Ordering::Greater;
-                        }
-                        0.cmp(&self.eval(m).signum())
+                    |m| match self.side_and_sign(m) {
+                        (Ordering::Less, _) => Ordering::Greater,
+                        (_, p) => 0.cmp(&p),
                     },
                     g1,
                 );

@@ -71,10 +71,24 @@ pub fn quadratic(ray: &Ray, quadric: &Quadric) -> Result<Quadratic, NonFinite> {
 /// assert_eq!(intersect(&r, &p), Ok(QuadricHit::One(2.0)));
 /// ```
 pub fn intersect(ray: &Ray, quadric: &Quadric) -> Result<QuadricHit, NonFinite> {
-    Ok(match quadratic(ray, quadric)?.solve() {
+    Ok(classify(&quadratic(ray, quadric)?))
+}
+
+/// The quadric result of an exact [`quadratic`] (so a caller that needs
+/// both computes the quadratic once).
+///
+/// ```
+/// use rayoracle::{Ray, quadric::{Quadric, QuadricHit, exact}};
+/// use glam::Vec3;
+/// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+/// let q = exact::quadratic(&Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), &cyl).unwrap();
+/// assert_eq!(exact::classify(&q), QuadricHit::Two(4.0, 6.0));
+/// ```
+pub fn classify(q: &Quadratic) -> QuadricHit {
+    match q.solve() {
         ExactQuadratic::None => QuadricHit::None,
         ExactQuadratic::One(t) => QuadricHit::One(t),
         ExactQuadratic::Two(t0, t1) => QuadricHit::Two(t0, t1),
         ExactQuadratic::All => QuadricHit::All,
-    })
+    }
 }

@@ -84,7 +84,8 @@ impl Quadric {
     /// The sphere as a quadric (seed 1.4b): `A = B = C = 1`, `G, H, I =
     /// −2C`, `J = |C|² − R²`, with `J` rounded once from its exact value.
     /// Returns the quadric and whether it is *exactly* the sphere (true when
-    /// `J` is representable, e.g. for small integer centres and radii).
+    /// `J` is representable, e.g. for small integer centres and radii; a
+    /// representable `J` whose f64 evaluation rounds is reported inexact).
     ///
     /// ```
     /// use rayoracle::{quadric::Quadric, sphere::Sphere};
@@ -98,6 +99,13 @@ impl Quadric {
         let c = s.center.to_array();
         let neg2c = c.map(|x| -2.0 * x);
         let exact_ok = c.iter().all(|x| x.is_finite()) && s.radius.is_finite();
+        // Fast rejection: the squares are exact in f64; unless their f64 sum
+        // is an f32 the exact J is (almost always) not one either. The rare
+        // J that is representable although its f64 sum rounded is reported
+        // inexact, which only skips the checks that need exactness.
+        let j64 =
+            c.iter().map(|&x| x as f64 * x as f64).sum::<f64>() - s.radius as f64 * s.radius as f64;
+        let exact_ok = exact_ok && (j64 as f32) as f64 == j64;
         let (j, j_exact) = if exact_ok {
             let cd = c.map(Dyadic::from_f32);
             let r = Dyadic::from_f32(s.radius);

@@ -36,10 +36,23 @@ pub fn quadratic(ray: &Ray, sphere: &Sphere) -> Result<Quadratic, NonFinite> {
 /// assert_eq!(intersect(&r, &s), Ok(SphereHit::Tangent(5.0)));
 /// ```
 pub fn intersect(ray: &Ray, sphere: &Sphere) -> Result<SphereHit, NonFinite> {
-    Ok(match quadratic(ray, sphere)?.solve() {
+    Ok(classify(&quadratic(ray, sphere)?))
+}
+
+/// The sphere result of an exact [`quadratic`] (so a caller that needs both
+/// computes the quadratic once).
+///
+/// ```
+/// use rayoracle::{Ray, sphere::{Sphere, SphereHit, exact}};
+/// use glam::Vec3;
+/// let q = exact::quadratic(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), &Sphere::new(Vec3::ZERO, 1.0)).unwrap();
+/// assert_eq!(exact::classify(&q), SphereHit::Two(4.0, 6.0));
+/// ```
+pub fn classify(q: &Quadratic) -> SphereHit {
+    match q.solve() {
         // α = 0 only for d = 0, which is not a line.
         ExactQuadratic::None | ExactQuadratic::All => SphereHit::None,
         ExactQuadratic::One(t) => SphereHit::Tangent(t),
         ExactQuadratic::Two(t0, t1) => SphereHit::Two(t0, t1),
-    })
+    }
 }
