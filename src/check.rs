@@ -579,6 +579,19 @@ fn check_quadric_against(
         r.status = Status::OutOfDomain;
         return Ok(r);
     }
+    // The kernel works in units where a root is the hit point's
+    // displacement from the origin: a hit point beyond f32's range
+    // (|t|·max|dᵢ| ≥ 2¹²⁷) is outside its domain even when t is finite.
+    let dmax = ray.dir.abs().max_element() as f64;
+    if exact
+        .roots()
+        .as_slice()
+        .iter()
+        .any(|&t| t.abs() as f64 * dmax >= 2f64.powi(127))
+    {
+        r.status = Status::OutOfDomain;
+        return Ok(r);
+    }
     r.margin = eq.discriminant().to_f64();
     r.band = quadric::band(ray, q);
     let (alpha_terms, _, _) = quadric::terms(ray, q);
