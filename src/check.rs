@@ -580,15 +580,15 @@ fn check_quadric_against(
         return Ok(r);
     }
     // The kernel works in units where a root is the hit point's
-    // displacement from the origin: a hit point beyond f32's range
-    // (|t|·max|dᵢ| ≥ 2¹²⁷) is outside its domain even when t is finite.
+    // displacement from the origin, |t|·max|dᵢ|: beyond f32's range it
+    // overflows even when t is finite, and below 2⁻¹⁰⁰ it is rounded in the
+    // subnormal range before it is scaled back.
     let dmax = ray.dir.abs().max_element() as f64;
-    if exact
-        .roots()
-        .as_slice()
-        .iter()
-        .any(|&t| t.abs() as f64 * dmax >= 2f64.powi(127))
-    {
+    let outside = |t: &f32| {
+        let disp = t.abs() as f64 * dmax;
+        disp >= 2f64.powi(127) || (disp != 0.0 && disp < 2f64.powi(-100))
+    };
+    if exact.roots().as_slice().iter().any(outside) {
         r.status = Status::OutOfDomain;
         return Ok(r);
     }

@@ -42,9 +42,10 @@
 //! its terms' magnitudes; the solve is double-word and rounded once. The
 //! classification band and root bound follow ([`band`], [`ROOT_ULPS`]).
 //! The origin is not prescaled, so the bounds hold on a stated domain
-//! ([`in_domain`]; and the hit points must lie within f32's range,
-//! `|t|·max|dᵢ| < 2¹²⁷`, since the kernel works in units where a root is
-//! the hit point's displacement): `|o| < 2⁴⁰`, and the products `β²` and `αγ`, measured
+//! ([`in_domain`]; and each non-zero root's hit point must lie at a
+//! displacement `|t|·max|dᵢ|` in `[2⁻¹⁰⁰, 2¹²⁷)` from the origin, since the
+//! kernel works in units where a root is that displacement):
+//! `|o| < 2⁴⁰`, and the products `β²` and `αγ`, measured
 //! by the sums of their terms' magnitudes after the prescaling, must be 0 or
 //! within `[2⁻¹⁰⁰, 2¹⁰⁰]`.
 
