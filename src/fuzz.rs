@@ -144,19 +144,6 @@ fn judged(
         .map_err(|v| Failure(format!("lane {lane}: {v}\n  case: {case:?}")))
 }
 
-/// Same class, same root bits (any NaN equals any NaN).
-fn same_hit<H: Intersection + core::fmt::Debug>(a: &H, b: &H) -> bool {
-    let (ra, rb) = (a.roots(), b.roots());
-    let same = |x: f32, y: f32| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
-    a.class() == b.class()
-        && ra.as_slice().len() == rb.as_slice().len()
-        && ra
-            .as_slice()
-            .iter()
-            .zip(rb.as_slice())
-            .all(|(&x, &y)| same(x, y))
-}
-
 /// Compares x4's lanes and `nearest` with the reference's.
 fn x4_matches<H: Intersection + core::fmt::Debug>(
     lanes: [H; 4],
@@ -166,7 +153,7 @@ fn x4_matches<H: Intersection + core::fmt::Debug>(
 ) -> Result<(), Failure> {
     let (mask, t) = (nearest.0.to_bitmask(), nearest.1.to_array());
     for i in 0..4 {
-        if !same_hit(&lanes[i], &reference[i]) {
+        if !crate::hit::same_bits(&lanes[i], &reference[i]) {
             return Err(Failure(format!(
                 "lane {i}: x4 {:?} but reference {:?}",
                 lanes[i], reference[i]

@@ -94,3 +94,25 @@ pub trait Intersection {
             .find(|&t| t >= t_min && t <= t_max)
     }
 }
+
+/// Whether two results are the same class with the same root bits (any
+/// NaN equal to any NaN, `+0` and `−0` different): the bit-identity x4 owes
+/// the reference.
+///
+/// ```
+/// use rayoracle::hit::same_bits;
+/// use rayoracle::sphere::SphereHit;
+/// assert!(same_bits(&SphereHit::Tangent(f32::NAN), &SphereHit::Tangent(-f32::NAN)));
+/// assert!(!same_bits(&SphereHit::Tangent(0.0), &SphereHit::Tangent(-0.0)));
+/// ```
+pub fn same_bits<H: Intersection>(a: &H, b: &H) -> bool {
+    let (ra, rb) = (a.roots(), b.roots());
+    let same = |x: f32, y: f32| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
+    a.class() == b.class()
+        && ra.as_slice().len() == rb.as_slice().len()
+        && ra
+            .as_slice()
+            .iter()
+            .zip(rb.as_slice())
+            .all(|(&x, &y)| same(x, y))
+}

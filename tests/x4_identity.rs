@@ -6,7 +6,7 @@ use glam::Vec3;
 use proptest::prelude::*;
 use rayoracle::Ray;
 use rayoracle::camera::CameraParams;
-use rayoracle::hit::Intersection;
+use rayoracle::hit::{Intersection, same_bits};
 use rayoracle::plane::{self, Plane, PlaneHit};
 use rayoracle::quadric::{self, Quadric, QuadricHit};
 use rayoracle::ray4::{Ray4, for_each4};
@@ -93,17 +93,6 @@ fn same(a: f32, b: f32) -> bool {
     a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan())
 }
 
-fn same_roots<H: Intersection>(a: &H, b: &H) -> bool {
-    let (ra, rb) = (a.roots(), b.roots());
-    a.class() == b.class()
-        && ra.as_slice().len() == rb.as_slice().len()
-        && ra
-            .as_slice()
-            .iter()
-            .zip(rb.as_slice())
-            .all(|(x, y)| same(*x, *y))
-}
-
 fn same_opt(a: Option<f32>, hit: bool, t: f32) -> bool {
     match a {
         Some(x) => hit && same(x, t),
@@ -126,7 +115,7 @@ proptest! {
         let (mask, t) = (mask.to_bitmask(), t.to_array());
         for (i, (r, s)) in cases.iter().enumerate() {
             let want: SphereHit = sphere::reference::intersect(r, s);
-            prop_assert!(same_roots(&h4.lanes()[i], &want), "lane {i}: {:?} vs {:?} for {r:?} {s:?}", h4.lanes()[i], want);
+            prop_assert!(same_bits(&h4.lanes()[i], &want), "lane {i}: {:?} vs {:?} for {r:?} {s:?}", h4.lanes()[i], want);
             prop_assert!(same_opt(want.nearest(T_MIN, T_MAX), mask >> i & 1 == 1, t[i]), "nearest lane {i}");
         }
     }
@@ -140,7 +129,7 @@ proptest! {
         let (mask, t) = (mask.to_bitmask(), t.to_array());
         for (i, (r, p)) in cases.iter().enumerate() {
             let want: PlaneHit = plane::reference::intersect(r, p);
-            prop_assert!(same_roots(&h4.lanes()[i], &want), "lane {i}: {:?} vs {:?} for {r:?} {p:?}", h4.lanes()[i], want);
+            prop_assert!(same_bits(&h4.lanes()[i], &want), "lane {i}: {:?} vs {:?} for {r:?} {p:?}", h4.lanes()[i], want);
             prop_assert!(same_opt(want.nearest(T_MIN, T_MAX), mask >> i & 1 == 1, t[i]), "nearest lane {i}");
         }
     }
@@ -154,7 +143,7 @@ proptest! {
         let (mask, t) = (mask.to_bitmask(), t.to_array());
         for (i, (r, q)) in cases.iter().enumerate() {
             let want: QuadricHit = quadric::reference::intersect(r, q);
-            prop_assert!(same_roots(&h4.lanes()[i], &want), "lane {i}: {:?} vs {:?} for {r:?} {q:?}", h4.lanes()[i], want);
+            prop_assert!(same_bits(&h4.lanes()[i], &want), "lane {i}: {:?} vs {:?} for {r:?} {q:?}", h4.lanes()[i], want);
             prop_assert!(same_opt(want.nearest(T_MIN, T_MAX), mask >> i & 1 == 1, t[i]), "nearest lane {i}");
         }
     }
@@ -187,7 +176,7 @@ proptest! {
         let got = sphere::x4::intersect_slice(&rays, &sphere);
         prop_assert_eq!(got.len(), rays.len());
         for (r, g) in rays.iter().zip(&got) {
-            prop_assert!(same_roots(g, &sphere::reference::intersect(r, &sphere)));
+            prop_assert!(same_bits(g, &sphere::reference::intersect(r, &sphere)));
         }
     }
 }
