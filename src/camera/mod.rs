@@ -199,7 +199,8 @@ impl std::error::Error for CameraError {}
 /// ([`crate::num::scale::crush_loss`]). A `dir` of `(0, −7·10⁻⁹, 3·10³⁸)`
 /// loses its small component to the prescaling, and an `up` nearly parallel
 /// to it leaves only that component in the cross product. The non-zero
-/// components of the unit axes `x̂` and `ŷ` must also be at least `2⁻¹⁰⁰`.
+/// components of `dir' × up'` and of the unit axes `x̂` and `ŷ` must also be
+/// at least `2⁻¹⁰⁰`.
 ///
 /// ```
 /// use rayoracle::camera::{CameraParams, in_domain};
@@ -237,7 +238,11 @@ pub fn in_domain(p: &CameraParams) -> bool {
     ];
     let ylen = yc.iter().map(|c| c * c).sum::<f64>().sqrt();
     let tiny = |c: f64| c != 0.0 && c.abs() < 2f64.powi(-100);
-    !(xh.iter().any(|&c| tiny(c)) || yc.iter().any(|&c| tiny(c / ylen)))
+    // A cross-product component formed in the subnormal range (from a
+    // prescaled component that became subnormal) has lost bits too.
+    !(cross.iter().any(|&c| tiny(c))
+        || xh.iter().any(|&c| tiny(c))
+        || yc.iter().any(|&c| tiny(c / ylen)))
 }
 
 /// `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|` in f64 for pixel `(px, py)`: the scale the
