@@ -1,3 +1,9 @@
+//! What each fuzz target's checks cost per input, without the fuzzer's
+//! coverage instrumentation: every committed corpus input of every target,
+//! repeated for a second. `cargo run --release --example fuzz_check_cost`.
+//! (The fuzzer's own exec/s, instrumentation included, is what
+//! `fuzz/campaign` and the README report.)
+
 use std::time::Instant;
 fn main() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/corpus");
