@@ -14,6 +14,8 @@ pub mod plane;
 pub mod quadric;
 pub mod ray;
 pub mod ray4;
+pub mod render;
+pub mod scene;
 pub mod sphere;
 pub mod ulp;
 pub mod x4_column;

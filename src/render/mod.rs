@@ -1,0 +1,1 @@
+//! Rendering scenes (issue 5; being built).

@@ -1,0 +1,1 @@
+//! Scene files (issue 5; being built).
