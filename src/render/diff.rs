@@ -1,0 +1,192 @@
+//! Difference images for snapshot review: `old | new | heat map`, so a
+//! reviewer sees what moved instead of reading numbers.
+
+/// A decoded image: RGB for display, and the raw samples (8 or 16 bits,
+/// 1 or 3 channels, widened to `u16`) for measuring differences.
+struct Decoded {
+    width: u32,
+    height: u32,
+    rgb: Vec<[u8; 3]>,
+    samples: Vec<Vec<u16>>,
+    max: u16,
+}
+
+fn decode(bytes: &[u8]) -> Result<Decoded, String> {
+    let mut reader = png::Decoder::new(std::io::Cursor::new(bytes))
+        .read_info()
+        .map_err(|e| format!("not a PNG: {e}"))?;
+    let size = reader
+        .output_buffer_size()
+        .ok_or_else(|| "PNG too large".to_string())?;
+    let mut buf = vec![0; size];
+    let info = reader
+        .next_frame(&mut buf)
+        .map_err(|e| format!("bad PNG data: {e}"))?;
+    let (w, h) = (info.width, info.height);
+    let channels = match info.color_type {
+        png::ColorType::Grayscale => 1,
+        png::ColorType::Rgb => 3,
+        other => return Err(format!("unsupported PNG colour type {other:?}")),
+    };
+    let (sample, max): (Box<dyn Fn(&[u8], usize) -> u16>, u16) = match info.bit_depth {
+        png::BitDepth::Eight => (Box::new(|b, i| u16::from(b[i])), 255),
+        png::BitDepth::Sixteen => (
+            Box::new(|b, i| u16::from_be_bytes([b[2 * i], b[2 * i + 1]])),
+            65535,
+        ),
+        other => return Err(format!("unsupported PNG bit depth {other:?}")),
+    };
+    let n = w as usize * h as usize;
+    let samples: Vec<Vec<u16>> = (0..n)
+        .map(|p| {
+            (0..channels)
+                .map(|c| sample(&buf, p * channels + c))
+                .collect()
+        })
+        .collect();
+    let to8 = |s: u16| if max == 255 { s as u8 } else { (s >> 8) as u8 };
+    let rgb = samples
+        .iter()
+        .map(|s| {
+            if channels == 1 {
+                [to8(s[0]); 3]
+            } else {
+                [to8(s[0]), to8(s[1]), to8(s[2])]
+            }
+        })
+        .collect();
+    Ok(Decoded {
+        width: w,
+        height: h,
+        rgb,
+        samples,
+        max,
+    })
+}
+
+/// The heat colour of a relative difference `d ∈ [0, 1]`: black for none,
+/// then from dark red through orange and yellow to white. Any difference at
+/// all is at least a clearly visible red (a one-level change in a 16-bit
+/// depth must not vanish), and the brightness grows with `√d`.
+///
+/// ```
+/// use rayoracle::render::diff::heat;
+/// assert_eq!(heat(0.0), [0, 0, 0]);
+/// assert!(heat(1e-9)[0] >= 96);
+/// assert_eq!(heat(1.0), [255, 255, 255]);
+/// ```
+pub fn heat(d: f64) -> [u8; 3] {
+    if d <= 0.0 {
+        return [0, 0, 0];
+    }
+    let v = 0.25 + 0.75 * d.clamp(0.0, 1.0).sqrt();
+    let ramp = |lo: f64| ((v - lo) / (1.0 / 3.0)).clamp(0.0, 1.0);
+    let r = 0.375 + 0.625 * ramp(0.0);
+    let g = ramp(1.0 / 3.0);
+    let b = ramp(2.0 / 3.0);
+    [r, g, b].map(|c| (c * 255.0).round() as u8)
+}
+
+/// Summary of a comparison.
+///
+/// ```
+/// use rayoracle::render::diff::Comparison;
+/// let c = Comparison { pixels: 4, differing: 1, max_difference: 0.5 };
+/// assert!(c.to_string().contains("1 of 4"));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Comparison {
+    /// Pixels compared (0 if the sizes differ).
+    pub pixels: usize,
+    /// Pixels with any sample different.
+    pub differing: usize,
+    /// The largest sample difference, as a fraction of full scale.
+    pub max_difference: f64,
+}
+
+impl core::fmt::Display for Comparison {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(
+            f,
+            "{} of {} pixels differ, by up to {:.3}% of full scale",
+            self.differing,
+            self.pixels,
+            100.0 * self.max_difference
+        )
+    }
+}
+
+/// A PNG showing `old | new | heat map of |old − new|`, side by side with
+/// 4-pixel grey gutters, and the numbers behind it. Images of different
+/// sizes are shown side by side with an all-white heat map.
+///
+/// ```
+/// use rayoracle::render::{Channels, Path, Plan, render, diff::diff_png};
+/// use rayoracle::scene::Scene;
+/// let s = Scene::parse(r#"{"camera": {"position": [0, 0, 0], "dir": [0, 0, -1],
+///     "up": [0, 1, 0], "angle": 1, "res": [8, 6]},
+///     "spheres": [{"id": 1, "center": [0, 0, -3], "radius": 1}]}"#).unwrap();
+/// let a = render(&Plan::compile(&s, Channels::DEPTH).unwrap(), Path::X4).depth_png();
+/// let s2 = Scene { spheres: vec![], ..s };
+/// let b = render(&Plan::compile(&s2, Channels::DEPTH).unwrap(), Path::X4).depth_png();
+/// let (png, c) = diff_png(&a, &b).unwrap();
+/// assert!(c.differing > 0 && c.differing < 48);
+/// assert_eq!(&png[1..4], b"PNG");
+/// assert_eq!(diff_png(&a, &a).unwrap().1.differing, 0);
+/// ```
+pub fn diff_png(old: &[u8], new: &[u8]) -> Result<(Vec<u8>, Comparison), String> {
+    let a = decode(old).map_err(|e| format!("old image: {e}"))?;
+    let b = decode(new).map_err(|e| format!("new image: {e}"))?;
+    let same_size = (a.width, a.height) == (b.width, b.height)
+        && a.samples.first().map(Vec::len) == b.samples.first().map(Vec::len);
+    let (hw, hh) = (a.width.max(b.width), a.height.max(b.height));
+    let mut heat_px = vec![[255u8; 3]; hw as usize * hh as usize];
+    let mut cmp = Comparison {
+        pixels: 0,
+        differing: 0,
+        max_difference: 0.0,
+    };
+    if same_size {
+        cmp.pixels = a.samples.len();
+        let full = f64::from(a.max.max(b.max));
+        for (i, (sa, sb)) in a.samples.iter().zip(&b.samples).enumerate() {
+            let d = sa
+                .iter()
+                .zip(sb)
+                .map(|(&x, &y)| f64::from(x.abs_diff(y)) / full)
+                .fold(0.0, f64::max);
+            if d > 0.0 {
+                cmp.differing += 1;
+                cmp.max_difference = cmp.max_difference.max(d);
+            }
+            heat_px[i] = heat(d);
+        }
+    }
+    const GUTTER: u32 = 4;
+    let width = a.width + b.width + hw + 2 * GUTTER;
+    let height = a.height.max(b.height).max(hh);
+    let mut out = vec![[96u8; 3]; width as usize * height as usize];
+    let mut blit = |x0: u32, w: u32, h: u32, px: &[[u8; 3]]| {
+        for y in 0..h {
+            for x in 0..w {
+                out[(y * width + x0 + x) as usize] = px[(y * w + x) as usize];
+            }
+        }
+    };
+    blit(0, a.width, a.height, &a.rgb);
+    blit(a.width + GUTTER, b.width, b.height, &b.rgb);
+    blit(a.width + b.width + 2 * GUTTER, hw, hh, &heat_px);
+    let data: Vec<u8> = out.into_iter().flatten().collect();
+    let mut bytes = Vec::new();
+    {
+        let mut enc = png::Encoder::new(&mut bytes, width, height);
+        enc.set_color(png::ColorType::Rgb);
+        enc.set_depth(png::BitDepth::Eight);
+        let mut w = enc
+            .write_header()
+            .map_err(|e| format!("encoding the diff: {e}"))?;
+        w.write_image_data(&data)
+            .map_err(|e| format!("encoding the diff: {e}"))?;
+    }
+    Ok((bytes, cmp))
+}
