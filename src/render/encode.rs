@@ -188,3 +188,37 @@ impl Frame {
         out
     }
 }
+
+/// Writes the asked-for channels of `frame` as `DIR/STEM.CHANNEL.png`,
+/// creating `DIR`; returns the paths written.
+///
+/// ```
+/// use rayoracle::render::{Channels, Path, Plan, render, write_pngs};
+/// use rayoracle::scene::Scene;
+/// let s = Scene::parse(r#"{"camera": {"position": [0, 0, 0], "dir": [0, 0, -1],
+///     "up": [0, 1, 0], "angle": 1, "res": [4, 3]}}"#).unwrap();
+/// let f = render(&Plan::compile(&s, Channels::ALL).unwrap(), Path::X4);
+/// let dir = std::env::temp_dir().join("rayoracle-doc-write-pngs");
+/// let files = write_pngs(&f, Channels::parse("id").unwrap(), &dir, "empty").unwrap();
+/// assert_eq!(files, vec![dir.join("empty.id.png")]);
+/// ```
+pub fn write_pngs(
+    frame: &Frame,
+    channels: super::Channels,
+    dir: &std::path::Path,
+    stem: &str,
+) -> Result<Vec<std::path::PathBuf>, String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
+    let wanted = channels.names();
+    let mut written = Vec::new();
+    for (name, bytes) in frame.pngs() {
+        if !wanted.contains(&name) {
+            continue;
+        }
+        let path = dir.join(format!("{stem}.{name}.png"));
+        std::fs::write(&path, bytes)
+            .map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
+        written.push(path);
+    }
+    Ok(written)
+}

@@ -45,7 +45,7 @@ mod reference;
 mod x4;
 
 pub use channels::Channels;
-pub use encode::{PALETTE, depth_grey};
+pub use encode::{PALETTE, depth_grey, write_pngs};
 pub use plan::Plan;
 
 /// Which implementation renders.
