@@ -190,6 +190,21 @@ impl Scene {
     /// assert!(e.message.contains("parallel"), "{e}");
     /// ```
     pub fn parse(text: &str) -> Result<Scene, SceneError> {
+        // serde would read a struct from an array too (`[name, description,
+        // …]`); a scene is only ever an object.
+        let body = text.trim_start();
+        if let Some(first) = body.chars().next()
+            && first != '{'
+        {
+            let before = &text[..text.len() - body.len()];
+            let line = before.matches('\n').count() + 1;
+            let column = before.len() - before.rfind('\n').map_or(0, |i| i + 1) + 1;
+            return Err(SceneError {
+                line: Some(line),
+                column: Some(column),
+                ..SceneError::field("", "a scene is a JSON object, {\"camera\": …}")
+            });
+        }
         let mut de = serde_json::Deserializer::from_str(text);
         let parsed: Result<file::SceneFile, _> = serde_path_to_error::deserialize(&mut de);
         let parsed = match parsed {
@@ -265,7 +280,10 @@ impl Scene {
 
 /// A serde error with its place and path, as a [`SceneError`].
 fn located(path: String, inner: serde_json::Error) -> SceneError {
-    let mut field = if path == "." { String::new() } else { path };
+    // serde_path_to_error writes `.` for the root and `?` for a key it
+    // could not read; neither is a field name.
+    let path = path.trim_end_matches('?').trim_end_matches('.');
+    let mut field = path.to_string();
     let (line, column) = (inner.line(), inner.column());
     let full = inner.to_string();
     let suffix = format!(" at line {line} column {column}");

@@ -1,0 +1,155 @@
+//! `rayoracle render` and the no-argument default job, run as a user would.
+#![cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+const ROOT: &str = env!("CARGO_MANIFEST_DIR");
+
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rayoracle-render-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_rayoracle"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+fn png_size(path: &Path) -> (u32, u32) {
+    let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let r = png::Decoder::new(std::io::Cursor::new(bytes))
+        .read_info()
+        .unwrap();
+    (r.info().width, r.info().height)
+}
+
+fn fixture(name: &str) -> String {
+    format!("{ROOT}/fixtures/scenes/{name}")
+}
+
+#[test]
+fn render_writes_each_channel_at_the_asked_size_and_both_paths_write_the_same_bytes() {
+    let dir = temp_dir("paths");
+    let (x4, reference) = (dir.join("x4"), dir.join("ref"));
+    for (out, path) in [(&x4, "x4"), (&reference, "reference")] {
+        let (code, stdout, stderr) = run(&[
+            "render",
+            &fixture("quadric-zoo.json"),
+            "-o",
+            out.to_str().unwrap(),
+            "--path",
+            path,
+            "--size",
+            "37x21",
+        ]);
+        assert_eq!(code, 0, "{stderr}");
+        assert!(stdout.contains("37×21"), "{stdout}");
+    }
+    for channel in ["depth", "normal", "id"] {
+        let file = format!("quadric-zoo.{channel}.png");
+        assert_eq!(png_size(&x4.join(&file)), (37, 21));
+        assert_eq!(
+            std::fs::read(x4.join(&file)).unwrap(),
+            std::fs::read(reference.join(&file)).unwrap(),
+            "{file}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn only_the_asked_channels_are_written() {
+    let dir = temp_dir("channels");
+    let (code, _, stderr) = run(&[
+        "render",
+        &fixture("seed.json"),
+        "-o",
+        dir.to_str().unwrap(),
+        "--channel",
+        "id",
+        "--size",
+        "16x12",
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names, vec!["seed.id.png"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_bad_scene_is_reported_with_its_place_and_the_others_are_still_rendered() {
+    let dir = temp_dir("bad");
+    let bad = dir.join("bad.json");
+    std::fs::write(
+        &bad,
+        "{\"camera\": {\"position\": [0, 0, 0], \"dir\": [0, 0, -1],\n  \"up\": [0, 1, 0], \"angle\": 7, \"res\": [4, 3]}}\n",
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let (code, stdout, stderr) = run(&[
+        "render",
+        bad.to_str().unwrap(),
+        &fixture("seed.json"),
+        "-o",
+        out.to_str().unwrap(),
+        "--size",
+        "8x6",
+    ]);
+    assert_eq!(code, 1);
+    assert!(
+        stderr.contains(&format!("{}:2:", bad.display())) && stderr.contains("camera.angle: 7"),
+        "{stderr}"
+    );
+    assert!(stdout.contains("seed.json"), "{stdout}");
+    assert_eq!(png_size(&out.join("seed.depth.png")), (8, 6));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn bad_flags_are_refused_before_any_work() {
+    let (code, _, stderr) = run(&["render", &fixture("seed.json"), "-o", "x", "--size", "9"]);
+    assert_eq!(code, 2, "clap's usage error");
+    assert!(stderr.contains("WIDTHxHEIGHT"), "{stderr}");
+    let (code, _, stderr) = run(&["render", &fixture("seed.json"), "-o", "x", "--path", "gpu"]);
+    assert_eq!(code, 2);
+    assert!(stderr.contains("expected reference or x4"), "{stderr}");
+    let (code, _, stderr) = run(&[
+        "render",
+        &fixture("seed.json"),
+        "-o",
+        "x",
+        "--size",
+        "70000x70000",
+    ]);
+    assert_eq!(code, 1);
+    assert!(
+        stderr.contains("--size 70000x70000") && stderr.contains("limit"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn the_default_job_evaluates_the_fixtures_and_renders_the_default_scene() {
+    let (code, stdout, stderr) = run(&[]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stdout.contains("out/eval.jsonl"), "{stdout}");
+    for channel in ["depth", "normal", "id"] {
+        let file = Path::new(ROOT).join(format!("out/seed.{channel}.png"));
+        assert!(stdout.contains(file.to_str().unwrap()), "{stdout}");
+        assert_eq!(png_size(&file), (160, 120));
+    }
+}
