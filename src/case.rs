@@ -20,29 +20,41 @@
 //! * Anything else is an error naming the field: a missing or unknown field,
 //!   a wrong type, a wrong length.
 
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 use crate::Ray;
 use crate::camera::CameraParams;
+#[cfg(feature = "plane")]
 use crate::plane::Plane;
+#[cfg(feature = "quadric")]
 use crate::quadric::Quadric;
+#[cfg(feature = "sphere")]
 use crate::sphere::Sphere;
 use glam::Vec3;
 use serde_json::value::RawValue;
 use std::collections::BTreeMap;
 
-/// A parsed case.
+/// A parsed case. The plane, sphere and quadric variants exist only when
+/// their cargo feature is on; the camera is always there.
 ///
 /// ```
 /// use rayoracle::case::{Case, parse_line};
+/// let c = parse_line(r#"{"kind":"camera","position":[0,0,0],"dir":[0,0,-1],"up":[0,1,0],"angle":1,"res":[4,3],"pixel":[0,2]}"#).unwrap();
+/// assert!(matches!(c.case, Case::Camera(..)));
+/// # #[cfg(feature = "sphere")] {
 /// let c = parse_line(r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap();
 /// assert!(matches!(c.case, Case::Sphere(..)));
+/// # }
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub enum Case {
     /// A ray against a plane.
+    #[cfg(feature = "plane")]
     Plane(Ray, Plane),
     /// A ray against a sphere.
+    #[cfg(feature = "sphere")]
     Sphere(Ray, Sphere),
     /// A ray against a quadric.
+    #[cfg(feature = "quadric")]
     Quadric(Ray, Quadric),
     /// A camera and a pixel.
     Camera(CameraParams, [u32; 2]),
@@ -53,13 +65,16 @@ impl Case {
     ///
     /// ```
     /// use rayoracle::case::parse_line;
-    /// let c = parse_line(r#"{"kind":"plane","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,1],"normal":[0,0,1]}"#).unwrap();
-    /// assert_eq!(c.case.kind(), "plane");
+    /// let c = parse_line(r#"{"kind":"camera","position":[0,0,0],"dir":[0,0,-1],"up":[0,1,0],"angle":1,"res":[4,3],"pixel":[0,2]}"#).unwrap();
+    /// assert_eq!(c.case.kind(), "camera");
     /// ```
     pub fn kind(&self) -> &'static str {
         match self {
+            #[cfg(feature = "plane")]
             Case::Plane(..) => "plane",
+            #[cfg(feature = "sphere")]
             Case::Sphere(..) => "sphere",
+            #[cfg(feature = "quadric")]
             Case::Quadric(..) => "quadric",
             Case::Camera(..) => "camera",
         }
@@ -70,7 +85,7 @@ impl Case {
 ///
 /// ```
 /// use rayoracle::case::parse_line;
-/// let c = parse_line(r#"{"kind":"plane","family":"demo","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,1],"normal":[0,0,1]}"#).unwrap();
+/// let c = parse_line(r#"{"kind":"camera","family":"demo","position":[0,0,0],"dir":[0,0,-1],"up":[0,1,0],"angle":1,"res":[4,3],"pixel":[0,2]}"#).unwrap();
 /// assert_eq!(c.family.as_deref(), Some("demo"));
 /// ```
 #[derive(Clone, Debug, PartialEq)]
@@ -87,9 +102,9 @@ pub struct CaseLine {
 ///
 /// ```
 /// use rayoracle::case::parse_line;
-/// let e = parse_line(r#"{"kind":"sphere","origin":[0,0],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap_err();
-/// assert_eq!(e.field, "origin");
-/// assert_eq!(e.to_string(), "origin: expected 3 numbers, got 2");
+/// let e = parse_line(r#"{"kind":"camera","position":[0,0],"dir":[0,0,-1],"up":[0,1,0],"angle":1,"res":[4,3],"pixel":[0,2]}"#).unwrap_err();
+/// assert_eq!(e.field, "position");
+/// assert_eq!(e.to_string(), "position: expected 3 numbers, got 2");
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CaseError {
@@ -232,6 +247,35 @@ impl Fields {
     }
 }
 
+/// Every kind a case line may name, whether or not it is compiled in.
+///
+/// ```
+/// assert_eq!(rayoracle::case::KINDS, ["plane", "sphere", "quadric", "camera"]);
+/// ```
+pub const KINDS: [&str; 4] = ["plane", "sphere", "quadric", "camera"];
+
+/// Whether cases of `kind` exist in this build: the camera always, the
+/// plane, sphere and quadric when the cargo feature of the same name is on.
+/// [`parse_line`] reports a line of a kind that is not compiled in as an
+/// error in its `kind` field.
+///
+/// ```
+/// use rayoracle::case::compiled_in;
+/// assert!(compiled_in("camera"));
+/// assert_eq!(compiled_in("quadric"), cfg!(feature = "quadric"));
+/// assert!(!compiled_in("cube"));
+/// ```
+pub fn compiled_in(kind: &str) -> bool {
+    // In the order of KINDS.
+    let on = [
+        cfg!(feature = "plane"),
+        cfg!(feature = "sphere"),
+        cfg!(feature = "quadric"),
+        true,
+    ];
+    KINDS.iter().zip(on).any(|(&k, on)| on && k == kind)
+}
+
 /// Parses one line.
 ///
 /// ```
@@ -272,6 +316,7 @@ pub fn parse_line(line: &str) -> Result<CaseLine, CaseError> {
         }
     };
     let case = match kind.as_str() {
+        #[cfg(feature = "plane")]
         "plane" => {
             let ray = Ray::new(fields.vec3("origin")?, fields.vec3("dir")?);
             Case::Plane(
@@ -279,6 +324,7 @@ pub fn parse_line(line: &str) -> Result<CaseLine, CaseError> {
                 Plane::new(fields.vec3("point")?, fields.vec3("normal")?),
             )
         }
+        #[cfg(feature = "sphere")]
         "sphere" => {
             let ray = Ray::new(fields.vec3("origin")?, fields.vec3("dir")?);
             Case::Sphere(
@@ -286,6 +332,7 @@ pub fn parse_line(line: &str) -> Result<CaseLine, CaseError> {
                 Sphere::new(fields.vec3("center")?, fields.f32("radius")?),
             )
         }
+        #[cfg(feature = "quadric")]
         "quadric" => {
             let ray = Ray::new(fields.vec3("origin")?, fields.vec3("dir")?);
             let coeffs = parse_f32s::<10>("coeffs", &fields.take("coeffs")?)?;
@@ -307,6 +354,15 @@ pub fn parse_line(line: &str) -> Result<CaseLine, CaseError> {
                 }
             }
             Case::Camera(CameraParams::new(position, dir, up, angle, res), pixel)
+        }
+        // A kind the earlier arms do not take is one whose feature is off.
+        other if KINDS.contains(&other) => {
+            return Err(err(
+                "kind",
+                format!(
+                    "\"{other}\" is not compiled into this build (cargo feature \"{other}\" is off)"
+                ),
+            ));
         }
         other => {
             return Err(err(
@@ -331,6 +387,7 @@ mod tests {
         parse_line(line).unwrap_err().to_string()
     }
 
+    #[cfg(feature = "sphere")]
     #[test]
     fn errors_name_the_field_and_the_problem() {
         let ok = r#""origin":[0,0,0],"dir":[0,0,1],"center":[0,0,0]"#;
@@ -356,6 +413,10 @@ mod tests {
             e(r#"{"kind":"sphere","origin":[0,"x",0]}"#),
             r#"origin[1]: expected a number, or "inf", "-inf", "nan" or "0x…" bits; got "x""#
         );
+    }
+
+    #[test]
+    fn errors_name_the_field_and_the_problem_in_every_build() {
         assert_eq!(e(r#"[1,2]"#), "json: expected an object, one case per line");
         assert!(e(r#"{"kind":"#).starts_with("json: "));
         assert_eq!(
@@ -370,6 +431,39 @@ mod tests {
             ),
             "res[1]: expected a whole number from 0 to 4294967295, got -3"
         );
+    }
+
+    #[cfg(not(all(feature = "plane", feature = "sphere", feature = "quadric")))]
+    #[test]
+    fn a_line_of_a_kind_that_is_compiled_out_is_an_error_in_its_kind_field() {
+        let lines = [
+            (
+                "plane",
+                cfg!(feature = "plane"),
+                r#"{"kind":"plane","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,1],"normal":[0,0,1]}"#,
+            ),
+            (
+                "sphere",
+                cfg!(feature = "sphere"),
+                r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#,
+            ),
+            (
+                "quadric",
+                cfg!(feature = "quadric"),
+                r#"{"kind":"quadric","origin":[-5,0,0],"dir":[1,0,0],"coeffs":[1,1,0,0,0,0,0,0,0,-1]}"#,
+            ),
+        ];
+        let mut compiled_out = 0;
+        for (kind, _, line) in lines.iter().filter(|l| !l.1) {
+            compiled_out += 1;
+            assert_eq!(
+                e(line),
+                format!(
+                    r#"kind: "{kind}" is not compiled into this build (cargo feature "{kind}" is off)"#
+                )
+            );
+        }
+        assert!(compiled_out > 0);
     }
 
     #[test]

@@ -47,22 +47,29 @@
 use crate::Ray;
 use crate::camera::{self, CameraError, CameraParams};
 use crate::case::Case;
+#[cfg(feature = "plane")]
 use crate::exact::dyadic::{dot, sub3, vec3};
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 use crate::hit::Intersection;
+#[cfg(feature = "plane")]
 use crate::plane::{self, Plane, PlaneHit};
+#[cfg(feature = "quadric")]
 use crate::quadric::{self, Quadric, QuadricHit};
+#[cfg(feature = "sphere")]
 use crate::sphere::{self, Sphere, SphereHit};
-use crate::ulp::{ulp_of, ulps};
+use crate::ulp::ulp_of;
 use core::fmt;
 
 /// How a case was judged. Every status except [`Status::Checked`] means
 /// that part of the answer was, by the rules, not checked.
 ///
 /// ```
+/// # #[cfg(feature = "sphere")] {
 /// use rayoracle::check::{Status, reference_case};
 /// use rayoracle::case::parse_line;
 /// let c = parse_line(r#"{"kind":"sphere","origin":[0,0,"nan"],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap();
 /// assert_eq!(reference_case(&c.case).unwrap().status, Status::NonFinite);
+/// # }
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Status {
@@ -155,6 +162,7 @@ impl ComponentCheck {
 /// What was checked and what was found, for an acceptable answer.
 ///
 /// ```
+/// # #[cfg(feature = "sphere")] {
 /// use rayoracle::check::{Status, reference_case};
 /// use rayoracle::case::parse_line;
 /// let c = parse_line(r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap();
@@ -162,6 +170,7 @@ impl ComponentCheck {
 /// assert_eq!((r.kind, r.exact_class, r.got_class, r.status), ("sphere", "two", "two", Status::Checked));
 /// assert_eq!(r.roots.iter().map(|x| x.exact).collect::<Vec<_>>(), [4.0, 6.0]);
 /// assert_eq!(r.max_root_ulps(), Some(0));
+/// # }
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct CaseReport {
@@ -189,10 +198,12 @@ impl CaseReport {
     /// The largest root error in ulps, if any root was compared.
     ///
     /// ```
+    /// # #[cfg(feature = "plane")] {
     /// use rayoracle::check::reference_case;
     /// use rayoracle::case::parse_line;
     /// let c = parse_line(r#"{"kind":"plane","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,1],"normal":[0,0,1]}"#).unwrap();
     /// assert_eq!(reference_case(&c.case).unwrap().max_root_ulps(), Some(0));
+    /// # }
     /// ```
     pub fn max_root_ulps(&self) -> Option<u64> {
         self.roots.iter().map(|r| r.ulps).max()
@@ -214,6 +225,7 @@ impl CaseReport {
 /// Why an answer is not acceptable, with the numbers.
 ///
 /// ```
+/// # #[cfg(feature = "sphere")] {
 /// use rayoracle::check::{Violation, check_sphere};
 /// use rayoracle::{Ray, sphere::{Sphere, SphereHit}};
 /// use glam::Vec3;
@@ -221,6 +233,7 @@ impl CaseReport {
 /// let v = check_sphere(&ray, &Sphere::new(Vec3::ZERO, 1.0), SphereHit::None).unwrap_err();
 /// assert!(matches!(v, Violation::Class { exact: "two", got: "none", .. }));
 /// assert!(v.to_string().starts_with("sphere: class none, exact two"));
+/// # }
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub enum Violation {
@@ -324,16 +337,21 @@ impl std::error::Error for Violation {}
 /// [`check_quadric`] or [`check_camera`].
 ///
 /// ```
+/// # #[cfg(feature = "quadric")] {
 /// use rayoracle::check::{Status, reference_case};
 /// use rayoracle::case::parse_line;
 /// let c = parse_line(r#"{"kind":"quadric","origin":[1,0,0],"dir":[0,0,1],"coeffs":[1,1,0,0,0,0,0,0,0,-1]}"#).unwrap();
 /// let r = reference_case(&c.case).unwrap();
 /// assert_eq!((r.exact_class, r.status), ("all", Status::Checked));
+/// # }
 /// ```
 pub fn reference_case(case: &Case) -> Result<CaseReport, Violation> {
     match case {
+        #[cfg(feature = "plane")]
         Case::Plane(ray, p) => check_plane(ray, p, plane::reference::intersect(ray, p)),
+        #[cfg(feature = "sphere")]
         Case::Sphere(ray, s) => check_sphere(ray, s, sphere::reference::intersect(ray, s)),
+        #[cfg(feature = "quadric")]
         Case::Quadric(ray, q) => check_quadric(ray, q, quadric::reference::intersect(ray, q)),
         Case::Camera(p, [px, py]) => {
             let got = p.build().map(|cam| cam.ray(*px, *py));
@@ -354,6 +372,7 @@ pub fn reference_case(case: &Case) -> Result<CaseReport, Violation> {
 /// let k = plane_condition(&Ray::new(Vec3::ZERO, Vec3::Z), &Plane::new(Vec3::Z, Vec3::Z));
 /// assert_eq!(k, 2.0);
 /// ```
+#[cfg(feature = "plane")]
 pub fn plane_condition(ray: &Ray, p: &Plane) -> f64 {
     let (Ok(o), Ok(d), Ok(a), Ok(n)) = (
         vec3(ray.origin.to_array()),
@@ -390,6 +409,7 @@ fn report(kind: &'static str, exact_class: &'static str, got_class: &'static str
 }
 
 /// Compares the classes; `Ok(false)` when they differ within the band.
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn classes(r: &mut CaseReport, in_band: bool) -> Result<bool, Violation> {
     if r.exact_class == r.got_class {
         return Ok(true);
@@ -408,6 +428,7 @@ fn classes(r: &mut CaseReport, in_band: bool) -> Result<bool, Violation> {
 }
 
 /// Compares roots pairwise against `ROOT_ULPS(κ)`.
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn roots(
     r: &mut CaseReport,
     exact: &[f32],
@@ -425,7 +446,7 @@ fn roots(
         let check = RootCheck {
             exact: e,
             got: g,
-            ulps: ulps(e, g),
+            ulps: crate::ulp::ulps(e, g),
             kappa: k,
             bound,
         };
@@ -453,6 +474,7 @@ fn roots(
 /// assert!(check_plane(&ray, &p, PlaneHit::Hit(0.6)).is_err());
 /// assert!(check_plane(&ray, &p, PlaneHit::Parallel).is_err());
 /// ```
+#[cfg(feature = "plane")]
 pub fn check_plane(ray: &Ray, p: &Plane, got: PlaneHit) -> Result<CaseReport, Violation> {
     let Ok(exact) = plane::exact::intersect(ray, p) else {
         let mut r = report("plane", "non_finite", got.class());
@@ -498,6 +520,7 @@ pub fn check_plane(ray: &Ray, p: &Plane, got: PlaneHit) -> Result<CaseReport, Vi
 /// assert_eq!(check_sphere(&graze, &s, SphereHit::None).unwrap().status, Status::ClassInBand);
 /// assert_eq!(check_sphere(&graze, &s, SphereHit::Tangent(5.0)).unwrap().status, Status::Checked);
 /// ```
+#[cfg(feature = "sphere")]
 pub fn check_sphere(ray: &Ray, s: &Sphere, got: SphereHit) -> Result<CaseReport, Violation> {
     let Ok(q) = sphere::exact::quadratic(ray, s) else {
         let mut r = report("sphere", "non_finite", got.class());
@@ -509,6 +532,7 @@ pub fn check_sphere(ray: &Ray, s: &Sphere, got: SphereHit) -> Result<CaseReport,
 }
 
 /// [`check_sphere`] given the exact quadratic and its solution.
+#[cfg(feature = "sphere")]
 fn check_sphere_against(
     ray: &Ray,
     s: &Sphere,
@@ -556,6 +580,7 @@ fn check_sphere_against(
 /// assert!(check_quadric(&ray, &cyl, QuadricHit::Two(4.0, 6.0)).is_ok());
 /// assert!(check_quadric(&ray, &cyl, QuadricHit::Two(4.0, 6.5)).is_err());
 /// ```
+#[cfg(feature = "quadric")]
 pub fn check_quadric(ray: &Ray, q: &Quadric, got: QuadricHit) -> Result<CaseReport, Violation> {
     let Ok(eq) = quadric::exact::quadratic(ray, q) else {
         let mut r = report("quadric", "non_finite", got.class());
@@ -567,6 +592,7 @@ pub fn check_quadric(ray: &Ray, q: &Quadric, got: QuadricHit) -> Result<CaseRepo
 }
 
 /// [`check_quadric`] given the exact quadratic and its solution.
+#[cfg(feature = "quadric")]
 fn check_quadric_against(
     ray: &Ray,
     q: &Quadric,
@@ -622,6 +648,7 @@ fn check_quadric_against(
 /// [`quadric::condition`]'s κ, `(3Σ|α terms| t² + 3Σ|β terms| |t| +
 /// 3Σ|γ terms|) / (|2αt + β| |t|)`, at a given root `t`, with the exact α
 /// and β in `p'(t) = 2αt + β`.
+#[cfg(feature = "quadric")]
 fn quadric_kappa_at(ray: &Ray, q: &Quadric, eq: &crate::exact::Quadratic, t: f64) -> f64 {
     let (at, bt, gt) = quadric::terms(ray, q);
     let abs_sum = |xs: &[f64]| xs.iter().map(|x| x.abs()).sum::<f64>();
@@ -729,6 +756,7 @@ pub fn check_camera(
 }
 
 /// The quadric class that corresponds to a sphere class (tangent ↔ one).
+#[cfg(all(feature = "sphere", feature = "quadric"))]
 fn sphere_as_quadric_hit(h: SphereHit) -> QuadricHit {
     match h {
         SphereHit::None => QuadricHit::None,
@@ -758,6 +786,7 @@ fn sphere_as_quadric_hit(h: SphereHit) -> QuadricHit {
 /// let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
 /// assert_eq!(sphere_as_quadric(&ray, &Sphere::new(Vec3::new(1.0, 0.0, 0.0), 2.0)), Ok(true));
 /// ```
+#[cfg(all(feature = "sphere", feature = "quadric"))]
 pub fn sphere_as_quadric(ray: &Ray, s: &Sphere) -> Result<bool, Violation> {
     let Ok(qs) = sphere::exact::quadratic(ray, s) else {
         return Ok(false);
@@ -776,6 +805,7 @@ pub fn sphere_as_quadric(ray: &Ray, s: &Sphere) -> Result<bool, Violation> {
 /// let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
 /// assert!(check_sphere_and_quadric(&ray, &Sphere::new(Vec3::ZERO, 1.0), SphereHit::Two(4.0, 6.0)).is_ok());
 /// ```
+#[cfg(all(feature = "sphere", feature = "quadric"))]
 pub fn check_sphere_and_quadric(
     ray: &Ray,
     s: &Sphere,
@@ -790,6 +820,7 @@ pub fn check_sphere_and_quadric(
     Ok(report)
 }
 
+#[cfg(all(feature = "sphere", feature = "quadric"))]
 fn sphere_as_quadric_given(
     ray: &Ray,
     s: &Sphere,
@@ -837,6 +868,7 @@ mod tests {
     use super::*;
     use glam::Vec3;
 
+    #[cfg(feature = "sphere")]
     #[test]
     fn sphere_margin_is_a_times_quarter_discriminant() {
         // d = (0,0,2), o = (0,0,-5), unit sphere: a = 4, b = -10, c = 24,
@@ -855,6 +887,7 @@ mod tests {
         );
     }
 
+    #[cfg(feature = "quadric")]
     #[test]
     fn quadric_small_but_clear_alpha_is_not_tolerated_as_linear() {
         // z = x² + y² along a direction tilted by ε = 2^-30 from the axis:
@@ -877,6 +910,7 @@ mod tests {
         ));
     }
 
+    #[cfg(feature = "quadric")]
     #[test]
     fn quadric_alpha_in_its_band_tolerates_a_linear_answer() {
         // (x − y)² = 1 along d = (1, 1 + 2⁻²³, 0): α = 2⁻⁴⁶, about 2⁻⁴⁸ of

@@ -12,8 +12,8 @@
 //!    `nearest` over a fuzzer-chosen interval);
 //! 2. each reference answer is acceptable against the exact oracle
 //!    ([`crate::check`]: class outside the band, roots within their bound);
-//! 3. for spheres, the same sphere written as a quadric agrees
-//!    ([`crate::check::sphere_as_quadric`]);
+//! 3. for spheres, when the quadric is compiled in too, the same sphere
+//!    written as a quadric agrees ([`crate::check::sphere_as_quadric`]);
 //! 4. nothing panics.
 //!
 //! Every float is a [`FuzzF32`]: a mode byte picks raw bits (so NaN, ±∞,
@@ -23,19 +23,29 @@
 //! [`encode_f32`] writes any float back as raw bits, which is how corpora are
 //! built from the fixtures ([`encode_case`]).
 
-use crate::Ray;
 use crate::camera::CameraParams;
 use crate::case::Case;
 use crate::check::{self, Violation};
-use crate::hit::Intersection;
 use crate::num::Lane;
+#[cfg(feature = "plane")]
 use crate::plane::{self, Plane};
+#[cfg(feature = "quadric")]
 use crate::quadric::{self, Quadric};
-use crate::ray4::Ray4;
+#[cfg(feature = "sphere")]
 use crate::sphere::{self, Sphere};
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+use crate::{Ray, hit::Intersection, ray4::Ray4};
 use arbitrary::{Arbitrary, Unstructured};
 use glam::Vec3;
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 use wide::f32x4;
+
+#[cfg(all(feature = "sphere", not(feature = "quadric")))]
+use check::check_sphere as check_sphere_case;
+/// What the `sphere` target judges each case with: with the quadric
+/// compiled in, also the same sphere written as a quadric.
+#[cfg(all(feature = "sphere", feature = "quadric"))]
+use check::check_sphere_and_quadric as check_sphere_case;
 
 /// Special values the fuzzer can pick by index.
 const SPECIALS: [f32; 16] = [
@@ -145,6 +155,7 @@ fn judged(
 }
 
 /// Compares x4's lanes and `nearest` with the reference's.
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn x4_matches<H: Intersection + core::fmt::Debug>(
     lanes: [H; 4],
     reference: &[H; 4],
@@ -177,6 +188,7 @@ fn x4_matches<H: Intersection + core::fmt::Debug>(
 }
 
 /// Decodes four cases and an interval `[t_min, t_max]` for `nearest`.
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn decode<'a, T>(
     data: &'a [u8],
     one: impl Fn(&mut Unstructured<'a>) -> arbitrary::Result<T>,
@@ -192,10 +204,12 @@ fn decode<'a, T>(
     Some((cases, interval))
 }
 
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn ray(u: &mut Unstructured<'_>) -> arbitrary::Result<Ray> {
     Ok(Ray::new(vec3(u)?, vec3(u)?))
 }
 
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn interval4(i: (f32, f32)) -> (f32x4, f32x4) {
     (f32x4::splat(i.0), f32x4::splat(i.1))
 }
@@ -208,6 +222,7 @@ fn interval4(i: (f32, f32)) -> (f32x4, f32x4) {
 ///     r#"{"kind":"plane","origin":[0,1,0],"dir":[0,-1,0],"point":[0,0,0],"normal":[0,1,0]}"#).unwrap().case, &mut b);
 /// assert_eq!(rayoracle::fuzz::plane(&b), Ok(()));
 /// ```
+#[cfg(feature = "plane")]
 pub fn plane(data: &[u8]) -> Result<(), Failure> {
     let Some((cases, interval)) = decode(data, |u| Ok((ray(u)?, Plane::new(vec3(u)?, vec3(u)?))))
     else {
@@ -226,7 +241,8 @@ pub fn plane(data: &[u8]) -> Result<(), Failure> {
     Ok(())
 }
 
-/// The `sphere` target (including the sphere written as a quadric).
+/// The `sphere` target (including the sphere written as a quadric when the
+/// quadric is compiled in).
 ///
 /// ```
 /// let mut b = Vec::new();
@@ -234,6 +250,7 @@ pub fn plane(data: &[u8]) -> Result<(), Failure> {
 ///     r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap().case, &mut b);
 /// assert_eq!(rayoracle::fuzz::sphere(&b), Ok(()));
 /// ```
+#[cfg(feature = "sphere")]
 pub fn sphere(data: &[u8]) -> Result<(), Failure> {
     let Some((cases, interval)) = decode(data, |u| Ok((ray(u)?, Sphere::new(vec3(u)?, f(u)?))))
     else {
@@ -247,11 +264,7 @@ pub fn sphere(data: &[u8]) -> Result<(), Failure> {
     let (lo, hi) = interval4(interval);
     x4_matches(h4.lanes(), &reference, h4.nearest(lo, hi), interval)?;
     for (i, (r, s)) in cases.iter().enumerate() {
-        judged(
-            i,
-            &(r, s),
-            check::check_sphere_and_quadric(r, s, reference[i]),
-        )?;
+        judged(i, &(r, s), check_sphere_case(r, s, reference[i]))?;
     }
     Ok(())
 }
@@ -264,6 +277,7 @@ pub fn sphere(data: &[u8]) -> Result<(), Failure> {
 ///     r#"{"kind":"quadric","origin":[-5,0,0],"dir":[1,0,0],"coeffs":[1,1,0,0,0,0,0,0,0,-1]}"#).unwrap().case, &mut b);
 /// assert_eq!(rayoracle::fuzz::quadric(&b), Ok(()));
 /// ```
+#[cfg(feature = "quadric")]
 pub fn quadric(data: &[u8]) -> Result<(), Failure> {
     let one = |u: &mut Unstructured<'_>| -> arbitrary::Result<(Ray, Quadric)> {
         let r = ray(u)?;
@@ -380,18 +394,17 @@ pub fn eval_line(data: &[u8]) -> Result<(), Failure> {
 /// exercised with it everywhere), then the interval `[0, ∞]`.
 ///
 /// ```
+/// # #[cfg(feature = "sphere")] {
 /// use rayoracle::case::parse_line;
 /// let c = parse_line(r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap();
 /// let mut b = Vec::new();
 /// rayoracle::fuzz::encode_case(&c.case, &mut b);
 /// assert_eq!(b.len(), 4 * 10 * 5 + 2 * 5);
+/// # }
 /// ```
 pub fn encode_case(case: &Case, out: &mut Vec<u8>) {
-    let interval = |out: &mut Vec<u8>| {
-        encode_f32(0.0, out);
-        encode_f32(f32::INFINITY, out);
-    };
     match case {
+        #[cfg(feature = "plane")]
         Case::Plane(r, p) => {
             for _ in 0..4 {
                 encode3(r.origin, out);
@@ -399,8 +412,9 @@ pub fn encode_case(case: &Case, out: &mut Vec<u8>) {
                 encode3(p.point, out);
                 encode3(p.normal, out);
             }
-            interval(out);
+            encode_interval(out);
         }
+        #[cfg(feature = "sphere")]
         Case::Sphere(r, s) => {
             for _ in 0..4 {
                 encode3(r.origin, out);
@@ -408,15 +422,16 @@ pub fn encode_case(case: &Case, out: &mut Vec<u8>) {
                 encode3(s.center, out);
                 encode_f32(s.radius, out);
             }
-            interval(out);
+            encode_interval(out);
         }
+        #[cfg(feature = "quadric")]
         Case::Quadric(r, q) => {
             for _ in 0..4 {
                 encode3(r.origin, out);
                 encode3(r.dir, out);
                 q.coeffs.iter().for_each(|&c| encode_f32(c, out));
             }
-            interval(out);
+            encode_interval(out);
         }
         Case::Camera(p, px) => {
             encode3(p.position, out);
@@ -435,6 +450,13 @@ pub fn encode_case(case: &Case, out: &mut Vec<u8>) {
     }
 }
 
+/// The interval `[0, ∞]` that ends a kernel input.
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+fn encode_interval(out: &mut Vec<u8>) {
+    encode_f32(0.0, out);
+    encode_f32(f32::INFINITY, out);
+}
+
 /// A target's check: the fuzzer's bytes in, a [`Failure`] out.
 pub type Check = fn(&[u8]) -> Result<(), Failure>;
 
@@ -445,8 +467,11 @@ pub type Check = fn(&[u8]) -> Result<(), Failure>;
 /// ```
 pub const TARGETS: &[(&str, Check)] = &[
     ("camera", camera),
+    #[cfg(feature = "plane")]
     ("plane", plane),
+    #[cfg(feature = "sphere")]
     ("sphere", sphere),
+    #[cfg(feature = "quadric")]
     ("quadric", quadric),
     ("eval_line", eval_line),
 ];

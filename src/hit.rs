@@ -66,12 +66,14 @@ impl Roots {
 /// the plane, a line on the quadric) `t_min` itself when `t_min ≤ t_max`.
 ///
 /// ```
+/// # #[cfg(feature = "sphere")] {
 /// use rayoracle::hit::Intersection;
 /// use rayoracle::sphere::SphereHit;
 /// let h = SphereHit::Two(-1.0, 3.0);
 /// assert_eq!(h.nearest(0.0, f32::INFINITY), Some(3.0));
 /// assert_eq!(h.nearest(0.0, 2.0), None);
 /// assert_eq!(h.class(), "two");
+/// # }
 /// ```
 pub trait Intersection {
     /// The class name used in `eval` output (`hit`, `two`, `none`, …).
@@ -100,10 +102,12 @@ pub trait Intersection {
 /// the reference.
 ///
 /// ```
+/// # #[cfg(feature = "sphere")] {
 /// use rayoracle::hit::same_bits;
 /// use rayoracle::sphere::SphereHit;
 /// assert!(same_bits(&SphereHit::Tangent(f32::NAN), &SphereHit::Tangent(-f32::NAN)));
 /// assert!(!same_bits(&SphereHit::Tangent(0.0), &SphereHit::Tangent(-0.0)));
+/// # }
 /// ```
 pub fn same_bits<H: Intersection>(a: &H, b: &H) -> bool {
     let (ra, rb) = (a.roots(), b.roots());

@@ -10,12 +10,15 @@ pub mod exact;
 pub mod fuzz;
 pub mod hit;
 pub mod num;
+#[cfg(feature = "plane")]
 pub mod plane;
+#[cfg(feature = "quadric")]
 pub mod quadric;
 pub mod ray;
 pub mod ray4;
 pub mod render;
 pub mod scene;
+#[cfg(feature = "sphere")]
 pub mod sphere;
 pub mod ulp;
 pub mod x4_column;

@@ -2,18 +2,24 @@
 //! whose other lanes hold unrelated cases, and the four placements must
 //! agree bit for bit.
 
-use crate::Ray;
 use crate::case::Case;
 use crate::eval::Outcome;
+#[cfg(feature = "plane")]
 use crate::plane::{self, Plane};
+#[cfg(feature = "quadric")]
 use crate::quadric::{self, Quadric};
-use crate::ray4::Ray4;
+#[cfg(feature = "sphere")]
 use crate::sphere::{self, Sphere};
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+use crate::{Ray, ray4::Ray4};
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 use glam::Vec3;
 
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 const NAN3: Vec3 = Vec3::splat(f32::NAN);
 
 /// Neighbours for a sphere case: a two-hit, a NaN, a tangent.
+#[cfg(feature = "sphere")]
 fn sphere_decoys() -> [(Ray, Sphere); 3] {
     let unit = Sphere::new(Vec3::ZERO, 1.0);
     [
@@ -23,6 +29,7 @@ fn sphere_decoys() -> [(Ray, Sphere); 3] {
     ]
 }
 
+#[cfg(feature = "plane")]
 fn plane_decoys() -> [(Ray, Plane); 3] {
     let ground = Plane::new(Vec3::ZERO, Vec3::Y);
     [
@@ -32,6 +39,7 @@ fn plane_decoys() -> [(Ray, Plane); 3] {
     ]
 }
 
+#[cfg(feature = "quadric")]
 fn quadric_decoys() -> [(Ray, Quadric); 3] {
     let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
     [
@@ -56,11 +64,13 @@ fn packet<T: Copy>(case: T, decoys: [T; 3], lane: usize) -> [T; 4] {
 /// Runs `case` through the x4 kernels in each of the four lanes.
 ///
 /// ```
+/// # #[cfg(feature = "sphere")] {
 /// use rayoracle::case::parse_line;
 /// use rayoracle::eval::Outcome;
 /// use rayoracle::hit::Roots;
 /// let c = parse_line(r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap();
 /// assert_eq!(rayoracle::x4_column::run(&c.case), Outcome::Hit { class: "two", roots: Roots::two(4.0, 6.0) });
+/// # }
 /// ```
 pub fn run(case: &Case) -> Outcome {
     let per_lane: Vec<Outcome> = (0..4).map(|lane| in_lane(case, lane)).collect();
@@ -73,6 +83,7 @@ pub fn run(case: &Case) -> Outcome {
 
 fn in_lane(case: &Case, lane: usize) -> Outcome {
     match case {
+        #[cfg(feature = "plane")]
         Case::Plane(r, p) => {
             let pk = packet((*r, *p), plane_decoys(), lane);
             let h = plane::x4::intersect(
@@ -81,6 +92,7 @@ fn in_lane(case: &Case, lane: usize) -> Outcome {
             );
             Outcome::hit(&h.lanes()[lane])
         }
+        #[cfg(feature = "sphere")]
         Case::Sphere(r, s) => {
             let pk = packet((*r, *s), sphere_decoys(), lane);
             let h = sphere::x4::intersect(
@@ -89,6 +101,7 @@ fn in_lane(case: &Case, lane: usize) -> Outcome {
             );
             Outcome::hit(&h.lanes()[lane])
         }
+        #[cfg(feature = "quadric")]
         Case::Quadric(r, q) => {
             let pk = packet((*r, *q), quadric_decoys(), lane);
             let h = quadric::x4::intersect(

@@ -56,6 +56,7 @@ pub mod x4;
 
 use crate::Ray;
 use crate::hit::{Intersection, Roots};
+#[cfg(feature = "sphere")]
 use crate::sphere::Sphere;
 
 /// A quadric surface by its ten coefficients `[A, B, C, D, E, F, G, H, I,
@@ -97,6 +98,7 @@ impl Quadric {
     /// assert!(exact);
     /// assert_eq!(q.coeffs, [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, -2.0, -4.0, -6.0, 10.0]);
     /// ```
+    #[cfg(feature = "sphere")]
     pub fn from_sphere(s: &Sphere) -> (Quadric, bool) {
         use crate::exact::{Dyadic, dyadic::dot, round_to_f32};
         let c = s.center.to_array();
