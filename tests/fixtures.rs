@@ -10,13 +10,23 @@
 //! `dir_bits` (a camera ray's direction bits) and `error` (a camera
 //! construction error's variant name, e.g. `DirZero`).
 //!
+//! Lines of a kind that is compiled out of this build (cargo features) are
+//! skipped and counted; every kind that is compiled in must run at least one
+//! line, and its required families.
+//!
 //! Run with `--nocapture` for a per-family summary of the worst errors.
 
 use rayoracle::camera;
-use rayoracle::case::{Case, CaseLine, parse_line};
+use rayoracle::case::{Case, CaseLine, KINDS, compiled_in, parse_line};
 use rayoracle::check::{CaseReport, Status, reference_case};
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 use rayoracle::hit::Intersection;
-use rayoracle::{plane, quadric, sphere};
+#[cfg(feature = "plane")]
+use rayoracle::plane;
+#[cfg(feature = "quadric")]
+use rayoracle::quadric;
+#[cfg(feature = "sphere")]
+use rayoracle::sphere;
 use serde_json::Value;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -59,6 +69,16 @@ const REQUIRED_FAMILIES: &[&str] = &[
     "camera/error-resolution",
 ];
 
+/// The line's `kind` if it names a kind that is compiled out of this build.
+fn compiled_out_kind(line: &str) -> Option<&'static str> {
+    let v: Value = serde_json::from_str(line).ok()?;
+    let kind = v.get("kind")?.as_str()?;
+    KINDS
+        .into_iter()
+        .find(|k| *k == kind)
+        .filter(|k| !compiled_in(k))
+}
+
 fn fixture_files() -> Vec<PathBuf> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/cases");
     let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
@@ -78,6 +98,7 @@ struct Oracle {
 }
 
 fn oracle(case: &Case) -> Oracle {
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
     fn hit(r: Result<impl Intersection, rayoracle::exact::NonFinite>) -> Oracle {
         match r {
             Ok(h) => Oracle {
@@ -93,8 +114,11 @@ fn oracle(case: &Case) -> Oracle {
         }
     }
     match case {
+        #[cfg(feature = "plane")]
         Case::Plane(ray, p) => hit(plane::exact::intersect(ray, p)),
+        #[cfg(feature = "sphere")]
         Case::Sphere(ray, s) => hit(sphere::exact::intersect(ray, s)),
+        #[cfg(feature = "quadric")]
         Case::Quadric(ray, q) => hit(quadric::exact::intersect(ray, q)),
         Case::Camera(p, [px, py]) => match camera::exact::ray(p, *px, *py) {
             Ok(ray) => Oracle {
@@ -268,11 +292,18 @@ fn every_fixture_line_passes() {
     let mut failures = Vec::new();
     let mut worst: BTreeMap<String, Worst> = BTreeMap::new();
     let mut total = 0;
+    // Lines run and lines skipped (compiled out), per kind.
+    let mut ran: BTreeMap<&str, usize> = BTreeMap::new();
+    let mut skipped: BTreeMap<&str, usize> = BTreeMap::new();
     for file in &files {
         let name = file.file_name().unwrap().to_string_lossy().to_string();
         let text = std::fs::read_to_string(file).unwrap_or_else(|e| panic!("{name}: {e}"));
         for (i, line) in text.lines().enumerate() {
             if line.trim().is_empty() {
+                continue;
+            }
+            if let Some(kind) = compiled_out_kind(line) {
+                *skipped.entry(kind).or_default() += 1;
                 continue;
             }
             total += 1;
@@ -284,6 +315,7 @@ fn every_fixture_line_passes() {
                     continue;
                 }
             };
+            *ran.entry(parsed.case.kind()).or_default() += 1;
             let family = parsed.family.clone().unwrap_or_else(|| "?".into());
             let prefix = format!("{}/", parsed.case.kind());
             match run_line(&parsed, &prefix) {
@@ -296,12 +328,23 @@ fn every_fixture_line_passes() {
             }
         }
     }
-    for f in REQUIRED_FAMILIES {
+    for kind in KINDS.into_iter().filter(|k| compiled_in(k)) {
+        if !ran.contains_key(kind) {
+            failures.push(format!("no fixture line of kind {kind} ran"));
+        }
+    }
+    let families = REQUIRED_FAMILIES
+        .iter()
+        .filter(|f| compiled_in(f.split('/').next().unwrap_or_default()));
+    for f in families {
         if !worst.contains_key(*f) && !failures.iter().any(|x| x.contains(&format!("[{f}]"))) {
             failures.push(format!("no fixture line of family {f}"));
         }
     }
-    println!("{total} fixture lines in {} files", files.len());
+    println!(
+        "{total} fixture lines in {} files; run per kind {ran:?}; skipped (compiled out) {skipped:?}",
+        files.len()
+    );
     for (family, w) in &worst {
         println!(
             "{family:32} {:3} lines  worst root ulps {:>4}  worst component ulps {:>6}  {:?}",

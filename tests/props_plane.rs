@@ -1,6 +1,7 @@
 //! Ray–plane: the three cases (hit, parallel, in-plane), judged by
 //! `rayoracle::check`, with the exact class asserted where the construction
 //! fixes it.
+#![cfg(feature = "plane")]
 
 mod support;
 

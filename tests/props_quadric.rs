@@ -1,5 +1,6 @@
 //! Ray–quadric: random general quadrics, `α = 0` (one root, or all/none),
 //! lines lying on the surface (`All`), judged by `rayoracle::check`.
+#![cfg(feature = "quadric")]
 
 mod support;
 

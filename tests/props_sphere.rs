@@ -1,6 +1,7 @@
 //! Ray–sphere: none, tangent and two roots, origins inside, spheres behind
 //! the ray, directions of any length, far tiny and huge close spheres, all
 //! judged by `rayoracle::check`.
+#![cfg(feature = "sphere")]
 
 mod support;
 

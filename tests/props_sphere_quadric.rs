@@ -2,6 +2,7 @@
 //! centre and radius `Quadric::from_sphere` is exact, the two exact oracles
 //! solve the same polynomial, and the two references must agree wherever
 //! neither is inside its band.
+#![cfg(all(feature = "sphere", feature = "quadric"))]
 
 mod support;
 

@@ -4,13 +4,21 @@
 
 use glam::Vec3;
 use proptest::prelude::*;
-use rayoracle::Ray;
 use rayoracle::camera::CameraParams;
-use rayoracle::hit::{Intersection, same_bits};
+#[cfg(feature = "plane")]
 use rayoracle::plane::{self, Plane, PlaneHit};
+#[cfg(feature = "quadric")]
 use rayoracle::quadric::{self, Quadric, QuadricHit};
-use rayoracle::ray4::{Ray4, for_each4};
+use rayoracle::ray4::for_each4;
+#[cfg(feature = "sphere")]
 use rayoracle::sphere::{self, Sphere, SphereHit};
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+use rayoracle::{
+    Ray,
+    hit::{Intersection, same_bits},
+    ray4::Ray4,
+};
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 use wide::f32x4;
 
 /// Any f32: every bit pattern, with the interesting ones over-represented.
@@ -31,11 +39,13 @@ fn vec3() -> impl Strategy<Value = Vec3> {
     (any_f32(), any_f32(), any_f32()).prop_map(|(x, y, z)| Vec3::new(x, y, z))
 }
 
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn ray() -> impl Strategy<Value = Ray> {
     (vec3(), vec3()).prop_map(|(o, d)| Ray::new(o, d))
 }
 
 /// Sensible geometry, so packets also hold real hits, tangents and misses.
+#[cfg(feature = "sphere")]
 fn tame_sphere_case() -> impl Strategy<Value = (Ray, Sphere)> {
     (-4i32..4, -4i32..4, -4i32..4, 1i32..4, -3i32..3, -3i32..3).prop_map(
         |(ox, oy, cz, r, dx, dy)| {
@@ -48,6 +58,7 @@ fn tame_sphere_case() -> impl Strategy<Value = (Ray, Sphere)> {
     )
 }
 
+#[cfg(feature = "sphere")]
 fn sphere_case() -> impl Strategy<Value = (Ray, Sphere)> {
     prop_oneof![
         tame_sphere_case(),
@@ -55,6 +66,7 @@ fn sphere_case() -> impl Strategy<Value = (Ray, Sphere)> {
     ]
 }
 
+#[cfg(feature = "plane")]
 fn plane_case() -> impl Strategy<Value = (Ray, Plane)> {
     prop_oneof![
         (-4i32..4, -4i32..4, 0i32..3).prop_map(|(y, dy, axis)| {
@@ -72,6 +84,7 @@ fn plane_case() -> impl Strategy<Value = (Ray, Plane)> {
     ]
 }
 
+#[cfg(feature = "quadric")]
 fn quadric_case() -> impl Strategy<Value = (Ray, Quadric)> {
     let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
     prop_oneof![
@@ -93,6 +106,7 @@ fn same(a: f32, b: f32) -> bool {
     a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan())
 }
 
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn same_opt(a: Option<f32>, hit: bool, t: f32) -> bool {
     match a {
         Some(x) => hit && same(x, t),
@@ -100,12 +114,15 @@ fn same_opt(a: Option<f32>, hit: bool, t: f32) -> bool {
     }
 }
 
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 const T_MIN: f32 = 0.0;
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 const T_MAX: f32 = 1e30;
 
 proptest! {
     #![proptest_config(ProptestConfig { cases: 2048, ..ProptestConfig::default() })]
 
+    #[cfg(feature = "sphere")]
     #[test]
     fn sphere_lanes_equal_the_reference(cases in prop::array::uniform4(sphere_case())) {
         let r4 = Ray4::from_rays(cases.map(|c| c.0));
@@ -120,6 +137,7 @@ proptest! {
         }
     }
 
+    #[cfg(feature = "plane")]
     #[test]
     fn plane_lanes_equal_the_reference(cases in prop::array::uniform4(plane_case())) {
         let r4 = Ray4::from_rays(cases.map(|c| c.0));
@@ -134,6 +152,7 @@ proptest! {
         }
     }
 
+    #[cfg(feature = "quadric")]
     #[test]
     fn quadric_lanes_equal_the_reference(cases in prop::array::uniform4(quadric_case())) {
         let r4 = Ray4::from_rays(cases.map(|c| c.0));
@@ -169,6 +188,7 @@ proptest! {
 
     /// Tails of 1 to 3 rays: the helper must give exactly one result per ray,
     /// equal to the reference, whatever the length.
+    #[cfg(feature = "sphere")]
     #[test]
     fn slices_of_any_length_match_ray_by_ray(cases in prop::collection::vec(sphere_case(), 1..12)) {
         let sphere = cases[0].1;
