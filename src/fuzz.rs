@@ -474,4 +474,6 @@ pub const TARGETS: &[(&str, Check)] = &[
     #[cfg(feature = "quadric")]
     ("quadric", quadric),
     ("eval_line", eval_line),
+    #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+    ("scene", crate::scene::fuzz::check),
 ];

@@ -37,6 +37,8 @@
 
 mod error;
 mod file;
+#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+pub mod fuzz;
 
 pub use error::SceneError;
 
@@ -302,7 +304,9 @@ fn located(path: String, inner: serde_json::Error) -> SceneError {
     SceneError {
         file: None,
         line: (line > 0).then_some(line),
-        column: (line > 0).then_some(column),
+        // serde_json says column 0 for an error before the first character
+        // of a line (an empty file); columns here count from 1.
+        column: (line > 0).then_some(column.max(1)),
         field,
         message,
     }
