@@ -28,13 +28,18 @@ fn decode(bytes: &[u8]) -> Result<Decoded, String> {
         png::ColorType::Rgb => 3,
         other => return Err(format!("unsupported PNG colour type {other:?}")),
     };
-    let (sample, max): (Box<dyn Fn(&[u8], usize) -> u16>, u16) = match info.bit_depth {
-        png::BitDepth::Eight => (Box::new(|b, i| u16::from(b[i])), 255),
-        png::BitDepth::Sixteen => (
-            Box::new(|b, i| u16::from_be_bytes([b[2 * i], b[2 * i + 1]])),
-            65535,
-        ),
+    let wide = match info.bit_depth {
+        png::BitDepth::Eight => false,
+        png::BitDepth::Sixteen => true,
         other => return Err(format!("unsupported PNG bit depth {other:?}")),
+    };
+    let max: u16 = if wide { 65535 } else { 255 };
+    let sample = |b: &[u8], i: usize| {
+        if wide {
+            u16::from_be_bytes([b[2 * i], b[2 * i + 1]])
+        } else {
+            u16::from(b[i])
+        }
     };
     let n = w as usize * h as usize;
     let samples: Vec<Vec<u16>> = (0..n)
@@ -121,6 +126,7 @@ impl core::fmt::Display for Comparison {
 /// sizes are shown side by side with an all-white heat map.
 ///
 /// ```
+/// # #[cfg(feature = "sphere")] {
 /// use rayoracle::render::{Channels, Path, Plan, render, diff::diff_png};
 /// use rayoracle::scene::Scene;
 /// let s = Scene::parse(r#"{"camera": {"position": [0, 0, 0], "dir": [0, 0, -1],
@@ -133,6 +139,7 @@ impl core::fmt::Display for Comparison {
 /// assert!(c.differing > 0 && c.differing < 48);
 /// assert_eq!(&png[1..4], b"PNG");
 /// assert_eq!(diff_png(&a, &a).unwrap().1.differing, 0);
+/// # }
 /// ```
 pub fn diff_png(old: &[u8], new: &[u8]) -> Result<(Vec<u8>, Comparison), String> {
     let a = decode(old).map_err(|e| format!("old image: {e}"))?;

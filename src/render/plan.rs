@@ -25,6 +25,7 @@ use crate::sphere::{Sphere, x4::Sphere4};
 /// file order; on equal `t` the lower number wins.
 ///
 /// ```
+/// # #[cfg(feature = "sphere")] {
 /// use rayoracle::render::{Channels, Plan};
 /// use rayoracle::scene::Scene;
 /// let s = Scene::parse(r#"{"camera": {"position": [0, 0, 0], "dir": [0, 0, -1],
@@ -32,6 +33,7 @@ use crate::sphere::{Sphere, x4::Sphere4};
 ///     "spheres": [{"id": 1, "center": [0, 0, -3], "radius": 1}]}"#).unwrap();
 /// let plan = Plan::compile(&s, Channels::DEPTH).unwrap();
 /// assert_eq!(plan.kinds(), vec!["sphere"]);
+/// # }
 /// ```
 #[derive(Clone, Debug)]
 pub struct Plan {
@@ -157,6 +159,7 @@ impl Plan {
     /// renders the same frames as [`Plan::compile`] with [`Channels::ALL`].
     ///
     /// ```
+    /// # #[cfg(feature = "sphere")] {
     /// use rayoracle::render::{Channels, Path, Plan, render};
     /// use rayoracle::scene::Scene;
     /// let s = Scene::parse(r#"{"camera": {"position": [0, 0, 0], "dir": [0, 0, -1],
@@ -165,6 +168,7 @@ impl Plan {
     /// let a = render(&Plan::everything(&s).unwrap(), Path::X4);
     /// let b = render(&Plan::compile(&s, Channels::ALL).unwrap(), Path::X4);
     /// assert!(a.same_bits(&b));
+    /// # }
     /// ```
     pub fn everything(scene: &Scene) -> Result<Plan, SceneError> {
         let mut plan = Plan::compile(scene, Channels::ALL)?;
@@ -197,12 +201,14 @@ impl Plan {
     /// The primitive kinds the plan runs, in object order.
     ///
     /// ```
+    /// # #[cfg(feature = "plane")] {
     /// use rayoracle::render::{Channels, Plan};
     /// use rayoracle::scene::Scene;
     /// let s = Scene::parse(r#"{"camera": {"position": [0, 0, 0], "dir": [0, 0, -1],
     ///     "up": [0, 1, 0], "angle": 1, "res": [4, 3]},
     ///     "planes": [{"id": 1, "point": [0, -1, 0], "normal": [0, 1, 0]}]}"#).unwrap();
     /// assert_eq!(Plan::compile(&s, Channels::DEPTH).unwrap().kinds(), vec!["plane"]);
+    /// # }
     /// ```
     pub fn kinds(&self) -> Vec<&'static str> {
         #[allow(unused_mut)] // Empty when every kind is compiled out.

@@ -3,9 +3,12 @@
 //!
 //! [`Camera::ray`]: crate::camera::Camera::ray
 
-use super::plan::{Object, Plan};
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+use super::plan::Object;
+use super::plan::Plan;
 use super::{Frame, counters, normal};
 use crate::Ray;
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 use crate::hit::Intersection;
 
 /// Renders rows `rows` of `plan` into `frame`, calling `on_row` after each.
@@ -47,27 +50,30 @@ pub(super) fn render_rows(
 /// plus one (0 for none). A later object replaces an earlier one only when
 /// strictly nearer.
 fn nearest(plan: &Plan, ray: &Ray) -> (f32, u32) {
+    #[allow(unused_mut)] // Nothing to update with no kind compiled in.
     let mut n = Nearest {
         t: f32::INFINITY,
         who: 0,
     };
+    // With no kind compiled in there is nothing to dispatch on.
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
     if let Some(objects) = &plan.generic {
         for (i, o) in objects.iter().enumerate() {
-            let t = match o {
+            let t = match *o {
                 #[cfg(feature = "plane")]
                 Object::Plane(p, _) => {
                     counters::bump(counters::PLANE);
-                    crate::plane::reference::intersect(ray, p).nearest(0.0, n.t)
+                    crate::plane::reference::intersect(ray, &p).nearest(0.0, n.t)
                 }
                 #[cfg(feature = "sphere")]
                 Object::Sphere(s, _) => {
                     counters::bump(counters::SPHERE);
-                    crate::sphere::reference::intersect(ray, s).nearest(0.0, n.t)
+                    crate::sphere::reference::intersect(ray, &s).nearest(0.0, n.t)
                 }
                 #[cfg(feature = "quadric")]
                 Object::Quadric(q, _) => {
                     counters::bump(counters::QUADRIC);
-                    crate::quadric::reference::intersect(ray, q).nearest(0.0, n.t)
+                    crate::quadric::reference::intersect(ray, &q).nearest(0.0, n.t)
                 }
             };
             n.consider(t, i);

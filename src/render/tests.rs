@@ -1,6 +1,7 @@
 //! What a plan leaves out, proved by counting kernel calls. The counters
 //! exist only in this crate's unit tests ([`super::counters`]).
 
+#[allow(unused_imports)] // Which are used depends on the cargo features.
 use super::counters::{self, NORMAL, PLANE, QUADRIC, SPHERE};
 use super::{Channels, Path, Plan, render};
 use crate::scene::Scene;
@@ -25,23 +26,49 @@ fn spheres_only() -> Scene {
 }
 
 /// The calls one render makes: `[plane, sphere, quadric, normal]`.
+#[allow(dead_code)] // Unused when every kind is compiled out.
 fn calls(plan: &Plan, path: Path) -> [u64; 4] {
     counters::take();
     render(plan, path);
     counters::take()
 }
 
-#[cfg(feature = "sphere")]
-#[test]
-fn a_sphere_only_depth_plan_runs_only_sphere_kernels_and_no_normals() {
-    let plan = Plan::compile(&spheres_only(), Channels::DEPTH).unwrap();
+/// A one-kind scene with `n` objects, rendered depth-only, runs that kind's
+/// kernel once per object per ray (per packet on x4) and nothing else.
+#[allow(dead_code)] // Unused when every kind is compiled out.
+fn only(kind: usize, n: u64, scene: &Scene) {
+    let plan = Plan::compile(scene, Channels::DEPTH).unwrap();
     let pixels = u64::from(W * H);
     let packets = u64::from(W.div_ceil(4) * H);
     let mut want = [0; 4];
-    want[SPHERE] = 2 * pixels;
+    want[kind] = n * pixels;
     assert_eq!(calls(&plan, Path::Reference), want);
-    want[SPHERE] = 2 * packets;
+    want[kind] = n * packets;
     assert_eq!(calls(&plan, Path::X4), want);
+}
+
+#[cfg(feature = "sphere")]
+#[test]
+fn a_sphere_only_depth_plan_runs_only_sphere_kernels_and_no_normals() {
+    only(SPHERE, 2, &spheres_only());
+}
+
+#[cfg(feature = "plane")]
+#[test]
+fn a_plane_only_depth_plan_runs_only_plane_kernels_and_no_normals() {
+    let s = scene(r#""planes": [{"id": 1, "point": [0, -1, 0], "normal": [0, 1, 0]}]"#);
+    only(PLANE, 1, &s);
+}
+
+#[cfg(feature = "quadric")]
+#[test]
+fn a_quadric_only_depth_plan_runs_only_quadric_kernels_and_no_normals() {
+    let s = scene(
+        r#""quadrics": [{"id": 1, "coeffs": [1, 0, 1, 0, 0, 0, 0, 0, 0, -0.25]},
+                        {"id": 2, "coeffs": [1, 1, 0, 0, 0, 0, 0, 0, 0, -9]},
+                        {"id": 3, "coeffs": [0, 1, 0, 0, 0, 0, 0, 0, 0, -4]}]"#,
+    );
+    only(QUADRIC, 3, &s);
 }
 
 #[cfg(feature = "sphere")]

@@ -5,7 +5,9 @@
 //!
 //! [`Camera::ray4`]: crate::camera::Camera::ray4
 
-use super::plan::{Object, Plan};
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+use super::plan::Object;
+use super::plan::Plan;
 use super::{Frame, counters, normal};
 use crate::ray4::Ray4;
 use wide::{f32x4, i32x4};
@@ -52,12 +54,8 @@ pub(super) fn render_rows(
             frame.depth[at..at + lanes].copy_from_slice(&t[..lanes]);
             let who = hit.who.to_array().map(|i| i as u32);
             if ch.id {
-                for l in 0..lanes {
-                    frame.id[at + l] = if who[l] == 0 {
-                        0
-                    } else {
-                        plan.ids[who[l] as usize - 1]
-                    };
+                for (id, &w) in frame.id[at..at + lanes].iter_mut().zip(&who) {
+                    *id = if w == 0 { 0 } else { plan.ids[w as usize - 1] };
                 }
             }
             if ch.normal {
@@ -74,28 +72,31 @@ pub(super) fn render_rows(
 #[inline(always)]
 fn nearest(plan: &Plan, rays: &Ray4) -> Nearest {
     let zero = f32x4::ZERO;
+    #[allow(unused_mut)] // Nothing to update with no kind compiled in.
     let mut n = Nearest {
         t: f32x4::splat(f32::INFINITY),
         who: i32x4::ZERO,
         track: plan.channels.tracks_objects(),
     };
+    // With no kind compiled in there is nothing to dispatch on.
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
     if let Some(objects) = &plan.generic {
         for (i, o) in objects.iter().enumerate() {
-            let hit = match o {
+            let hit = match *o {
                 #[cfg(feature = "plane")]
                 Object::Plane(_, p) => {
                     counters::bump(counters::PLANE);
-                    crate::plane::x4::intersect(rays, p).nearest(zero, n.t)
+                    crate::plane::x4::intersect(rays, &p).nearest(zero, n.t)
                 }
                 #[cfg(feature = "sphere")]
                 Object::Sphere(_, s) => {
                     counters::bump(counters::SPHERE);
-                    crate::sphere::x4::intersect(rays, s).nearest(zero, n.t)
+                    crate::sphere::x4::intersect(rays, &s).nearest(zero, n.t)
                 }
                 #[cfg(feature = "quadric")]
                 Object::Quadric(_, q) => {
                     counters::bump(counters::QUADRIC);
-                    crate::quadric::x4::intersect(rays, q).nearest(zero, n.t)
+                    crate::quadric::x4::intersect(rays, &q).nearest(zero, n.t)
                 }
             };
             n.consider(hit, i);
