@@ -34,9 +34,11 @@
 //!   `κ = Σ|dᵢnᵢ| / |d·n| + Σ|(aᵢ−oᵢ)nᵢ| / |(a−o)·n|` is below `2¹⁸`; in
 //!   general within `1 + κ·2⁻¹⁸` ulps ([`ROOT_ULPS`], asserted by the tests).
 
+pub mod double;
 pub mod exact;
 pub mod kernel;
 pub mod reference;
+pub mod textbook;
 pub mod x4;
 
 use crate::hit::{Intersection, Roots};
