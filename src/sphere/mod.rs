@@ -56,9 +56,11 @@
 //!   ([`condition`]); for every well-conditioned root that is 1 ulp, and the
 //!   tests find 0 in almost all cases.
 
+pub mod double;
 pub mod exact;
 pub mod kernel;
 pub mod reference;
+pub mod textbook;
 pub mod x4;
 
 use crate::Ray;
