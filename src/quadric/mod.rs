@@ -49,9 +49,11 @@
 //! by the sums of their terms' magnitudes after the prescaling, must be 0 or
 //! within `[2⁻¹⁰⁰, 2¹⁰⁰]`.
 
+pub mod double;
 pub mod exact;
 pub mod kernel;
 pub mod reference;
+pub mod textbook;
 pub mod x4;
 
 use crate::Ray;
