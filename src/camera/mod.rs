@@ -41,9 +41,11 @@
 //! `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|` of the oracle's (f64) value: the terms may
 //! cancel, so the bound is relative to their size, not to the result.
 
+pub mod double;
 pub mod exact;
 pub mod kernel;
 pub mod reference;
+pub mod textbook;
 pub mod x4;
 
 use glam::Vec3;
