@@ -17,6 +17,8 @@ pub mod quadric;
 pub mod ray;
 pub mod ray4;
 pub mod render;
+#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+pub mod report;
 pub mod scene;
 #[cfg(feature = "sphere")]
 pub mod sphere;

@@ -58,7 +58,27 @@ enum Command {
         #[arg(long, value_parser = parse_size)]
         size: Option<[u32; 2]>,
     },
-    // Room for `report`.
+    /// Error against run time on the stiff catalogue (fixtures/stiff/): a
+    /// Markdown table on stdout, optionally JSON rows, SVG plots, Markdown file.
+    #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+    Report {
+        /// 64 cases per family and 5 timed passes (under 30 s).
+        #[arg(long)]
+        quick: bool,
+        /// Also write the rows as a JSON array to FILE.
+        #[arg(long, value_name = "FILE")]
+        json: Option<PathBuf>,
+        /// Also write one SVG plot per kernel: FILE with -KERNEL before its
+        /// extension (report.svg → report-sphere.svg, …).
+        #[arg(long, value_name = "FILE")]
+        svg: Option<PathBuf>,
+        /// Also write the Markdown table to FILE.
+        #[arg(long, value_name = "FILE")]
+        md: Option<PathBuf>,
+        /// The catalogue directory (default: the crate's fixtures/stiff).
+        #[arg(long, value_name = "DIR")]
+        stiff: Option<PathBuf>,
+    },
 }
 
 /// `--size WxH`.
@@ -96,6 +116,20 @@ fn main() -> ExitCode {
             });
             render_command(jobs, &out, path, channel, size)
         }
+        #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+        Some(Command::Report {
+            quick,
+            json,
+            svg,
+            md,
+            stiff,
+        }) => report_command(&ReportArgs {
+            quick,
+            json,
+            svg,
+            md,
+            stiff,
+        }),
         None => {
             let root = Path::new(env!("CARGO_MANIFEST_DIR"));
             let eval = default_job(&root.join("fixtures/cases"), &root.join("out/eval.jsonl"));
@@ -112,10 +146,116 @@ fn main() -> ExitCode {
                 Channels::ALL,
                 None,
             );
+            #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+            let render = {
+                println!(
+                    "\nrayoracle report --quick (error against run time on the stiff catalogue):\n"
+                );
+                let report = report_command(&ReportArgs {
+                    quick: true,
+                    json: None,
+                    svg: None,
+                    md: None,
+                    stiff: None,
+                });
+                render.max(report)
+            };
             eval.max(render)
         }
     };
     ExitCode::from(code)
+}
+
+/// `rayoracle report`'s arguments.
+#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+struct ReportArgs {
+    quick: bool,
+    json: Option<PathBuf>,
+    svg: Option<PathBuf>,
+    md: Option<PathBuf>,
+    stiff: Option<PathBuf>,
+}
+
+/// Runs the report; exit 2 if the catalogue cannot be read or an output
+/// cannot be written.
+#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+fn report_command(args: &ReportArgs) -> u8 {
+    use rayoracle::report::{self, Catalogue, Kernel, Options, Variant};
+    let catalogue = match &args.stiff {
+        Some(dir) => Catalogue::load(dir),
+        None => Catalogue::builtin(),
+    };
+    let catalogue = match catalogue {
+        Ok(c) => c,
+        Err(e) => {
+            eprintln!("rayoracle: {e}");
+            return EXIT_IO;
+        }
+    };
+    let options = if args.quick {
+        Options::QUICK
+    } else {
+        Options::FULL
+    };
+    let steps = (catalogue.families.len() * Variant::ALL.len()) as u64;
+    let bar = indicatif::ProgressBar::new(steps);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "report [{bar:40}] {pos}/{len} family × variant, {eta} left",
+        )
+        .expect("a valid template")
+        .progress_chars("=> "),
+    );
+    let start = std::time::Instant::now();
+    let rows = report::run(&catalogue, options, &mut || bar.inc(1));
+    bar.finish_and_clear();
+    let table = report::markdown(&rows, &catalogue);
+    print!("{table}");
+    println!(
+        "{} families × {} variants in {:.1} s{}",
+        catalogue.families.len(),
+        Variant::ALL.len(),
+        start.elapsed().as_secs_f64(),
+        if args.quick { " (--quick)" } else { "" }
+    );
+    let write = |path: &Path, text: &str| -> Result<(), u8> {
+        if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
+            let _ = std::fs::create_dir_all(parent);
+        }
+        std::fs::write(path, text).map_err(|e| {
+            eprintln!("rayoracle: cannot write {}: {e}", path.display());
+            EXIT_IO
+        })?;
+        println!("wrote {}", path.display());
+        Ok(())
+    };
+    let mut outputs: Vec<(PathBuf, String)> = Vec::new();
+    if let Some(p) = &args.json {
+        let json = serde_json::to_string_pretty(&rows).expect("rows serialise");
+        outputs.push((p.clone(), json + "\n"));
+    }
+    if let Some(p) = &args.md {
+        outputs.push((p.clone(), table.clone()));
+    }
+    if let Some(p) = &args.svg {
+        for kernel in Kernel::ALL {
+            let stem = p
+                .file_stem()
+                .map_or("report".into(), |s| s.to_string_lossy().into_owned());
+            let ext = p
+                .extension()
+                .map_or("svg".into(), |e| e.to_string_lossy().into_owned());
+            let file = p.with_file_name(format!("{stem}-{}.{ext}", kernel.name()));
+            let points = report::points(&rows, &catalogue, kernel);
+            outputs.push((file, report::svg(kernel.name(), &points)));
+        }
+    }
+    for (path, text) in outputs {
+        if let Err(code) = write(&path, &text) {
+            return code;
+        }
+    }
+    EXIT_OK
 }
 
 /// The default scene, compiled in so `rayoracle` runs from anywhere.

@@ -1,0 +1,211 @@
+//! The catalogue of stiff and extreme cases (`fixtures/stiff/`): named
+//! families of `eval` case lines, each documented with why it is stiff.
+
+use crate::case::{Case, parse_line};
+use serde::Deserialize;
+use std::path::Path;
+
+/// The four kernels a family can exercise.
+///
+/// ```
+/// use rayoracle::report::Kernel;
+/// assert_eq!(Kernel::parse("sphere"), Some(Kernel::Sphere));
+/// assert_eq!(Kernel::Camera.name(), "camera");
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Kernel {
+    /// The perspective camera.
+    Camera,
+    /// Ray–plane.
+    Plane,
+    /// Ray–sphere.
+    Sphere,
+    /// Ray–quadric.
+    Quadric,
+}
+
+impl Kernel {
+    /// Every kernel, in report order.
+    pub const ALL: [Kernel; 4] = [
+        Kernel::Sphere,
+        Kernel::Plane,
+        Kernel::Quadric,
+        Kernel::Camera,
+    ];
+
+    /// The kernel's name, as in case lines.
+    ///
+    /// ```
+    /// use rayoracle::report::Kernel;
+    /// assert_eq!(Kernel::Quadric.name(), "quadric");
+    /// ```
+    pub fn name(self) -> &'static str {
+        match self {
+            Kernel::Camera => "camera",
+            Kernel::Plane => "plane",
+            Kernel::Sphere => "sphere",
+            Kernel::Quadric => "quadric",
+        }
+    }
+
+    /// The kernel of a name.
+    ///
+    /// ```
+    /// use rayoracle::report::Kernel;
+    /// assert_eq!(Kernel::parse("cube"), None);
+    /// ```
+    pub fn parse(name: &str) -> Option<Kernel> {
+        Kernel::ALL.into_iter().find(|k| k.name() == name)
+    }
+}
+
+/// One family of the catalogue.
+///
+/// ```
+/// use rayoracle::report::{Catalogue, Kernel};
+/// let c = Catalogue::builtin().unwrap();
+/// let far = c.family("sphere/far-tiny").unwrap();
+/// assert_eq!(far.kernel, Kernel::Sphere);
+/// assert!(far.well_conditioned && !far.cases.is_empty());
+/// ```
+#[derive(Clone, Debug)]
+pub struct Family {
+    /// `kernel/name`, as in the cases' `family` field.
+    pub name: String,
+    /// The kernel it exercises.
+    pub kernel: Kernel,
+    /// Whether its roots are well-conditioned (judged by a fixed bit
+    /// budget) or ill-conditioned (judged by a condition-aware bound).
+    pub well_conditioned: bool,
+    /// Why it is stiff.
+    pub why: String,
+    /// Its cases, in file order.
+    pub cases: Vec<Case>,
+}
+
+/// The stiff catalogue: families in the order of `families.json`.
+///
+/// ```
+/// use rayoracle::report::Catalogue;
+/// let c = Catalogue::builtin().unwrap();
+/// assert!(c.families.len() >= 20);
+/// assert!(c.quick(8).families.iter().all(|f| f.cases.len() <= 8));
+/// ```
+#[derive(Clone, Debug)]
+pub struct Catalogue {
+    /// The families.
+    pub families: Vec<Family>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FamilyEntry {
+    family: String,
+    kernel: String,
+    conditioning: String,
+    why: String,
+}
+
+impl Catalogue {
+    /// The crate's own catalogue, `fixtures/stiff/` of this source tree.
+    pub fn builtin() -> Result<Catalogue, String> {
+        Catalogue::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/stiff"))
+    }
+
+    /// Loads `DIR/families.json` and every `DIR/*.jsonl`. Every case must
+    /// parse and name a listed family of its own kind; every family must
+    /// have cases. Errors name the file and line.
+    pub fn load(dir: &Path) -> Result<Catalogue, String> {
+        let index = dir.join("families.json");
+        let text = std::fs::read_to_string(&index)
+            .map_err(|e| format!("{}: cannot read: {e}", index.display()))?;
+        let entries: Vec<FamilyEntry> =
+            serde_json::from_str(&text).map_err(|e| format!("{}: {e}", index.display()))?;
+        let mut families = Vec::new();
+        for e in entries {
+            let kernel = Kernel::parse(&e.kernel).ok_or_else(|| {
+                format!(
+                    "{}: family {}: unknown kernel {}",
+                    index.display(),
+                    e.family,
+                    e.kernel
+                )
+            })?;
+            let well_conditioned = match e.conditioning.as_str() {
+                "well" => true,
+                "ill" => false,
+                other => {
+                    return Err(format!(
+                        "{}: family {}: conditioning \"{other}\" is neither \"well\" nor \"ill\"",
+                        index.display(),
+                        e.family
+                    ));
+                }
+            };
+            families.push(Family {
+                name: e.family,
+                kernel,
+                well_conditioned,
+                why: e.why,
+                cases: Vec::new(),
+            });
+        }
+        let mut files: Vec<_> = std::fs::read_dir(dir)
+            .map_err(|e| format!("{}: {e}", dir.display()))?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.extension().is_some_and(|x| x == "jsonl"))
+            .collect();
+        files.sort();
+        for file in files {
+            let text = std::fs::read_to_string(&file)
+                .map_err(|e| format!("{}: cannot read: {e}", file.display()))?;
+            for (i, line) in text.lines().enumerate() {
+                if line.trim().is_empty() {
+                    continue;
+                }
+                let at = || format!("{}:{}", file.display(), i + 1);
+                let parsed = parse_line(line).map_err(|e| format!("{}: {e}", at()))?;
+                let name = parsed
+                    .family
+                    .ok_or_else(|| format!("{}: no family", at()))?;
+                let family = families
+                    .iter_mut()
+                    .find(|f| f.name == name)
+                    .ok_or_else(|| format!("{}: family {name} is not in families.json", at()))?;
+                if parsed.case.kind() != family.kernel.name() {
+                    return Err(format!(
+                        "{}: a {} case in the {} family {name}",
+                        at(),
+                        parsed.case.kind(),
+                        family.kernel.name()
+                    ));
+                }
+                family.cases.push(parsed.case);
+            }
+        }
+        if let Some(f) = families.iter().find(|f| f.cases.is_empty()) {
+            return Err(format!("{}: family {} has no cases", dir.display(), f.name));
+        }
+        Ok(Catalogue { families })
+    }
+
+    /// The family of a name.
+    pub fn family(&self, name: &str) -> Option<&Family> {
+        self.families.iter().find(|f| f.name == name)
+    }
+
+    /// The same catalogue with at most `n` cases per family (the first
+    /// ones), for `--quick`.
+    pub fn quick(&self, n: usize) -> Catalogue {
+        Catalogue {
+            families: self
+                .families
+                .iter()
+                .map(|f| Family {
+                    cases: f.cases.iter().take(n).cloned().collect(),
+                    ..f.clone()
+                })
+                .collect(),
+        }
+    }
+}

@@ -1,0 +1,294 @@
+//! `rayoracle report`: error against run time, for every kernel × variant ×
+//! family of the stiff catalogue (`fixtures/stiff/`).
+//!
+//! For each family and each [`Variant`] the report gives:
+//!
+//! * **bits of error** against the exact oracle, `log₂(ulps + 1)` of the
+//!   worst root (camera: component, in ulps of its scale `Sᵢ`, see
+//!   [`case_error`]) of each case, over the cases whose class matches:
+//!   the maximum, the 99th percentile and the mean;
+//! * **class mismatches**: cases classified differently from the oracle
+//!   (for ill-conditioned families, the tests judge these against the
+//!   documented band, [`crate::check`]);
+//! * **ns per ray**: the median over repeated passes of the time per case
+//!   of one pass, every variant timed in the same run, one `black_box`ed
+//!   call per case (per packet of four for x4), one core. A camera case
+//!   builds its camera and then one ray, so the camera's figures are mostly
+//!   construction.
+//!
+//! Each kernel also gets a point per variant on an error-against-time plane
+//! ([`Point`]): time is the mean of the family medians; error is the worst
+//! maximum over the *well-conditioned* families, a misclassified case
+//! counting as 32 bits (the whole value lost). The Pareto front is the set
+//! of variants no other variant beats on both.
+
+mod catalogue;
+mod error;
+mod plot;
+mod variant;
+
+pub use catalogue::{Catalogue, Family, Kernel};
+pub use error::{CaseError, case_error};
+pub use plot::svg;
+pub use variant::Variant;
+
+use serde::Serialize;
+use variant::Batch;
+
+/// One kernel × variant × family line of the report (also its JSON form).
+///
+/// ```
+/// use rayoracle::report::Row;
+/// let r = Row { kernel: "sphere".into(), variant: "x4".into(), family: "sphere/far-tiny".into(),
+///     cases: 4, max_bits: 1.0, p99_bits: 1.0, mean_bits: 0.25, class_mismatches: 0, ns_per_ray: 20.0 };
+/// assert!(serde_json::to_string(&r).unwrap().starts_with(r#"{"kernel":"sphere","variant":"x4""#));
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Row {
+    /// `sphere`, `plane`, `quadric` or `camera`.
+    pub kernel: String,
+    /// [`Variant::name`].
+    pub variant: String,
+    /// The family, `kernel/name`.
+    pub family: String,
+    /// Cases in the family.
+    pub cases: usize,
+    /// Worst bits of error over the cases whose class matches.
+    pub max_bits: f64,
+    /// 99th percentile of the same.
+    pub p99_bits: f64,
+    /// Mean of the same.
+    pub mean_bits: f64,
+    /// Cases classified differently from the oracle.
+    pub class_mismatches: usize,
+    /// Median time per case, in nanoseconds.
+    pub ns_per_ray: f64,
+}
+
+/// How much to run.
+///
+/// ```
+/// use rayoracle::report::Options;
+/// assert!(Options::QUICK.cases_per_family < Options::FULL.cases_per_family);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Options {
+    /// At most this many cases of each family (the first ones).
+    pub cases_per_family: usize,
+    /// Timed passes per family and variant; the median is reported.
+    pub passes: usize,
+}
+
+impl Options {
+    /// `--quick`: 64 cases per family, 7 passes.
+    pub const QUICK: Options = Options {
+        cases_per_family: 64,
+        passes: 7,
+    };
+    /// The default: every case, 21 passes.
+    pub const FULL: Options = Options {
+        cases_per_family: usize::MAX,
+        passes: 21,
+    };
+}
+
+/// The accuracy half of a row: every case of `family` under `variant`,
+/// against the oracle. No timing; the tests use this directly.
+///
+/// ```
+/// use rayoracle::report::{Catalogue, Variant, accuracy};
+/// let c = Catalogue::builtin().unwrap().quick(16);
+/// let row = accuracy(c.family("sphere/far-tiny").unwrap(), Variant::Reference);
+/// assert_eq!((row.cases, row.class_mismatches), (16, 0));
+/// assert!(row.max_bits <= 1.0);
+/// ```
+pub fn accuracy(family: &Family, variant: Variant) -> Row {
+    let batch = Batch::new(family.kernel, &family.cases);
+    let got = variant::outcomes(variant, &batch);
+    let exact = variant::outcomes(Variant::Exact, &batch);
+    let mut bits = Vec::new();
+    let mut mismatches = 0;
+    for ((case, e), g) in family.cases.iter().zip(&exact).zip(&got) {
+        match case_error(case, e, g) {
+            CaseError::NotCompared => {}
+            CaseError::Mismatch => mismatches += 1,
+            CaseError::Bits(b) => bits.push(b),
+        }
+    }
+    bits.sort_by(f64::total_cmp);
+    let max = bits.last().copied().unwrap_or(0.0);
+    let p99 = if bits.is_empty() {
+        0.0
+    } else {
+        bits[(bits.len() * 99).div_ceil(100).max(1) - 1]
+    };
+    let mean = if bits.is_empty() {
+        0.0
+    } else {
+        bits.iter().sum::<f64>() / bits.len() as f64
+    };
+    Row {
+        kernel: family.kernel.name().into(),
+        variant: variant.name().into(),
+        family: family.name.clone(),
+        cases: family.cases.len(),
+        max_bits: max,
+        p99_bits: p99,
+        mean_bits: mean,
+        class_mismatches: mismatches,
+        ns_per_ray: f64::NAN,
+    }
+}
+
+/// The median time per ray of `passes` timed passes of `variant` over
+/// `family`. Each pass repeats the family's cases enough times to last
+/// about 0.2 ms (calibrated by one untimed pass), so that the clock's
+/// resolution and the call overhead of the timer do not show.
+pub fn time_per_case(family: &Family, variant: Variant, passes: usize) -> f64 {
+    let batch = Batch::new(family.kernel, &family.cases);
+    let once = variant::time_pass(variant, &batch, 1) * batch.len().max(1) as f64;
+    let reps = ((2e5 / once.max(1.0)).ceil() as usize).clamp(1, 10_000);
+    let mut t: Vec<f64> = (0..passes.max(1))
+        .map(|_| variant::time_pass(variant, &batch, reps))
+        .collect();
+    t.sort_by(f64::total_cmp);
+    t[t.len() / 2]
+}
+
+/// The whole report: for every family (in catalogue order) every variant,
+/// accuracy and time. `on_step` is called after each family × variant.
+pub fn run(catalogue: &Catalogue, options: Options, on_step: &mut dyn FnMut()) -> Vec<Row> {
+    let catalogue = catalogue.quick(options.cases_per_family);
+    let mut rows = Vec::new();
+    for family in &catalogue.families {
+        for variant in Variant::ALL {
+            let mut row = accuracy(family, variant);
+            row.ns_per_ray = time_per_case(family, variant, options.passes);
+            rows.push(row);
+            on_step();
+        }
+    }
+    rows
+}
+
+/// One variant of one kernel on the error-against-time plane.
+///
+/// ```
+/// use rayoracle::report::{Point, pareto};
+/// let p = |v: &str, ns, bits| Point { variant: v.into(), ns_per_ray: ns, error_bits: bits, mismatches: 0, front: false };
+/// let pts = pareto(vec![p("a", 1.0, 20.0), p("b", 5.0, 1.0), p("c", 6.0, 2.0), p("d", 50.0, 0.0)]);
+/// let front: Vec<_> = pts.iter().filter(|p| p.front).map(|p| p.variant.as_str()).collect();
+/// assert_eq!(front, vec!["a", "b", "d"]);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Point {
+    /// The variant.
+    pub variant: String,
+    /// Mean over the families of the median time per case.
+    pub ns_per_ray: f64,
+    /// Worst maximum over the well-conditioned families; a family with a
+    /// misclassified case counts 32.
+    pub error_bits: f64,
+    /// Misclassified cases in the well-conditioned families.
+    pub mismatches: usize,
+    /// On the Pareto front: no other point is at least as good on both
+    /// axes and better on one.
+    pub front: bool,
+}
+
+/// Marks the Pareto front of `points`.
+pub fn pareto(mut points: Vec<Point>) -> Vec<Point> {
+    let all = points.clone();
+    for p in &mut points {
+        p.front = !all.iter().any(|q| {
+            q.ns_per_ray <= p.ns_per_ray
+                && q.error_bits <= p.error_bits
+                && (q.ns_per_ray < p.ns_per_ray || q.error_bits < p.error_bits)
+        });
+    }
+    points
+}
+
+/// The points of one kernel, front marked.
+pub fn points(rows: &[Row], catalogue: &Catalogue, kernel: Kernel) -> Vec<Point> {
+    let well = |family: &str| catalogue.family(family).is_some_and(|f| f.well_conditioned);
+    let pts = Variant::ALL
+        .into_iter()
+        .filter_map(|v| {
+            let mine: Vec<&Row> = rows
+                .iter()
+                .filter(|r| r.kernel == kernel.name() && r.variant == v.name())
+                .collect();
+            if mine.is_empty() {
+                return None;
+            }
+            let ns = mine.iter().map(|r| r.ns_per_ray).sum::<f64>() / mine.len() as f64;
+            let wells = mine.iter().filter(|r| well(&r.family));
+            let error_bits = wells
+                .clone()
+                .map(|r| {
+                    if r.class_mismatches > 0 {
+                        32.0
+                    } else {
+                        r.max_bits
+                    }
+                })
+                .fold(0.0, f64::max);
+            Some(Point {
+                variant: v.name().into(),
+                ns_per_ray: ns,
+                error_bits,
+                mismatches: wells.map(|r| r.class_mismatches).sum(),
+                front: false,
+            })
+        })
+        .collect();
+    pareto(pts)
+}
+
+/// The rows as a Markdown table, one section per kernel, with the Pareto
+/// points of each kernel under it.
+pub fn markdown(rows: &[Row], catalogue: &Catalogue) -> String {
+    let mut out = String::new();
+    for kernel in Kernel::ALL {
+        let mine: Vec<&Row> = rows.iter().filter(|r| r.kernel == kernel.name()).collect();
+        if mine.is_empty() {
+            continue;
+        }
+        out += &format!("### {}\n\n", kernel.name());
+        out += "| family | cond. | variant | cases | max bits | p99 bits | mean bits | class mismatches | ns/ray |\n";
+        out += "|---|---|---|---:|---:|---:|---:|---:|---:|\n";
+        for r in mine {
+            let cond = match catalogue.family(&r.family) {
+                Some(f) if f.well_conditioned => "well",
+                Some(_) => "ill",
+                None => "?",
+            };
+            out += &format!(
+                "| {} | {cond} | {} | {} | {:.2} | {:.2} | {:.3} | {} | {:.1} |\n",
+                r.family,
+                r.variant,
+                r.cases,
+                r.max_bits,
+                r.p99_bits,
+                r.mean_bits,
+                r.class_mismatches,
+                r.ns_per_ray
+            );
+        }
+        out += "\nError against time (well-conditioned families; ★ = Pareto front):\n\n";
+        out += "| variant | ns/ray (mean) | worst max bits | mismatches | front |\n|---|---:|---:|---:|---|\n";
+        for p in points(rows, catalogue, kernel) {
+            out += &format!(
+                "| {} | {:.1} | {:.2} | {} | {} |\n",
+                p.variant,
+                p.ns_per_ray,
+                p.error_bits,
+                p.mismatches,
+                if p.front { "★" } else { "" }
+            );
+        }
+        out += "\n";
+    }
+    out
+}

@@ -1,0 +1,335 @@
+//! The implementations `rayoracle report` compares, run over a family's
+//! cases for their results and for their time.
+
+use super::Kernel;
+use crate::Ray;
+use crate::camera::{self, CameraParams};
+use crate::case::Case;
+use crate::eval::Outcome;
+use crate::plane::{self, Plane, x4::Plane4};
+use crate::quadric::{self, Quadric, x4::Quadric4};
+use crate::ray4::Ray4;
+use crate::sphere::{self, Sphere, x4::Sphere4};
+use std::hint::black_box;
+use std::time::Instant;
+
+/// One implementation of every kernel.
+///
+/// ```
+/// use rayoracle::report::Variant;
+/// assert_eq!(Variant::parse("f64"), Some(Variant::F64));
+/// assert_eq!(Variant::ALL.map(|v| v.name()), ["textbook", "reference", "x4", "f64", "exact"]);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Variant {
+    /// The seed's formulas, algebra corrected, no numerical care, in f32
+    /// (`*::textbook`).
+    Textbook,
+    /// The scalar reference (`*::reference`).
+    Reference,
+    /// The four-lane kernels (`*::x4`), four cases per packet.
+    X4,
+    /// The reference's formulation in plain f64, rounded to f32 once
+    /// (`*::double`).
+    F64,
+    /// The exact oracle itself (`*::exact`; f64 for the camera).
+    Exact,
+}
+
+impl Variant {
+    /// Every variant, in report order.
+    pub const ALL: [Variant; 5] = [
+        Variant::Textbook,
+        Variant::Reference,
+        Variant::X4,
+        Variant::F64,
+        Variant::Exact,
+    ];
+
+    /// The name used in tables and JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Variant::Textbook => "textbook",
+            Variant::Reference => "reference",
+            Variant::X4 => "x4",
+            Variant::F64 => "f64",
+            Variant::Exact => "exact",
+        }
+    }
+
+    /// The variant of a name.
+    pub fn parse(name: &str) -> Option<Variant> {
+        Variant::ALL.into_iter().find(|v| v.name() == name)
+    }
+}
+
+/// A family's cases, unpacked by kind (and packed four-wide for x4), so
+/// that timing measures the kernels and not a dispatch per case.
+pub(super) enum Batch {
+    Plane(Vec<(Ray, Plane)>),
+    Sphere(Vec<(Ray, Sphere)>),
+    Quadric(Vec<(Ray, Quadric)>),
+    Camera(Vec<(CameraParams, [u32; 2])>),
+}
+
+impl Batch {
+    pub(super) fn new(kernel: Kernel, cases: &[Case]) -> Batch {
+        fn pick<T>(cases: &[Case], f: impl Fn(&Case) -> Option<T>) -> Vec<T> {
+            cases.iter().filter_map(f).collect()
+        }
+        match kernel {
+            Kernel::Plane => Batch::Plane(pick(cases, |c| match c {
+                Case::Plane(r, p) => Some((*r, *p)),
+                _ => None,
+            })),
+            Kernel::Sphere => Batch::Sphere(pick(cases, |c| match c {
+                Case::Sphere(r, s) => Some((*r, *s)),
+                _ => None,
+            })),
+            Kernel::Quadric => Batch::Quadric(pick(cases, |c| match c {
+                Case::Quadric(r, q) => Some((*r, *q)),
+                _ => None,
+            })),
+            Kernel::Camera => Batch::Camera(pick(cases, |c| match c {
+                Case::Camera(p, px) => Some((*p, *px)),
+                _ => None,
+            })),
+        }
+    }
+
+    pub(super) fn len(&self) -> usize {
+        match self {
+            Batch::Plane(v) => v.len(),
+            Batch::Sphere(v) => v.len(),
+            Batch::Quadric(v) => v.len(),
+            Batch::Camera(v) => v.len(),
+        }
+    }
+}
+
+/// Groups of four, the last padded with its own last element.
+fn fours<T: Copy>(v: &[T]) -> Vec<[T; 4]> {
+    v.chunks(4)
+        .map(|c| core::array::from_fn(|i| c[i.min(c.len() - 1)]))
+        .collect()
+}
+
+fn camera_outcome(r: Result<Ray, camera::CameraError>) -> Outcome {
+    r.map_or_else(|e| Outcome::Error(e.to_string()), Outcome::Ray)
+}
+
+/// The x4 camera: the reference construction, then one `ray4` per pixel
+/// (the four lanes are four pixels of the same camera, as a renderer runs
+/// it; lane 0 is the case's pixel).
+fn camera_x4(p: &CameraParams, [x, y]: [u32; 2]) -> Result<Ray, camera::CameraError> {
+    let cam = p.build()?;
+    let [w, h] = p.res;
+    let px = [0, 1, 2, 3].map(|i| [(x + i).min(w - 1), y.min(h - 1)]);
+    Ok(cam.ray4(px).to_rays()[0])
+}
+
+macro_rules! per_kind {
+    ($batch:expr, $v:expr, |$ray:ident, $prim:ident| $plane:expr, $sphere:expr, $quadric:expr, |$p:ident, $px:ident| $camera:expr) => {
+        match $batch {
+            Batch::Plane(v) => v.iter().map(|&($ray, $prim)| $plane).collect(),
+            Batch::Sphere(v) => v.iter().map(|&($ray, $prim)| $sphere).collect(),
+            Batch::Quadric(v) => v.iter().map(|&($ray, $prim)| $quadric).collect(),
+            Batch::Camera(v) => v.iter().map(|&($p, $px)| $camera).collect(),
+        }
+    };
+}
+
+/// Every case's outcome under `variant`, in order.
+pub(super) fn outcomes(variant: Variant, batch: &Batch) -> Vec<Outcome> {
+    match variant {
+        Variant::Textbook => per_kind!(
+            batch,
+            variant,
+            |r, p| Outcome::hit(&plane::textbook::intersect(&r, &p)),
+            Outcome::hit(&sphere::textbook::intersect(&r, &p)),
+            Outcome::hit(&quadric::textbook::intersect(&r, &p)),
+            |p, px| camera_outcome(camera::textbook::Camera::new(&p).map(|c| c.ray(px[0], px[1])))
+        ),
+        Variant::Reference => per_kind!(
+            batch,
+            variant,
+            |r, p| Outcome::hit(&plane::reference::intersect(&r, &p)),
+            Outcome::hit(&sphere::reference::intersect(&r, &p)),
+            Outcome::hit(&quadric::reference::intersect(&r, &p)),
+            |p, px| camera_outcome(p.build().map(|c| c.ray(px[0], px[1])))
+        ),
+        Variant::F64 => per_kind!(
+            batch,
+            variant,
+            |r, p| Outcome::hit(&plane::double::intersect(&r, &p)),
+            Outcome::hit(&sphere::double::intersect(&r, &p)),
+            Outcome::hit(&quadric::double::intersect(&r, &p)),
+            |p, px| camera_outcome(camera::double::Camera::new(&p).map(|c| c.ray(px[0], px[1])))
+        ),
+        Variant::Exact => per_kind!(
+            batch,
+            variant,
+            |r, p| crate::eval::exact(&Case::Plane(r, p)),
+            crate::eval::exact(&Case::Sphere(r, p)),
+            crate::eval::exact(&Case::Quadric(r, p)),
+            |p, px| crate::eval::exact(&Case::Camera(p, px))
+        ),
+        Variant::X4 => x4_outcomes(batch),
+    }
+}
+
+fn x4_outcomes(batch: &Batch) -> Vec<Outcome> {
+    fn run<P: Copy, P4, H: crate::hit::Intersection>(
+        v: &[(Ray, P)],
+        pack: impl Fn([P; 4]) -> P4,
+        kernel: impl Fn(&Ray4, &P4) -> [H; 4],
+    ) -> Vec<Outcome> {
+        let mut out: Vec<Outcome> = fours(v)
+            .into_iter()
+            .flat_map(|g| kernel(&Ray4::from_rays(g.map(|c| c.0)), &pack(g.map(|c| c.1))))
+            .map(|h| Outcome::hit(&h))
+            .collect();
+        out.truncate(v.len());
+        out
+    }
+    match batch {
+        Batch::Plane(v) => run(v, Plane4::from_planes, |r, p| {
+            plane::x4::intersect(r, p).lanes()
+        }),
+        Batch::Sphere(v) => run(v, Sphere4::from_spheres, |r, s| {
+            sphere::x4::intersect(r, s).lanes()
+        }),
+        Batch::Quadric(v) => run(v, Quadric4::from_quadrics, |r, q| {
+            quadric::x4::intersect(r, q).lanes()
+        }),
+        Batch::Camera(v) => v
+            .iter()
+            .map(|(p, px)| camera_outcome(camera_x4(p, *px)))
+            .collect(),
+    }
+}
+
+/// One `black_box`ed call per case of a scalar primitive variant.
+macro_rules! scalar {
+    ($v:expr, |$r:ident, $p:ident| $call:expr) => {
+        for &(a, b) in $v {
+            let ($r, $p) = (black_box(a), black_box(b));
+            black_box($call);
+        }
+    };
+}
+
+/// Packets of four cases, packed before the clock starts.
+fn packed<P: Copy, P4>(v: &[(Ray, P)], pack: impl Fn([P; 4]) -> P4) -> Vec<(Ray4, P4)> {
+    fours(v)
+        .into_iter()
+        .map(|g| (Ray4::from_rays(g.map(|c| c.0)), pack(g.map(|c| c.1))))
+        .collect()
+}
+
+/// Cameras built before the clock starts (cases whose camera fails are
+/// left out), with their pixels.
+fn built<C>(
+    v: &[(CameraParams, [u32; 2])],
+    build: impl Fn(&CameraParams) -> Option<C>,
+) -> Vec<(C, [u32; 2])> {
+    v.iter()
+        .filter_map(|(p, px)| build(p).map(|c| (c, *px)))
+        .collect()
+}
+
+/// Nanoseconds per ray of `reps` passes of `variant` over `batch`: one
+/// `black_box`ed call per case (per packet of four for x4), so the
+/// optimiser cannot vectorise the scalar variants across cases. Packing
+/// into packets and building cameras happen before the clock starts; a
+/// camera case is timed for its ray only (the construction is once per
+/// frame), except for the exact oracle, whose f64 basis is rebuilt per
+/// call.
+pub(super) fn time_pass(variant: Variant, batch: &Batch, reps: usize) -> f64 {
+    let n = batch.len().max(1);
+    macro_rules! timed {
+        ($body:block) => {{
+            let start = Instant::now();
+            for _ in 0..reps {
+                $body
+            }
+            start.elapsed().as_nanos() as f64 / (reps * n) as f64
+        }};
+    }
+    match (variant, batch) {
+        (Variant::X4, Batch::Plane(v)) => {
+            let v = packed(v, Plane4::from_planes);
+            timed!({ scalar!(&v, |r, p| plane::x4::intersect(&r, &p)) })
+        }
+        (Variant::X4, Batch::Sphere(v)) => {
+            let v = packed(v, Sphere4::from_spheres);
+            timed!({ scalar!(&v, |r, s| sphere::x4::intersect(&r, &s)) })
+        }
+        (Variant::X4, Batch::Quadric(v)) => {
+            let v = packed(v, Quadric4::from_quadrics);
+            timed!({ scalar!(&v, |r, q| quadric::x4::intersect(&r, &q)) })
+        }
+        (Variant::X4, Batch::Camera(v)) => {
+            // Four pixels of a row per call: a quarter of a call per ray.
+            let v = built(v, |p| p.build().ok());
+            let per_case = timed!({
+                for (c, [x, y]) in &v {
+                    let [w, _] = c.params.res;
+                    black_box(black_box(c).ray4_row((*x).min(w.saturating_sub(4)), *y));
+                }
+            });
+            per_case / 4.0
+        }
+        (Variant::Textbook, Batch::Plane(v)) => {
+            timed!({ scalar!(v, |r, p| plane::textbook::intersect(&r, &p)) })
+        }
+        (Variant::Textbook, Batch::Sphere(v)) => {
+            timed!({ scalar!(v, |r, s| sphere::textbook::intersect(&r, &s)) })
+        }
+        (Variant::Textbook, Batch::Quadric(v)) => {
+            timed!({ scalar!(v, |r, q| quadric::textbook::intersect(&r, &q)) })
+        }
+        (Variant::Textbook, Batch::Camera(v)) => {
+            let v = built(v, |p| camera::textbook::Camera::new(p).ok());
+            timed!({ scalar!(&v, |c, px| c.ray(px[0], px[1])) })
+        }
+        (Variant::Reference, Batch::Plane(v)) => {
+            timed!({ scalar!(v, |r, p| plane::reference::intersect(&r, &p)) })
+        }
+        (Variant::Reference, Batch::Sphere(v)) => {
+            timed!({ scalar!(v, |r, s| sphere::reference::intersect(&r, &s)) })
+        }
+        (Variant::Reference, Batch::Quadric(v)) => {
+            timed!({ scalar!(v, |r, q| quadric::reference::intersect(&r, &q)) })
+        }
+        (Variant::Reference, Batch::Camera(v)) => {
+            let v = built(v, |p| p.build().ok());
+            timed!({ scalar!(&v, |c, px| c.ray(px[0], px[1])) })
+        }
+        (Variant::F64, Batch::Plane(v)) => {
+            timed!({ scalar!(v, |r, p| plane::double::intersect(&r, &p)) })
+        }
+        (Variant::F64, Batch::Sphere(v)) => {
+            timed!({ scalar!(v, |r, s| sphere::double::intersect(&r, &s)) })
+        }
+        (Variant::F64, Batch::Quadric(v)) => {
+            timed!({ scalar!(v, |r, q| quadric::double::intersect(&r, &q)) })
+        }
+        (Variant::F64, Batch::Camera(v)) => {
+            let v = built(v, |p| camera::double::Camera::new(p).ok());
+            timed!({ scalar!(&v, |c, px| c.ray(px[0], px[1])) })
+        }
+        (Variant::Exact, Batch::Plane(v)) => {
+            timed!({ scalar!(v, |r, p| plane::exact::intersect(&r, &p).ok()) })
+        }
+        (Variant::Exact, Batch::Sphere(v)) => {
+            timed!({ scalar!(v, |r, s| sphere::exact::intersect(&r, &s).ok()) })
+        }
+        (Variant::Exact, Batch::Quadric(v)) => {
+            timed!({ scalar!(v, |r, q| quadric::exact::intersect(&r, &q).ok()) })
+        }
+        (Variant::Exact, Batch::Camera(v)) => {
+            timed!({ scalar!(v, |p, px| camera::exact::ray(&p, px[0], px[1]).ok()) })
+        }
+    }
+}
