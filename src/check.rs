@@ -44,6 +44,9 @@
 //!   [`camera::COMPONENT_ULPS`] ulps of `Sᵢ` ([`camera::component_scale`],
 //!   one ulp being [`ulp_of`]`(Sᵢ)`) of the oracle's component.
 
+#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+pub mod gate;
+
 use crate::Ray;
 use crate::camera::{self, CameraError, CameraParams};
 use crate::case::Case;
