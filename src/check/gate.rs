@@ -35,6 +35,9 @@
 //! unrelated cases. If the lanes disagree (swapped lanes, a garbage lane)
 //! the case fails with [`Answer::Inconsistent`].
 
+pub mod fuzz;
+pub mod strategy;
+
 use crate::Ray;
 use crate::camera::{CameraParams, component_scale};
 use crate::case::{Case, parse_line};
@@ -116,7 +119,10 @@ pub enum Semantics {
 /// one f32 rounding) makes unavoidable. A class may differ from the exact
 /// one when the exact classification margin is within `band_scale` times
 /// rayoracle's own band (which is for double-word arithmetic, about
-/// `2⁻⁴⁴`: a plain f32 kernel needs about `2²⁰`).
+/// `2⁻⁴⁴`: a plain f32 kernel needs about `2²⁰`), with one exception: when
+/// every input is an integer of magnitude at most 16, an exactly degenerate
+/// case (a ray in the plane, an exact tangent, α = 0) must be classified
+/// exactly, since any kernel computes its margin exactly there.
 ///
 /// ```
 /// use rayoracle::check::gate::{Declared, Semantics};
@@ -446,7 +452,7 @@ impl Gate {
     fn run(&self, kind: &str, judge: impl Fn(&Case) -> Option<Verdict>) -> Report {
         let mut report = Report::default();
         let mut by_family: Vec<(String, Vec<Case>)> = Vec::new();
-        for (family, case) in self.sources(kind) {
+        for (family, case) in self.sources(kind, self.budget) {
             let case = if self.declared.unit_dirs_only {
                 unit_dir(case)
             } else {
@@ -484,9 +490,90 @@ impl Gate {
         report
     }
 
+    /// One sphere case, judged: for a user's own property tests and
+    /// fuzzers ([`strategy`], [`fuzz`]). The failure is not shrunk.
+    ///
+    /// ```
+    /// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics};
+    /// use rayoracle::{Ray, sphere::Sphere};
+    /// use glam::Vec3;
+    /// let g = Gate::new(Declared::f32(Semantics::WholeLine));
+    /// let (r, s) = (Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), Sphere::new(Vec3::ZERO, 1.0));
+    /// assert!(g.judge_sphere(&r, &s, Answer::Roots(vec![4.0, 6.0])).is_ok());
+    /// let f = g.judge_sphere(&r, &s, Answer::Roots(vec![6.0, 4.0])).unwrap_err();
+    /// assert!(f.why.contains("ascending") && f.eval_line.contains("\"kind\":\"sphere\""));
+    /// ```
+    pub fn judge_sphere(&self, ray: &Ray, s: &Sphere, answer: Answer) -> Result<(), Failure> {
+        one(
+            Case::Sphere(*ray, *s),
+            judge_sphere(&self.declared, ray, s, answer),
+        )
+    }
+
+    /// One plane case, judged (see [`Gate::judge_sphere`]).
+    ///
+    /// ```
+    /// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics};
+    /// use rayoracle::{Ray, plane::Plane};
+    /// use glam::Vec3;
+    /// let g = Gate::new(Declared::f32(Semantics::WholeLine));
+    /// let in_plane = (Ray::new(Vec3::ZERO, Vec3::X), Plane::new(Vec3::ZERO, Vec3::Y));
+    /// assert!(g.judge_plane(&in_plane.0, &in_plane.1, Answer::Everywhere).is_ok());
+    /// assert!(g.judge_plane(&in_plane.0, &in_plane.1, Answer::Roots(vec![])).is_err());
+    /// ```
+    pub fn judge_plane(&self, ray: &Ray, p: &Plane, answer: Answer) -> Result<(), Failure> {
+        one(
+            Case::Plane(*ray, *p),
+            judge_plane(&self.declared, ray, p, answer),
+        )
+    }
+
+    /// One quadric case, judged (see [`Gate::judge_sphere`]).
+    ///
+    /// ```
+    /// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics};
+    /// use rayoracle::{Ray, quadric::Quadric};
+    /// use glam::Vec3;
+    /// let g = Gate::new(Declared::f32(Semantics::NearestPositive));
+    /// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+    /// let r = Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X);
+    /// assert!(g.judge_quadric(&r, &cyl, Answer::Nearest(Some(4.0))).is_ok());
+    /// assert!(g.judge_quadric(&r, &cyl, Answer::Nearest(Some(-6.0))).is_err());
+    /// ```
+    pub fn judge_quadric(&self, ray: &Ray, q: &Quadric, answer: Answer) -> Result<(), Failure> {
+        one(
+            Case::Quadric(*ray, *q),
+            judge_quadric(&self.declared, ray, q, answer),
+        )
+    }
+
+    /// One camera case, judged (see [`Gate::judge_sphere`]).
+    ///
+    /// ```
+    /// use rayoracle::check::gate::{Declared, Gate, Semantics};
+    /// use rayoracle::camera::CameraParams;
+    /// use glam::Vec3;
+    /// let g = Gate::new(Declared::f32(Semantics::WholeLine));
+    /// let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [4, 4]);
+    /// let good = p.build().unwrap().ray(1, 2);
+    /// assert!(g.judge_camera(&p, [1, 2], Some(good)).is_ok());
+    /// assert!(g.judge_camera(&p, [1, 2], Some(p.build().unwrap().ray(2, 1))).is_err());
+    /// ```
+    pub fn judge_camera(
+        &self,
+        p: &CameraParams,
+        pixel: [u32; 2],
+        ray: Option<Ray>,
+    ) -> Result<(), Failure> {
+        one(
+            Case::Camera(*p, pixel),
+            judge_camera(&self.declared, p, pixel, ray),
+        )
+    }
+
     /// The fixture families, the stiff families and the random families of
     /// a kind.
-    fn sources(&self, kind: &str) -> Vec<Sourced> {
+    fn sources(&self, kind: &str, random: usize) -> Vec<Sourced> {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures");
         let mut out = Vec::new();
         for file in [
@@ -507,8 +594,22 @@ impl Gate {
                 }
             }
         }
-        out.extend(random_cases(kind, self.seed, self.budget));
+        out.extend(random_cases(kind, self.seed, random));
         out
+    }
+}
+
+/// A single judged case as a result.
+fn one(case: Case, v: Verdict) -> Result<(), Failure> {
+    match v {
+        Verdict::Pass => Ok(()),
+        Verdict::Fail { expected, got, why } => Err(Failure {
+            family: "single case".into(),
+            eval_line: eval_line(&case, "single case"),
+            expected,
+            got,
+            why,
+        }),
     }
 }
 
@@ -701,6 +802,25 @@ fn judge(d: &Declared, e: &Exact, got: Answer) -> Verdict {
     }
 }
 
+/// Whether every input is an integer of magnitude at most 16: then every
+/// classification margin (a polynomial of degree at most 4 in them) is
+/// computed exactly even in plain f32, so an exactly degenerate case (a ray
+/// in the plane, a tangent, α = 0) must be classified exactly.
+fn small_integers(c: &Case) -> bool {
+    fields(c)
+        .iter()
+        .all(|&x| x.fract() == 0.0 && x.abs() <= 16.0)
+}
+
+/// Whether a class mismatch is forgiven: the exact margin within the band,
+/// except an exactly zero margin on small-integer inputs.
+fn in_band(margin: f64, band: f64, c: &Case) -> bool {
+    if margin == 0.0 && small_integers(c) {
+        return false;
+    }
+    margin.abs() <= band
+}
+
 fn judge_sphere(d: &Declared, ray: &Ray, s: &Sphere, got: Answer) -> Verdict {
     let Ok(q) = sphere::exact::quadratic(ray, s) else {
         return Verdict::Pass;
@@ -716,7 +836,11 @@ fn judge_sphere(d: &Declared, ray: &Ray, s: &Sphere, got: Answer) -> Verdict {
     };
     let e = Exact {
         roots: Some(exact.roots().as_slice().to_vec()),
-        in_band: margin.abs() <= sphere::band(ray, s) * d.band_scale,
+        in_band: in_band(
+            margin,
+            sphere::band(ray, s) * d.band_scale,
+            &Case::Sphere(*ray, *s),
+        ),
         kappa,
     };
     judge(d, &e, got)
@@ -732,7 +856,11 @@ fn judge_plane(d: &Declared, ray: &Ray, p: &Plane, got: Answer) -> Verdict {
     let margin = dot(&dir, &n).to_f64();
     let e = Exact {
         roots: (!matches!(exact, PlaneHit::InPlane)).then(|| exact.roots().as_slice().to_vec()),
-        in_band: margin.abs() <= plane::band(ray, p) * d.band_scale,
+        in_band: in_band(
+            margin,
+            plane::band(ray, p) * d.band_scale,
+            &Case::Plane(*ray, *p),
+        ),
         kappa: vec![super::plane_condition(ray, p)],
     };
     judge(d, &e, got)
@@ -760,7 +888,11 @@ fn judge_quadric(d: &Declared, ray: &Ray, q: &Quadric, got: Answer) -> Verdict {
     };
     let e = Exact {
         roots: (!matches!(exact, QuadricHit::All)).then(|| exact.roots().as_slice().to_vec()),
-        in_band: margin.abs() <= quadric::band(ray, q) * d.band_scale || alpha_small,
+        in_band: in_band(
+            margin,
+            quadric::band(ray, q) * d.band_scale,
+            &Case::Quadric(*ray, *q),
+        ) || (alpha_small && !small_integers(&Case::Quadric(*ray, *q))),
         kappa,
     };
     judge(d, &e, got)

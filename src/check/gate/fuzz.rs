@@ -1,0 +1,92 @@
+//! The gate inside a user's `fuzz_target!`: bytes in, a case out, judged.
+//!
+//! ```no_run
+//! // fuzz/fuzz_targets/my_sphere.rs
+//! # fn my_kernel(r: &rayoracle::Ray, s: &rayoracle::sphere::Sphere) -> rayoracle::check::gate::Answer { unimplemented!() }
+//! use rayoracle::check::gate::{Declared, Gate, Semantics, fuzz};
+//! // libfuzzer_sys::fuzz_target!(|data: &[u8]| {
+//! let data: &[u8] = &[];
+//! fuzz::sphere(data, &Gate::new(Declared::f32(Semantics::NearestPositive)), &my_kernel);
+//! // });
+//! ```
+//!
+//! Floats are decoded as rayoracle's own fuzz targets decode them
+//! ([`crate::fuzz::FuzzF32`]: raw bits, special values, exact `m·2^e` of
+//! any magnitude, small integers), so NaN, subnormals and exact tangents are
+//! all reachable. A failure panics with the case as an `eval` line.
+
+use super::{Gate, PlaneKernel, QuadricKernel, SphereKernel};
+use crate::Ray;
+use crate::fuzz::FuzzF32;
+use crate::plane::Plane;
+use crate::quadric::Quadric;
+use crate::sphere::Sphere;
+use arbitrary::{Arbitrary, Unstructured};
+use glam::Vec3;
+
+fn f(u: &mut Unstructured<'_>) -> Option<f32> {
+    FuzzF32::arbitrary(u).ok().map(|x| x.0)
+}
+fn v(u: &mut Unstructured<'_>) -> Option<Vec3> {
+    Some(Vec3::new(f(u)?, f(u)?, f(u)?))
+}
+
+/// Decodes a sphere case from `data` and judges `kernel` on it; panics
+/// with the failure (and its `eval` line) if the answer is not acceptable.
+///
+/// ```
+/// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics, fuzz};
+/// let good = |r: &rayoracle::Ray, s: &rayoracle::sphere::Sphere| Answer::roots(rayoracle::sphere::reference::intersect(r, s));
+/// fuzz::sphere(&[7; 64], &Gate::new(Declared::exact(Semantics::WholeLine)), &good);
+/// ```
+pub fn sphere(data: &[u8], gate: &Gate, kernel: &impl SphereKernel) {
+    let mut u = Unstructured::new(data);
+    let (Some(o), Some(d), Some(c), Some(r)) = (v(&mut u), v(&mut u), v(&mut u), f(&mut u)) else {
+        return;
+    };
+    let (ray, s) = (Ray::new(o, d), Sphere::new(c, r));
+    if let Err(e) = gate.judge_sphere(&ray, &s, kernel.intersect(&ray, &s)) {
+        panic!("{e}");
+    }
+}
+
+/// As [`sphere`], for a plane kernel.
+///
+/// ```
+/// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics, fuzz};
+/// let good = |r: &rayoracle::Ray, p: &rayoracle::plane::Plane| Answer::roots(rayoracle::plane::reference::intersect(r, p));
+/// fuzz::plane(&[3; 64], &Gate::new(Declared::exact(Semantics::WholeLine)), &good);
+/// ```
+pub fn plane(data: &[u8], gate: &Gate, kernel: &impl PlaneKernel) {
+    let mut u = Unstructured::new(data);
+    let (Some(o), Some(d), Some(a), Some(n)) = (v(&mut u), v(&mut u), v(&mut u), v(&mut u)) else {
+        return;
+    };
+    let (ray, p) = (Ray::new(o, d), Plane::new(a, n));
+    if let Err(e) = gate.judge_plane(&ray, &p, kernel.intersect(&ray, &p)) {
+        panic!("{e}");
+    }
+}
+
+/// As [`sphere`], for a quadric kernel.
+///
+/// ```
+/// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics, fuzz};
+/// let good = |r: &rayoracle::Ray, q: &rayoracle::quadric::Quadric| Answer::roots(rayoracle::quadric::reference::intersect(r, q));
+/// fuzz::quadric(&[5; 80], &Gate::new(Declared::exact(Semantics::WholeLine)), &good);
+/// ```
+pub fn quadric(data: &[u8], gate: &Gate, kernel: &impl QuadricKernel) {
+    let mut u = Unstructured::new(data);
+    let (Some(o), Some(d)) = (v(&mut u), v(&mut u)) else {
+        return;
+    };
+    let mut k = [0f32; 10];
+    for x in &mut k {
+        let Some(c) = f(&mut u) else { return };
+        *x = c;
+    }
+    let (ray, q) = (Ray::new(o, d), Quadric::new(k));
+    if let Err(e) = gate.judge_quadric(&ray, &q, kernel.intersect(&ray, &q)) {
+        panic!("{e}");
+    }
+}
