@@ -20,7 +20,8 @@ pub fn sphere_nearest(o: Vec3, d: Vec3, c: Vec3, r: f32) -> Option<f32> {
     let b = f.dot(d);
     let l = f - d * (b / a);
     let disc = a * (r * r - l.dot(l));
-    if !(disc >= 0.0) {
+    // Negative or NaN: no real root.
+    if disc.is_nan() || disc < 0.0 {
         return None;
     }
     let q = -(b + disc.sqrt().copysign(b));
