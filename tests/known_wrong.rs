@@ -429,13 +429,12 @@ fn seed_quadric_no_alpha_guard_is_caught_by_alpha_zero() {
     );
 }
 
-/// What the gate does not yet say: the same kernel answers two NaN roots on
-/// every case of `quadric/alpha-zero-paraboloid` (exactly one finite root
-/// each), but on the stiff cases α = 0 is inside the gate's α band, where
-/// any root count passes, NaN included. No NaN is ever a right root, so
-/// every case of the family should fail.
+/// The same kernel answers two NaN roots on every case of
+/// `quadric/alpha-zero-paraboloid` (exactly one finite root each). α = 0 is
+/// inside the gate's α band, which excuses a root count, but never a NaN:
+/// every case of the family fails. (This was a gap in the gate, found by
+/// this test; the gate now rejects NaN roots everywhere.)
 #[test]
-#[ignore = "gate gap: NaN roots pass wherever the class is inside the band"]
 fn nan_roots_fail_on_every_alpha_zero_case() {
     let report = gate(Semantics::WholeLine).quadric(&seed_quadric_no_alpha_guard);
     let (_, cases, failed) = report
