@@ -9,6 +9,11 @@
 /// use rayoracle::ulp::ordinal;
 /// assert_eq!(ordinal(1.0) - ordinal(1.0 - f32::EPSILON / 2.0), 1);
 /// assert_eq!(ordinal(-0.0), ordinal(0.0));
+/// // Negative floats sit below zero, mirrored (cargo-mutants found these
+/// // lines untested: a sign-blind ordinal passed every other test).
+/// assert_eq!(ordinal(-1.0), -ordinal(1.0));
+/// assert_eq!(ordinal(-f32::from_bits(1)), -1);
+/// assert!(ordinal(-2.0) < ordinal(-1.0));
 /// ```
 pub fn ordinal(x: f32) -> i64 {
     let b = x.to_bits();
@@ -25,6 +30,8 @@ pub fn ordinal(x: f32) -> i64 {
 /// assert_eq!(ulps(f32::NAN, f32::NAN), 0);
 /// assert_eq!(ulps(f32::NAN, 0.0), u64::MAX);
 /// assert_eq!(ulps(f32::MAX, f32::INFINITY), 1);
+/// // Across zero: the two smallest subnormals of opposite sign are 2 apart.
+/// assert_eq!(ulps(-f32::from_bits(1), f32::from_bits(1)), 2);
 /// ```
 pub fn ulps(a: f32, b: f32) -> u64 {
     match (a.is_nan(), b.is_nan()) {
