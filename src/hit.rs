@@ -107,6 +107,7 @@ pub trait Intersection {
 /// use rayoracle::sphere::SphereHit;
 /// assert!(same_bits(&SphereHit::Tangent(f32::NAN), &SphereHit::Tangent(-f32::NAN)));
 /// assert!(!same_bits(&SphereHit::Tangent(0.0), &SphereHit::Tangent(-0.0)));
+/// assert!(!same_bits(&SphereHit::Tangent(f32::NAN), &SphereHit::Tangent(1.0)));
 /// # }
 /// ```
 pub fn same_bits<H: Intersection>(a: &H, b: &H) -> bool {

@@ -7,11 +7,8 @@ use core::cmp::Ordering;
 /// The largest finite key; keys order the finite floats, `key(±0) = 0`.
 const MAX_KEY: i64 = 0x7f7f_ffff;
 
-fn key_of(x: f32) -> i64 {
-    let b = x.to_bits();
-    let mag = (b & 0x7fff_ffff) as i64;
-    if b >> 31 == 1 { -mag } else { mag }
-}
+/// The key of a float: its position on the ordered line of floats.
+use crate::ulp::ordinal as key_of;
 
 fn float_of(k: i64) -> f32 {
     if k < 0 {
