@@ -79,6 +79,17 @@ fn png(
 }
 
 impl Frame {
+    /// RGB 8-bit samples of this frame's size as PNG.
+    fn rgb_png(&self, data: &[u8]) -> Vec<u8> {
+        png(
+            self.width,
+            self.height,
+            png::ColorType::Rgb,
+            png::BitDepth::Eight,
+            data,
+        )
+    }
+
     /// The depth channel as a 16-bit greyscale PNG.
     ///
     /// ```
@@ -126,13 +137,7 @@ impl Frame {
                 }
             })
             .collect();
-        Some(png(
-            self.width,
-            self.height,
-            png::ColorType::Rgb,
-            png::BitDepth::Eight,
-            &data,
-        ))
+        Some(self.rgb_png(&data))
     }
 
     /// The id channel as an RGB PNG in [`PALETTE`], or `None` if the frame
@@ -159,13 +164,7 @@ impl Frame {
                 }
             })
             .collect();
-        Some(png(
-            self.width,
-            self.height,
-            png::ColorType::Rgb,
-            png::BitDepth::Eight,
-            &data,
-        ))
+        Some(self.rgb_png(&data))
     }
 
     /// Every channel the frame has, as `(name, PNG bytes)`.

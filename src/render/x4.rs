@@ -151,17 +151,17 @@ fn normals(plan: &Plan, rays: &Ray4, t: f32x4, who: [u32; 4]) -> [[f32; 3]; 4] {
             }
         }
     };
-    let gather = |f: &dyn Fn(u32) -> f32, first: u32, range: core::ops::Range<u32>| {
+    let gather = |f: &dyn Fn(u32) -> f32, range: core::ops::Range<u32>| {
         f32x4::from(obj.map(|o| match o {
             Some(i) if range.contains(&i) => f(i - range.start),
-            _ => f(first),
+            _ => f(0),
         }))
     };
     #[cfg(feature = "plane")]
     {
         let mine = obj.map(|o| o.is_some_and(|i| i < sb));
         if mine.contains(&true) {
-            let v = [0, 1, 2].map(|c| gather(&|i| plan.planes[i as usize].normal[c], 0, 0..sb));
+            let v = [0, 1, 2].map(|c| gather(&|i| plan.planes[i as usize].normal[c], 0..sb));
             emit(v, mine);
         }
     }
@@ -169,7 +169,7 @@ fn normals(plan: &Plan, rays: &Ray4, t: f32x4, who: [u32; 4]) -> [[f32; 3]; 4] {
     {
         let mine = obj.map(|o| o.is_some_and(|i| (sb..qb).contains(&i)));
         if mine.contains(&true) {
-            let c = [0, 1, 2].map(|c| gather(&|i| plan.spheres[i as usize].center[c], 0, sb..qb));
+            let c = [0, 1, 2].map(|c| gather(&|i| plan.spheres[i as usize].center[c], sb..qb));
             emit(normal::sphere(p, c), mine);
         }
     }
@@ -178,7 +178,7 @@ fn normals(plan: &Plan, rays: &Ray4, t: f32x4, who: [u32; 4]) -> [[f32; 3]; 4] {
         let mine = obj.map(|o| o.is_some_and(|i| i >= qb));
         if mine.contains(&true) {
             let k: [f32x4; 10] = core::array::from_fn(|j| {
-                gather(&|i| plan.quadrics[i as usize].coeffs[j], 0, qb..u32::MAX)
+                gather(&|i| plan.quadrics[i as usize].coeffs[j], qb..u32::MAX)
             });
             emit(normal::quadric(&k, p), mine);
         }

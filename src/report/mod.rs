@@ -104,11 +104,22 @@ impl Options {
 /// ```
 pub fn accuracy(family: &Family, variant: Variant) -> Row {
     let batch = Batch::new(family.kernel, &family.cases);
-    let got = variant::outcomes(variant, &batch);
     let exact = variant::outcomes(Variant::Exact, &batch);
+    accuracy_against(family, variant, &batch, &exact)
+}
+
+/// [`accuracy`] given the family's batch and the oracle's outcomes, which
+/// [`run`] computes once per family rather than once per variant.
+fn accuracy_against(
+    family: &Family,
+    variant: Variant,
+    batch: &Batch,
+    exact: &[crate::eval::Outcome],
+) -> Row {
+    let got = variant::outcomes(variant, batch);
     let mut bits = Vec::new();
     let mut mismatches = 0;
-    for ((case, e), g) in family.cases.iter().zip(&exact).zip(&got) {
+    for ((case, e), g) in family.cases.iter().zip(exact).zip(&got) {
         match case_error(case, e, g) {
             CaseError::NotCompared => {}
             CaseError::Mismatch => mismatches += 1,
@@ -161,8 +172,10 @@ pub fn run(catalogue: &Catalogue, options: Options, on_step: &mut dyn FnMut()) -
     let catalogue = catalogue.quick(options.cases_per_family);
     let mut rows = Vec::new();
     for family in &catalogue.families {
+        let batch = Batch::new(family.kernel, &family.cases);
+        let exact = variant::outcomes(Variant::Exact, &batch);
         for variant in Variant::ALL {
-            let mut row = accuracy(family, variant);
+            let mut row = accuracy_against(family, variant, &batch, &exact);
             row.ns_per_ray = time_per_case(family, variant, options.passes);
             rows.push(row);
             on_step();
