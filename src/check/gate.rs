@@ -37,6 +37,7 @@
 
 pub mod fuzz;
 pub mod strategy;
+pub mod survey;
 
 use crate::Ray;
 use crate::camera::{CameraParams, component_scale};
@@ -511,8 +512,20 @@ impl Gate {
         })
     }
 
-    fn run(&self, kind: &str, judge: impl Fn(&Case) -> Option<Verdict>) -> Report {
-        let mut report = Report::default();
+    /// The cases the gate runs for a kind (`"plane"`, `"sphere"`,
+    /// `"quadric"` or `"camera"`), by family in the order run: at most
+    /// `budget` a family, directions already normalised if the declaration
+    /// asks for unit directions. The same inputs serve to benchmark a
+    /// kernel on exactly the rays it was judged on.
+    ///
+    /// ```
+    /// use rayoracle::check::gate::{Declared, Gate, Semantics};
+    /// let families = Gate::new(Declared::f32(Semantics::WholeLine)).budget(4).cases("sphere");
+    /// let far = families.iter().find(|f| f.0 == "sphere/far-tiny").unwrap();
+    /// assert_eq!(far.1.len(), 4);
+    /// assert!(families.iter().all(|f| f.1.len() <= 4));
+    /// ```
+    pub fn cases(&self, kind: &str) -> Vec<(String, Vec<Case>)> {
         let mut by_family: Vec<(String, Vec<Case>)> = Vec::new();
         for (family, case) in self.sources(kind, self.budget) {
             let case = if self.declared.unit_dirs_only {
@@ -526,7 +539,12 @@ impl Gate {
                 None => by_family.push((family, vec![case])),
             }
         }
-        for (family, cases) in by_family {
+        by_family
+    }
+
+    fn run(&self, kind: &str, judge: impl Fn(&Case) -> Option<Verdict>) -> Report {
+        let mut report = Report::default();
+        for (family, cases) in self.cases(kind) {
             let mut failed = 0;
             for case in &cases {
                 let Some(Verdict::Fail { why, .. }) = judge(case) else {

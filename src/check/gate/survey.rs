@@ -1,0 +1,240 @@
+//! Measure a kernel, family by family, against the exact oracle: what a
+//! gate run passes or fails, and the raw numbers behind it.
+//!
+//! A [`Report`](super::Report) answers "does my kernel keep its
+//! declaration?". A survey answers "how wrong is it, and where?", which is
+//! what you publish about someone else's kernel: for each family, the wrong
+//! hits and wrong misses (whatever the band would forgive), the max and
+//! median ulps of the hits both sides agree on, and the gate's own
+//! failures under the declaration.
+//!
+//! Every count is in ray-caster terms, the nearest `t > 0`, whatever the
+//! declared semantics (a whole-line answer is reduced to its first root
+//! above 0), so kernels of either kind compare in one table.
+//!
+//! ```
+//! use rayoracle::check::gate::{Answer, Declared, Gate, Semantics};
+//! use rayoracle::{Ray, sphere::{Sphere, reference}};
+//! let gate = Gate::new(Declared::exact(Semantics::NearestPositive)).budget(16);
+//! let k = |r: &Ray, s: &Sphere| Answer::nearest(reference::intersect(r, s), 0.0);
+//! let survey = gate.survey_sphere(&k, &gate.cases("sphere"));
+//! let far = survey.iter().find(|f| f.family == "sphere/far-tiny").unwrap();
+//! assert_eq!((far.wrong_hits, far.wrong_misses, far.max_ulps), (0, 0, 0));
+//! ```
+
+use super::{Answer, Gate, PlaneKernel, QuadricKernel, SphereKernel, Verdict};
+use crate::case::Case;
+use crate::hit::Intersection;
+use crate::ulp::ulps;
+use crate::{plane, quadric, sphere};
+use std::fmt::Write;
+
+/// One family's numbers.
+///
+/// ```
+/// use rayoracle::check::gate::survey::FamilyStats;
+/// let s = FamilyStats { family: "sphere/x".into(), cases: 4, hits: 2, ..Default::default() };
+/// assert_eq!(s.wrong(), 0);
+/// ```
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct FamilyStats {
+    /// The family.
+    pub family: String,
+    /// Cases the oracle answered (non-finite inputs are not counted).
+    pub cases: usize,
+    /// Cases that fail the gate under the declaration (band and κ aware).
+    pub failures: usize,
+    /// The kernel reports a hit `t` where the exact nearest `t > 0` does
+    /// not exist.
+    pub wrong_hits: usize,
+    /// The kernel reports no hit where the exact nearest `t > 0` exists.
+    pub wrong_misses: usize,
+    /// Other wrong answers: a NaN, lanes that disagree, "every `t`" where
+    /// the exact answer is a point. (Where every `t` solves it there is no
+    /// nearest hit, and any answer is counted right.)
+    pub other: usize,
+    /// Cases where both report a hit; the ulps are over these.
+    pub hits: usize,
+    /// The largest ulps between the kernel's hit and the correctly rounded
+    /// exact one.
+    pub max_ulps: u64,
+    /// The median (the lower one of an even count) of the same.
+    pub median_ulps: u64,
+}
+
+impl FamilyStats {
+    /// Wrong hits, wrong misses and other wrong answers together.
+    ///
+    /// ```
+    /// use rayoracle::check::gate::survey::FamilyStats;
+    /// let s = FamilyStats { wrong_hits: 2, wrong_misses: 1, other: 1, ..Default::default() };
+    /// assert_eq!(s.wrong(), 4);
+    /// ```
+    pub fn wrong(&self) -> usize {
+        self.wrong_hits + self.wrong_misses + self.other
+    }
+}
+
+/// What the oracle says for one case, reduced to a ray caster's answer.
+enum Truth {
+    /// The inputs are not finite: nothing to compare.
+    Refused,
+    /// Every `t` solves it.
+    Everywhere,
+    /// The nearest exact root above 0, correctly rounded.
+    Nearest(Option<f32>),
+}
+
+fn truth(h: Result<impl Intersection, impl std::fmt::Debug>) -> Truth {
+    match h {
+        Err(_) => Truth::Refused,
+        Ok(h) if h.is_everywhere() => Truth::Everywhere,
+        Ok(h) => Truth::Nearest(h.roots().as_slice().iter().copied().find(|&t| t > 0.0)),
+    }
+}
+
+/// One case's contribution.
+fn tally(stats: &mut FamilyStats, ulps_seen: &mut Vec<u64>, truth: Truth, got: &Answer) {
+    let got = match got {
+        Answer::Nearest(t) => Ok(*t),
+        Answer::Roots(r) => Ok(r.iter().copied().find(|&t| t > 0.0 || t.is_nan())),
+        Answer::Everywhere => Err(true),
+        Answer::Inconsistent(_) => Err(false),
+    };
+    match (truth, got) {
+        (Truth::Refused, _) => return,
+        (_, Err(false)) => stats.other += 1,
+        (_, Ok(Some(t))) if t.is_nan() => stats.other += 1,
+        (Truth::Everywhere, _) => {}
+        (Truth::Nearest(_), Err(_)) => stats.other += 1,
+        (Truth::Nearest(None), Ok(None)) => {}
+        (Truth::Nearest(None), Ok(Some(_))) => stats.wrong_hits += 1,
+        (Truth::Nearest(Some(_)), Ok(None)) => stats.wrong_misses += 1,
+        (Truth::Nearest(Some(x)), Ok(Some(g))) => {
+            stats.hits += 1;
+            ulps_seen.push(ulps(x, g));
+        }
+    }
+    stats.cases += 1;
+}
+
+impl Gate {
+    fn survey(
+        &self,
+        families: &[(String, Vec<Case>)],
+        one: impl Fn(&Case) -> Option<(Truth, Answer, Verdict)>,
+    ) -> Vec<FamilyStats> {
+        families
+            .iter()
+            .map(|(family, cases)| {
+                let mut s = FamilyStats {
+                    family: family.clone(),
+                    ..FamilyStats::default()
+                };
+                let mut seen = Vec::new();
+                for c in cases {
+                    let Some((truth, got, verdict)) = one(c) else {
+                        continue;
+                    };
+                    let refused = matches!(truth, Truth::Refused);
+                    tally(&mut s, &mut seen, truth, &got);
+                    if !refused && matches!(verdict, Verdict::Fail { .. }) {
+                        s.failures += 1;
+                    }
+                }
+                seen.sort_unstable();
+                s.max_ulps = seen.last().copied().unwrap_or(0);
+                s.median_ulps = seen
+                    .get(seen.len().saturating_sub(1) / 2)
+                    .copied()
+                    .unwrap_or(0);
+                s
+            })
+            .collect()
+    }
+
+    /// Surveys a sphere kernel over `families` (usually
+    /// [`Gate::cases`]`("sphere")`, perhaps with families of your own).
+    pub fn survey_sphere(
+        &self,
+        k: &impl SphereKernel,
+        families: &[(String, Vec<Case>)],
+    ) -> Vec<FamilyStats> {
+        self.survey(families, |c| match c {
+            Case::Sphere(r, s) => {
+                let got = k.intersect(r, s);
+                let v = super::judge_sphere(&self.declared, r, s, got.clone());
+                Some((truth(sphere::exact::intersect(r, s)), got, v))
+            }
+            _ => None,
+        })
+    }
+
+    /// Surveys a plane kernel (see [`Gate::survey_sphere`]).
+    ///
+    /// ```
+    /// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics};
+    /// use rayoracle::{Ray, plane::Plane};
+    /// let gate = Gate::new(Declared::f32(Semantics::NearestPositive)).budget(8);
+    /// let never = |_: &Ray, _: &Plane| Answer::Nearest(None);
+    /// let survey = gate.survey_plane(&never, &gate.cases("plane"));
+    /// assert!(survey.iter().any(|f| f.wrong_misses > 0));
+    /// assert!(survey.iter().all(|f| f.wrong_hits == 0 && f.hits == 0));
+    /// ```
+    pub fn survey_plane(
+        &self,
+        k: &impl PlaneKernel,
+        families: &[(String, Vec<Case>)],
+    ) -> Vec<FamilyStats> {
+        self.survey(families, |c| match c {
+            Case::Plane(r, p) => {
+                let got = k.intersect(r, p);
+                let v = super::judge_plane(&self.declared, r, p, got.clone());
+                Some((truth(plane::exact::intersect(r, p)), got, v))
+            }
+            _ => None,
+        })
+    }
+
+    /// Surveys a quadric kernel (see [`Gate::survey_sphere`]).
+    pub fn survey_quadric(
+        &self,
+        k: &impl QuadricKernel,
+        families: &[(String, Vec<Case>)],
+    ) -> Vec<FamilyStats> {
+        self.survey(families, |c| match c {
+            Case::Quadric(r, q) => {
+                let got = k.intersect(r, q);
+                let v = super::judge_quadric(&self.declared, r, q, got.clone());
+                Some((truth(quadric::exact::intersect(r, q)), got, v))
+            }
+            _ => None,
+        })
+    }
+}
+
+/// A survey as a Markdown table, one row a family.
+///
+/// ```
+/// use rayoracle::check::gate::survey::{FamilyStats, markdown};
+/// let t = markdown(&[FamilyStats { family: "sphere/x".into(), cases: 3, wrong_hits: 1, ..Default::default() }]);
+/// assert!(t.contains("| sphere/x | 3 | 0 | 1 | 0 | 0 | 0 | – | – |"));
+/// ```
+pub fn markdown(stats: &[FamilyStats]) -> String {
+    let mut out = String::from(
+        "| family | cases | gate failures | wrong hits | wrong misses | other wrong | hits compared | max ulps | median ulps |\n|---|---|---|---|---|---|---|---|---|\n",
+    );
+    for s in stats {
+        let (max, med) = if s.hits == 0 {
+            ("–".to_string(), "–".to_string())
+        } else {
+            (s.max_ulps.to_string(), s.median_ulps.to_string())
+        };
+        let _ = writeln!(
+            out,
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            s.family, s.cases, s.failures, s.wrong_hits, s.wrong_misses, s.other, s.hits, max, med
+        );
+    }
+    out
+}
