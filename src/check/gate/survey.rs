@@ -238,3 +238,85 @@ pub fn markdown(stats: &[FamilyStats]) -> String {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Ray;
+    use crate::plane::Plane;
+    use crate::sphere::Sphere;
+    use glam::Vec3;
+
+    fn counted(truth: Truth, got: Answer) -> FamilyStats {
+        let mut s = FamilyStats::default();
+        tally(&mut s, &mut Vec::new(), truth, &got);
+        s
+    }
+
+    #[test]
+    fn each_answer_lands_in_one_column() {
+        let n = |t| Truth::Nearest(t);
+        let s = counted(n(None), Answer::Nearest(Some(1.0)));
+        assert_eq!((s.cases, s.wrong_hits, s.wrong()), (1, 1, 1));
+        let s = counted(n(Some(1.0)), Answer::Nearest(None));
+        assert_eq!((s.wrong_misses, s.wrong()), (1, 1));
+        let s = counted(n(Some(1.0)), Answer::Nearest(Some(f32::NAN)));
+        assert_eq!((s.other, s.hits), (1, 0));
+        let s = counted(n(None), Answer::Roots(vec![f32::NAN]));
+        assert_eq!(s.other, 1);
+        let s = counted(n(Some(1.0)), Answer::Everywhere);
+        assert_eq!(s.other, 1);
+        let s = counted(n(None), Answer::Inconsistent("lanes".into()));
+        assert_eq!(s.other, 1);
+        // A whole-line answer is reduced to its first root above 0.
+        let mut seen = Vec::new();
+        let mut s = FamilyStats::default();
+        tally(
+            &mut s,
+            &mut seen,
+            n(Some(2.0)),
+            &Answer::Roots(vec![-1.0, 0.0, 2.0]),
+        );
+        assert_eq!((s.hits, s.wrong(), seen), (1, 0, vec![0]));
+        // Every t: any answer is right; refused inputs are not counted.
+        let s = counted(Truth::Everywhere, Answer::Nearest(Some(3.0)));
+        assert_eq!((s.cases, s.wrong()), (1, 0));
+        let s = counted(Truth::Refused, Answer::Nearest(Some(f32::NAN)));
+        assert_eq!(s, FamilyStats::default());
+    }
+
+    #[test]
+    fn max_median_and_failures_per_family() {
+        let gate = Gate::new(super::super::Declared::f32(
+            super::super::Semantics::NearestPositive,
+        ));
+        let s = Sphere::new(Vec3::ZERO, 1.0);
+        let rays = [-5.0, -4.0, -3.0, -2.0].map(|z| Ray::new(Vec3::new(0.0, 0.0, z), Vec3::Z));
+        let cases = vec![(
+            "f".to_string(),
+            rays.iter().map(|r| Case::Sphere(*r, s)).collect(),
+        )];
+        // Off by 0, 1, 2 and 3 ulps of the exact near root z − 1.
+        let k = |r: &Ray, _: &Sphere| {
+            let t: f32 = -r.origin.z - 1.0;
+            let off = (-r.origin.z) as u32 - 2;
+            Answer::Nearest(Some(f32::from_bits(t.to_bits() + off)))
+        };
+        let out = gate.survey_sphere(&k, &cases);
+        assert_eq!(out.len(), 1);
+        let f = &out[0];
+        assert_eq!((f.cases, f.hits, f.max_ulps, f.median_ulps), (4, 4, 3, 1));
+        // 2 bits allow 3 ulps: none fails.
+        assert_eq!(f.failures, 0);
+        let far = |r: &Ray, _: &Sphere| Answer::Nearest(Some(-r.origin.z + 1.0));
+        assert_eq!(gate.survey_sphere(&far, &cases)[0].failures, 4);
+        // Other kinds are skipped, not counted.
+        let plane = vec![(
+            "p".to_string(),
+            vec![Case::Plane(rays[0], Plane::new(Vec3::ZERO, Vec3::Z))],
+        )];
+        assert_eq!(gate.survey_sphere(&k, &plane)[0].cases, 0);
+        let q = |_: &Ray, _: &crate::quadric::Quadric| Answer::Nearest(None);
+        assert_eq!(gate.survey_quadric(&q, &cases)[0].cases, 0);
+    }
+}
