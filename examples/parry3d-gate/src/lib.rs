@@ -260,7 +260,7 @@ pub fn survey() -> (Vec<Surveyed>, Vec<Surveyed>) {
 /// The survey side by side: parry3d's first kernel against the others,
 /// one row a family, as `wrong hits / wrong misses`, `max / median ulps`
 /// and gate failures.
-pub fn side_by_side(kernels: &[Surveyed]) -> String {
+pub fn side_by_side(kernels: &[&Surveyed]) -> String {
     let mut out = String::from("| family | cases |");
     let mut rule = String::from("|---|---|");
     for k in kernels {
