@@ -62,7 +62,9 @@ impl Dyadic {
         let (m, e) = if biased == 0 {
             (frac, -149)
         } else {
-            (frac | 0x80_0000, biased - 150)
+            // The hidden bit (`+`, not `|`: the same value, as frac < 2²³,
+            // but a mutation of it changes the result).
+            (frac + 0x80_0000, biased - 150)
         };
         let m = if bits >> 31 == 1 { -m } else { m };
         Ok(Dyadic::new(m, e))
@@ -73,6 +75,9 @@ impl Dyadic {
     /// ```
     /// use rayoracle::exact::Dyadic;
     /// assert_eq!(Dyadic::from_f64(0.75), Dyadic::new(3, -2));
+    /// assert_eq!(Dyadic::from_f64(-0.75), Dyadic::new(-3, -2));
+    /// // The smallest subnormal.
+    /// assert_eq!(Dyadic::from_f64(f64::from_bits(1)), Dyadic::new(1, -1074));
     /// ```
     pub fn from_f64(x: f64) -> Dyadic {
         assert!(x.is_finite(), "Dyadic::from_f64 of a non-finite value");
@@ -82,7 +87,7 @@ impl Dyadic {
         let (m, e) = if biased == 0 {
             (frac, -1074)
         } else {
-            (frac | 0x0010_0000_0000_0000, biased - 1075)
+            (frac + 0x0010_0000_0000_0000, biased - 1075)
         };
         Dyadic::new(if bits >> 63 == 1 { -m } else { m }, e)
     }
