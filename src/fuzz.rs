@@ -1,6 +1,6 @@
 //! What each `cargo fuzz` target checks, as library functions: a target in
-//! `fuzz/fuzz_targets/` is one line around one of [`plane`], [`sphere`],
-//! [`quadric`], [`camera`] or [`eval_line`], and `cargo test` replays every
+//! `fuzz/fuzz_targets/` is one line around one of [`plane()`], [`sphere()`],
+//! [`quadric()`], [`camera()`] or [`eval_line`], and `cargo test` replays every
 //! committed corpus and regression input through the same functions
 //! (`tests/fuzz_replay.rs`).
 //!
