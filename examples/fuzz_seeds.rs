@@ -6,7 +6,7 @@
 //! changing the fixtures; the files are committed, and `cargo test` replays
 //! them (`tests/fuzz_replay.rs`).
 
-use rayoracle::case::{Case, parse_line};
+use rayoracle::case::parse_line;
 use std::fs;
 use std::path::Path;
 
@@ -31,12 +31,8 @@ fn main() -> std::io::Result<()> {
             let Ok(parsed) = parse_line(line) else {
                 continue;
             };
-            let target = match parsed.case {
-                Case::Plane(..) => "plane",
-                Case::Sphere(..) => "sphere",
-                Case::Quadric(..) => "quadric",
-                Case::Camera(..) => "camera",
-            };
+            // The fuzz targets are named after the kinds.
+            let target = parsed.case.kind();
             let mut bytes = Vec::new();
             rayoracle::fuzz::encode_case(&parsed.case, &mut bytes);
             write(root, target, &name, &bytes)?;
