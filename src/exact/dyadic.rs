@@ -333,6 +333,26 @@ pub fn sub3(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> [Dyadic; 3] {
 mod tests {
     use super::*;
 
+    /// `to_f64` scales in steps of 2¹⁰⁰⁰ so that neither the scale factor
+    /// nor an `i32` exponent overflows; each case below fails if a step is
+    /// skipped, reversed or taken the wrong way.
+    #[test]
+    fn to_f64_at_the_ends_of_the_range() {
+        assert_eq!(Dyadic::new(1, 1023).to_f64(), 2f64.powi(1023));
+        assert_eq!(Dyadic::new(3, 1022).to_f64(), 1.5 * 2f64.powi(1023));
+        assert_eq!(Dyadic::new(1, 5000).to_f64(), f64::INFINITY);
+        assert_eq!(Dyadic::new(-1, 5000).to_f64(), f64::NEG_INFINITY);
+        // 1.5 · 2⁻¹⁰⁷⁴ rounds (to even) to the second subnormal.
+        assert_eq!(Dyadic::new(3, -1075).to_f64(), f64::from_bits(2));
+        assert_eq!(Dyadic::new(1, -1074).to_f64(), f64::from_bits(1));
+        assert_eq!(Dyadic::new(1, -1100).to_f64(), 0.0);
+        assert_eq!(Dyadic::new(-1, -5000).to_f64(), 0.0);
+        // A 126-bit mantissa at the largest exponent: the exponent of its
+        // top 64 bits no longer fits in an i32.
+        let big = &Dyadic::new(i64::MAX, i32::MAX) * &Dyadic::new(i64::MAX, 0);
+        assert_eq!(big.to_f64(), f64::INFINITY);
+    }
+
     #[test]
     fn f32_round_trips_through_f64() {
         for x in [
