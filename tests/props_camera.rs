@@ -1,7 +1,7 @@
 //! The camera: random valid cameras and pixels within the component bound,
 //! and every construction error for the input that causes it.
 
-mod support;
+use crate::support;
 
 use glam::Vec3;
 use proptest::prelude::*;

@@ -3,7 +3,7 @@
 //! fixes it.
 #![cfg(feature = "plane")]
 
-mod support;
+use crate::support;
 
 use glam::Vec3;
 use proptest::prelude::*;

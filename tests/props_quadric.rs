@@ -2,7 +2,7 @@
 //! lines lying on the surface (`All`), judged by `rayoracle::check`.
 #![cfg(feature = "quadric")]
 
-mod support;
+use crate::support;
 
 use glam::Vec3;
 use proptest::prelude::*;

@@ -3,7 +3,7 @@
 //! judged by `rayoracle::check`.
 #![cfg(feature = "sphere")]
 
-mod support;
+use crate::support;
 
 use glam::Vec3;
 use proptest::prelude::*;

@@ -4,7 +4,7 @@
 //! neither is inside its band.
 #![cfg(all(feature = "sphere", feature = "quadric"))]
 
-mod support;
+use crate::support;
 
 use proptest::prelude::*;
 use rayoracle::Ray;

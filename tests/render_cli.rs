@@ -1,9 +1,7 @@
 //! `rayoracle render` and the no-argument default job, run as a user would.
 #![cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 
-mod cli;
-
-use cli::{run, temp_dir};
+use crate::cli::{run, temp_dir};
 
 use std::path::Path;
 

@@ -88,9 +88,14 @@ fn every_fixture_scene_is_the_same_bits_on_both_paths_and_matches_its_snapshots(
             snapshots.push((name, bytes));
         }
     }
-    for (name, bytes) in snapshots {
-        insta::assert_binary_snapshot!(&format!("{name}.png"), bytes);
-    }
+    // Named as when this file was its own test binary (the module path
+    // now starts with the harness, `all::`), so the snapshots keep their
+    // names.
+    insta::with_settings!({ prepend_module_to_snapshot => false }, {
+        for (name, bytes) in snapshots {
+            insta::assert_binary_snapshot!(&format!("render_snapshots__{name}.png"), bytes);
+        }
+    });
 }
 
 #[test]

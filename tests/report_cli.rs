@@ -2,9 +2,7 @@
 //! plots, and a broken catalogue.
 #![cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 
-mod cli;
-
-use cli::{run, temp_dir};
+use crate::cli::{run, temp_dir};
 
 #[test]
 fn quick_report_writes_the_table_the_json_rows_and_a_plot_per_kernel() {

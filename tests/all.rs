@@ -1,0 +1,26 @@
+//! The integration tests, as one test binary: each file of `tests/` is a
+//! module here (its path and name unchanged), so `cargo test` links one
+//! binary instead of twenty. That is most of an incremental test build,
+//! and what made each `cargo mutants` mutant slow. Each module keeps its
+//! own `#![cfg(feature = ...)]`.
+
+mod cli;
+mod determinism;
+mod eval_cli;
+mod fixtures;
+mod fuzz_replay;
+mod known_wrong;
+mod props_camera;
+mod props_plane;
+mod props_quadric;
+mod props_sphere;
+mod props_sphere_quadric;
+mod render_cli;
+mod render_snapshots;
+mod report_cli;
+mod scene_errors;
+mod stiff_catalogue;
+mod stiff_report;
+mod support;
+mod variants;
+mod x4_identity;
