@@ -192,6 +192,33 @@ mod tests {
         }
     }
 
+    /// The f64 guesses only decide how long the exact search takes, so
+    /// that is what is tested: a good guess is within an ulp or two of
+    /// each root, and the search then settles in a few comparisons where
+    /// a guess of 0 (or a wrong sign) needs 60 or more. Over these
+    /// quadratics (two roots, a double root, a linear one, roots far
+    /// apart) each root costs at most 12.
+    #[test]
+    fn good_guesses_make_the_search_short() {
+        use crate::exact::round::comparisons;
+        let q = |a: f32, b: f32, c: f32| Quadratic::new(dy(a), dy(b), dy(c));
+        let cases = [
+            (q(1.0, -3.0, 2.0), 2),
+            (q(3.0, 7.0, -11.0), 2),
+            (q(1.0, -1e8, 1.0), 2),
+            (q(2.0, -8.0, 8.0), 1),
+            (q(4.0, -12.0, 9.0), 1),
+            (q(0.0, 3.0, -7.0), 1),
+            (q(0.0, 5.0, 2.0), 1),
+        ];
+        for (quad, roots) in cases {
+            let mut out = ExactQuadratic::None;
+            let n = comparisons::during(|| out = quad.solve());
+            assert_eq!(out.roots().len(), roots, "{out:?}");
+            assert!(n <= 12 * roots, "{out:?}: {n} comparisons");
+        }
+    }
+
     #[test]
     fn degenerate_classes() {
         let q = |a: f32, b: f32, c: f32| Quadratic::new(dy(a), dy(b), dy(c)).solve();

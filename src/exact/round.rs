@@ -47,6 +47,11 @@ fn overflow_threshold() -> Dyadic {
 /// assert_eq!(third, 1.0f32 / 3.0);
 /// ```
 pub fn round_to_f32(cmp: impl Fn(&Dyadic) -> Ordering, guess: f64) -> f32 {
+    #[cfg(test)]
+    let cmp = |m: &Dyadic| {
+        comparisons::count();
+        cmp(m)
+    };
     let limit = overflow_threshold();
     if cmp(&limit) != Ordering::Less {
         return f32::INFINITY;
@@ -115,6 +120,26 @@ pub fn round_to_f32(cmp: impl Fn(&Dyadic) -> Ordering, guess: f64) -> f32 {
         -0.0
     } else {
         float_of(k)
+    }
+}
+
+/// How many exact comparisons `round_to_f32` made on this thread (unit
+/// tests only): its callers' guesses are only worth their speed, and this
+/// is how a test sees it.
+#[cfg(test)]
+pub(crate) mod comparisons {
+    use std::cell::Cell;
+    thread_local!(static N: Cell<usize> = const { Cell::new(0) });
+
+    pub(crate) fn count() {
+        N.with(|n| n.set(n.get() + 1));
+    }
+
+    /// The comparisons made by `f`.
+    pub(crate) fn during(f: impl FnOnce()) -> usize {
+        let before = N.with(Cell::get);
+        f();
+        N.with(Cell::get) - before
     }
 }
 
