@@ -48,8 +48,10 @@ fn overflow_threshold() -> Dyadic {
 /// ```
 pub fn round_to_f32(cmp: impl Fn(&Dyadic) -> Ordering, guess: f64) -> f32 {
     #[cfg(test)]
+    let calls = comparisons::Call::default();
+    #[cfg(test)]
     let cmp = |m: &Dyadic| {
-        comparisons::count();
+        calls.tick();
         cmp(m)
     };
     let limit = overflow_threshold();
@@ -125,14 +127,30 @@ pub fn round_to_f32(cmp: impl Fn(&Dyadic) -> Ordering, guess: f64) -> f32 {
 
 /// How many exact comparisons `round_to_f32` made on this thread (unit
 /// tests only): its callers' guesses are only worth their speed, and this
-/// is how a test sees it.
+/// is how a test sees it. A call that makes more than [`comparisons::CAP`]
+/// panics: the search does not converge (a loop that never ends would
+/// otherwise hang the test instead of failing it).
 #[cfg(test)]
 pub(crate) mod comparisons {
     use std::cell::Cell;
     thread_local!(static N: Cell<usize> = const { Cell::new(0) });
 
-    pub(crate) fn count() {
-        N.with(|n| n.set(n.get() + 1));
+    /// Far above the 3 + 33 + 32 + 2 a search can need over 2³² keys.
+    pub(crate) const CAP: usize = 200;
+
+    /// One call's comparisons.
+    #[derive(Default)]
+    pub(crate) struct Call(Cell<usize>);
+
+    impl Call {
+        pub(crate) fn tick(&self) {
+            self.0.set(self.0.get() + 1);
+            assert!(
+                self.0.get() <= CAP,
+                "round_to_f32 made more than {CAP} comparisons"
+            );
+            N.with(|n| n.set(n.get() + 1));
+        }
     }
 
     /// The comparisons made by `f`.
@@ -170,6 +188,41 @@ mod tests {
                     x.to_bits(),
                     "{x:e} from {guess}"
                 );
+            }
+        }
+    }
+
+    /// Any guess, however bad, costs at most a gallop and a bisection over
+    /// the 2³² keys, and gives the same float; a guess on the answer
+    /// settles it in a few comparisons.
+    #[test]
+    fn the_search_is_logarithmic_from_any_guess_and_short_from_a_good_one() {
+        let third = |p: i64| (Dyadic::new(p, 0), Dyadic::new(3, 0));
+        let xs = [
+            third(1),
+            third(-1),
+            third(1_000_000_007),
+            (Dyadic::new(1, -140), Dyadic::new(3, 0)),
+            (Dyadic::new(-7, 120), Dyadic::new(3, 0)),
+        ];
+        for (p, q) in xs {
+            let good = (p.to_f64()) / (q.to_f64());
+            let mut want = 0.0f32;
+            let n = comparisons::during(|| want = ratio(p.clone(), q.clone(), good));
+            assert!(n <= 8, "{want:e} from its own value: {n} comparisons");
+            for guess in [
+                0.0,
+                -good,
+                good * 1e30,
+                f64::NAN,
+                f64::INFINITY,
+                -1e300,
+                1e-300,
+            ] {
+                let mut got = 0.0f32;
+                let n = comparisons::during(|| got = ratio(p.clone(), q.clone(), guess));
+                assert_eq!(got.to_bits(), want.to_bits(), "{want:e} from {guess:e}");
+                assert!(n <= 72, "{want:e} from {guess:e}: {n} comparisons");
             }
         }
     }
