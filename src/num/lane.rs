@@ -296,4 +296,30 @@ mod tests {
         ];
         assert_eq!(v.to_array().map(f32::to_bits), s.map(f32::to_bits));
     }
+
+    /// min takes `other` on ties and NaN on both paths, which is what
+    /// makes `min(−0, +0)` the same bits on both (cargo-mutants: `<=` in the
+    /// scalar min passed every other test).
+    #[test]
+    fn min_uses_the_minps_rule_on_both_paths() {
+        let n = f32::NAN;
+        let pairs = [
+            (-0.0f32, 0.0f32),
+            (0.0, -0.0),
+            (1.0, n),
+            (n, 1.0),
+            (2.0, 1.0),
+            (1.0, 2.0),
+        ];
+        let v = Lane::min(
+            f32x4::from([pairs[0].0, pairs[1].0, pairs[2].0, pairs[3].0]),
+            f32x4::from([pairs[0].1, pairs[1].1, pairs[2].1, pairs[3].1]),
+        );
+        let s = pairs.map(|(a, b)| Lane::min(a, b).to_bits());
+        assert_eq!(v.to_array().map(f32::to_bits), [s[0], s[1], s[2], s[3]]);
+        assert_eq!(s[0], 0.0f32.to_bits());
+        assert_eq!(s[1], (-0.0f32).to_bits());
+        assert!(f32::from_bits(s[2]).is_nan());
+        assert_eq!([s[3], s[4], s[5]], [1.0f32, 1.0, 1.0].map(f32::to_bits));
+    }
 }
