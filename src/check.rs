@@ -869,6 +869,44 @@ fn sphere_as_quadric_given(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The maxima are over every root and component, and None without any
+    /// (cargo-mutants: both passed as constant `Some(0)`).
+    #[test]
+    fn case_report_maxima_are_over_all_entries() {
+        let root = |ulps| RootCheck {
+            exact: 1.0,
+            got: 1.0,
+            ulps,
+            kappa: 1.0,
+            bound: 3.0,
+        };
+        let comp = |err_ulps| ComponentCheck {
+            axis: 0,
+            exact: 1.0,
+            got: 1.0,
+            scale: 1.0,
+            err_ulps,
+            bound: 4.0,
+        };
+        let mut r = CaseReport {
+            kind: "sphere",
+            status: Status::Checked,
+            exact_class: "two",
+            got_class: "two",
+            margin: 1.0,
+            band: 0.0,
+            roots: vec![],
+            components: vec![],
+        };
+        assert_eq!((r.max_root_ulps(), r.max_component_ulps()), (None, None));
+        r.roots = vec![root(3), root(7), root(2)];
+        r.components = vec![comp(0.5), comp(2.5), comp(1.0)];
+        assert_eq!(
+            (r.max_root_ulps(), r.max_component_ulps()),
+            (Some(7), Some(2.5))
+        );
+    }
     use glam::Vec3;
 
     #[cfg(feature = "sphere")]
