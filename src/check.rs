@@ -870,6 +870,82 @@ fn sphere_as_quadric_given(
 mod tests {
     use super::*;
 
+    /// κ at a root by hand: the unit sphere as a quadric, o = (0, 0, −5),
+    /// d = z. The term sums are 1 (α), 10 (β) and 25 + 1 (γ), and
+    /// p'(t) = 2t − 10, so κ(4) = (48 + 120 + 78) / (2·4) and κ(6) =
+    /// (108 + 180 + 78) / (2·6). A zero root is exact only without γ terms.
+    #[cfg(feature = "quadric")]
+    #[test]
+    fn quadric_kappa_at_a_root_by_hand() {
+        let q = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+        let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
+        let eq = quadric::exact::quadratic(&ray, &q).unwrap();
+        assert_eq!(quadric_kappa_at(&ray, &q, &eq, 4.0), 30.75);
+        assert_eq!(quadric_kappa_at(&ray, &q, &eq, 6.0), 30.5);
+        assert_eq!(
+            quadric_kappa_at(&ray, &q, &eq, f64::INFINITY),
+            f64::INFINITY
+        );
+        assert_eq!(quadric_kappa_at(&ray, &q, &eq, 0.0), f64::INFINITY);
+        // A cone x² + y² − z² = 0 from its apex: no γ term at all.
+        let cone = Quadric::new([1.0, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
+        let apex = Ray::new(Vec3::ZERO, Vec3::new(1.0, 0.0, 2.0));
+        let eq = quadric::exact::quadratic(&apex, &cone).unwrap();
+        assert_eq!(quadric_kappa_at(&apex, &cone, &eq, 0.0), 0.0);
+    }
+
+    /// Construction errors must be the same error (NaN angles by bits).
+    #[test]
+    fn camera_errors_must_match_to_be_rejected_alike() {
+        use CameraError::*;
+        assert!(same_error(
+            &AngleOutOfRange(f32::NAN),
+            &AngleOutOfRange(f32::NAN)
+        ));
+        assert!(!same_error(&AngleOutOfRange(4.0), &AngleOutOfRange(5.0)));
+        assert!(same_error(&DirZero, &DirZero));
+        assert!(!same_error(&DirZero, &UpZero));
+        let bad = CameraParams::new(Vec3::ZERO, Vec3::Y, Vec3::Y, 1.0, [8, 8]);
+        assert!(matches!(
+            check_camera(&bad, [0, 0], Err(UpZero)),
+            Err(Violation::Construction { .. })
+        ));
+    }
+
+    /// A direction component moved by many ulps is reported as such.
+    #[test]
+    fn a_wrong_camera_component_is_a_violation() {
+        let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [64, 48]);
+        let mut ray = p.build().unwrap().ray(5, 7);
+        ray.dir.x = f32::from_bits(ray.dir.x.to_bits() + 64);
+        let v = check_camera(&p, [5, 7], Ok(ray)).unwrap_err();
+        assert!(
+            matches!(v, Violation::Component(c) if c.axis == 0 && c.err_ulps > 4.0),
+            "{v}"
+        );
+    }
+
+    /// The sphere-as-quadric check declines where it does not apply.
+    #[cfg(all(feature = "sphere", feature = "quadric"))]
+    #[test]
+    fn sphere_as_quadric_declines_a_zero_direction_and_an_inexact_quadric() {
+        let s = Sphere::new(Vec3::new(1.0, 0.0, 0.0), 2.0);
+        assert_eq!(
+            sphere_as_quadric(&Ray::new(Vec3::Z, Vec3::ZERO), &s),
+            Ok(false)
+        );
+        // |C|² − R² = 9 − 1e-6 is not an f32.
+        let inexact = Sphere::new(Vec3::new(3.0, 0.0, 0.0), 1e-3);
+        assert_eq!(
+            sphere_as_quadric(&Ray::new(Vec3::ZERO, Vec3::X), &inexact),
+            Ok(false)
+        );
+        assert_eq!(
+            sphere_as_quadric(&Ray::new(Vec3::ZERO, Vec3::X), &s),
+            Ok(true)
+        );
+    }
+
     /// The maxima are over every root and component, and None without any
     /// (cargo-mutants: both passed as constant `Some(0)`).
     #[test]
