@@ -793,6 +793,8 @@ impl Summary {
     /// let mut s = Summary::default();
     /// s.add(&evaluate(1, r#"{"kind":"plane","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,3],"normal":["inf",0,1]}"#).unwrap());
     /// assert_eq!(s.kind("plane").unwrap().errors, 1);
+    /// s.add(&evaluate(2, r#"{"kind":"plane","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,3],"normal":[0,0,1]}"#).unwrap());
+    /// assert_eq!((s.lines, s.kind("plane").unwrap().cases), (2, 2));
     /// assert!(s.all_ok());
     /// # }
     /// ```
