@@ -894,6 +894,21 @@ mod tests {
         assert_eq!(quadric_kappa_at(&apex, &cone, &eq, 0.0), 0.0);
     }
 
+    /// The plane x = 2⁻¹⁰⁰ as a linear quadric (α = 0), from the origin
+    /// along x: its root sits exactly on the domain's lower edge, which is
+    /// inside; and since α is exactly 0, not merely small, a wrong class is
+    /// not excused by the α band.
+    #[cfg(feature = "quadric")]
+    #[test]
+    fn a_linear_quadric_at_the_domain_edge_is_checked_and_its_class_enforced() {
+        let edge = 2f32.powi(-100);
+        let q = Quadric::new([0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, -edge]);
+        let ray = Ray::new(Vec3::ZERO, Vec3::X);
+        let r = check_quadric(&ray, &q, QuadricHit::One(edge)).unwrap();
+        assert_eq!((r.status, r.exact_class), (Status::Checked, "one"));
+        assert!(check_quadric(&ray, &q, QuadricHit::None).is_err());
+    }
+
     /// Construction errors must be the same error (NaN angles by bits).
     #[test]
     fn camera_errors_must_match_to_be_rejected_alike() {
