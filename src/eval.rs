@@ -931,6 +931,40 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
+    /// Every kind of line lands in its own counter, once per line.
+    #[test]
+    fn summary_counts_each_kind_of_line() {
+        let mut s = Summary::default();
+        let internal = || LineReport::Internal {
+            line: 1,
+            error: "boom".into(),
+        };
+        let invalid = || LineReport::Invalid {
+            line: 2,
+            kind: "camera",
+            family: None,
+            error: "angle".into(),
+        };
+        for _ in 0..2 {
+            s.add(&internal());
+            s.add(&invalid());
+        }
+        s.add(&evaluate(3, "{").unwrap());
+        let cam = s.kind("camera").unwrap();
+        assert_eq!(
+            (
+                s.lines,
+                s.internal,
+                s.invalid,
+                s.malformed,
+                cam.cases,
+                cam.errors
+            ),
+            (5, 2, 2, 1, 2, 2)
+        );
+        assert!(!s.all_ok());
+    }
+
     fn num(bits: u32) -> String {
         format!("\"{:#010x}\"", bits)
     }
