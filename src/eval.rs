@@ -965,6 +965,21 @@ mod tests {
         assert!(!s.all_ok());
     }
 
+    /// A class mismatch is tallied as compared and mismatched, twice over
+    /// two lines: the exact tangent of `sphere/tangent-exact-large`, which
+    /// lies inside the band, where both implementations say two roots.
+    #[cfg(feature = "sphere")]
+    #[test]
+    fn summary_tallies_class_mismatches() {
+        let line = r#"{"kind":"sphere","origin":[-9,-8,-72],"dir":[312,-387,4],"center":[0,0,0],"radius":73}"#;
+        let mut s = Summary::default();
+        s.add(&evaluate(1, line).unwrap());
+        s.add(&evaluate(2, line).unwrap());
+        for t in &s.kind("sphere").unwrap().impls {
+            assert_eq!((t.compared, t.class_mismatches, t.values), (2, 2, 0));
+        }
+    }
+
     fn num(bits: u32) -> String {
         format!("\"{:#010x}\"", bits)
     }
