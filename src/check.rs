@@ -830,6 +830,19 @@ fn sphere_as_quadric_given(
     qs: &crate::exact::Quadratic,
     es: SphereHit,
 ) -> Result<bool, Violation> {
+    sphere_as_quadric_with(ray, s, qs, es, sphere::reference::intersect)
+}
+
+/// The same, with the sphere kernel given: the cross-check only fires when
+/// a kernel is wrong, so a test passes in a wrong one to see it fire.
+#[cfg(all(feature = "sphere", feature = "quadric"))]
+fn sphere_as_quadric_with(
+    ray: &Ray,
+    s: &Sphere,
+    qs: &crate::exact::Quadratic,
+    es: SphereHit,
+    sphere_kernel: fn(&Ray, &Sphere) -> SphereHit,
+) -> Result<bool, Violation> {
     let (q, exact) = Quadric::from_sphere(s);
     if !exact || ray.dir == glam::Vec3::ZERO {
         return Ok(false);
@@ -850,7 +863,7 @@ fn sphere_as_quadric_given(
     }
     // The sphere reference is judged by check_sphere; here only whether it
     // is outside its band, which is when check_sphere would say Checked.
-    let hs = sphere::reference::intersect(ray, s);
+    let hs = sphere_kernel(ray, s);
     let sphere_clear = sphere::in_domain(ray, s)
         && (&qs.alpha * &qs.discriminant()).mul_pow2(-2).to_f64().abs() > sphere::band(ray, s);
     let hq = quadric::reference::intersect(ray, &q);
@@ -907,6 +920,36 @@ mod tests {
         let r = check_quadric(&ray, &q, QuadricHit::One(edge)).unwrap();
         assert_eq!((r.status, r.exact_class), (Status::Checked, "one"));
         assert!(check_quadric(&ray, &q, QuadricHit::None).is_err());
+    }
+
+    /// The sphere-as-quadric cross-check fires when a sphere kernel's class
+    /// disagrees with the quadric reference's outside the sphere's band,
+    /// and not inside it. Two near-tangent stiff cases, with margins 1.9
+    /// and 0.37 times the band, and a sphere kernel that always answers the
+    /// other class.
+    #[cfg(all(feature = "sphere", feature = "quadric"))]
+    #[test]
+    fn the_sphere_as_quadric_cross_check_fires_outside_the_band_only() {
+        let other = |r: &Ray, s: &Sphere| match sphere::reference::intersect(r, s) {
+            SphereHit::None => SphereHit::Two(1.0, 2.0),
+            _ => SphereHit::None,
+        };
+        let run = |line: &str| {
+            let Case::Sphere(ray, s) = crate::case::parse_line(line).unwrap().case else {
+                unreachable!("a sphere line")
+            };
+            let qs = sphere::exact::quadratic(&ray, &s).unwrap();
+            let es = sphere::exact::classify(&qs);
+            sphere_as_quadric_with(&ray, &s, &qs, es, other)
+        };
+        let clear = r#"{"kind":"sphere","origin":[0.83984375,1.125,-0.234375],"dir":[-20,48,"0xb98df1f5"],"center":[0.15625,0.125,-0.234375],"radius":1.015625}"#;
+        let in_band = r#"{"kind":"sphere","origin":[-1536,-2944,-8512],"dir":[-16,"0xafb1fc07",-88],"center":[-1792,-1664,-1920],"radius":1920}"#;
+        assert!(
+            matches!(run(clear), Err(Violation::SphereAsQuadric(_))),
+            "{:?}",
+            run(clear)
+        );
+        assert_eq!(run(in_band), Ok(true));
     }
 
     /// Construction errors must be the same error (NaN angles by bits).
