@@ -965,6 +965,34 @@ mod tests {
         assert!(!s.all_ok());
     }
 
+    /// The table shows a NaN-against-number maximum as `nan`, and the
+    /// invalid and internal counts only when there are some.
+    #[test]
+    fn summary_render_shows_nan_and_only_nonzero_problem_counts() {
+        let mut s = Summary {
+            lines: 3,
+            ..Summary::default()
+        };
+        s.kinds[0].cases = 3;
+        s.kinds[0].impls = vec![
+            ImplTally {
+                max_ulps: u64::MAX,
+                ..ImplTally::default()
+            },
+            ImplTally {
+                max_ulps: 7,
+                ..ImplTally::default()
+            },
+        ];
+        let t = s.render();
+        assert!(t.contains(" nan\n") && t.contains(" 7\n"), "{t}");
+        assert!(t.ends_with("3 non-blank lines, 0 malformed\n"), "{t}");
+        s.invalid = 1;
+        s.internal = 2;
+        let t = s.render();
+        assert!(t.ends_with(", 1 invalid, 2 internal errors\n"), "{t}");
+    }
+
     /// A class mismatch is tallied as compared and mismatched, twice over
     /// two lines: the exact tangent of `sphere/tangent-exact-large`, which
     /// lies inside the band, where both implementations say two roots.
