@@ -477,3 +477,19 @@ pub const TARGETS: &[(&str, Check)] = &[
     #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
     ("scene", crate::scene::fuzz::check),
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::SPECIALS;
+
+    /// The specials are 16 different bit patterns (−0 and +0 both there):
+    /// a duplicate would be a value the fuzzer can no longer pick by index.
+    #[test]
+    fn the_specials_are_distinct_bit_patterns() {
+        let mut bits: Vec<u32> = SPECIALS.iter().map(|x| x.to_bits()).collect();
+        bits.sort_unstable();
+        bits.dedup();
+        assert_eq!(bits.len(), SPECIALS.len());
+        assert!(bits.contains(&(-0.0f32).to_bits()));
+    }
+}
