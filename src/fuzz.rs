@@ -480,7 +480,22 @@ pub const TARGETS: &[(&str, Check)] = &[
 
 #[cfg(test)]
 mod tests {
-    use super::SPECIALS;
+    use super::{FuzzF32, SPECIALS};
+    use arbitrary::{Arbitrary, Unstructured};
+
+    /// Every mode decodes as documented (i16 and u32 are little-endian).
+    #[test]
+    fn each_mode_decodes_as_documented() {
+        let f = |b: &[u8]| FuzzF32::arbitrary(&mut Unstructured::new(b)).unwrap().0;
+        assert_eq!(f(&[1, 17]), SPECIALS[1]);
+        assert_eq!(f(&[1, 17]).to_bits(), (-0.0f32).to_bits());
+        // 3 · 2⁻¹²⁸ (i16 = 3, i8 = −128), exact in the subnormal range.
+        assert_eq!(f(&[2, 3, 0, 0x80]), f32::from_bits(3 << 21));
+        assert_eq!(f(&[10, 0x00, 0xff, 0]), -256.0);
+        // −512 / 256.
+        assert_eq!(f(&[3, 0x00, 0xfe]), -2.0);
+        assert_eq!(f(&[7, 0x7f]), 127.0);
+    }
 
     /// The specials are 16 different bit patterns (−0 and +0 both there):
     /// a duplicate would be a value the fuzzer can no longer pick by index.
