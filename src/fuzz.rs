@@ -484,6 +484,31 @@ mod tests {
     use super::{FuzzF32, SPECIALS};
     use arbitrary::{Arbitrary, Unstructured};
 
+    /// What `encode_case` writes, the targets' decoder reads back: the
+    /// same four cases (bit for bit, −0 and NaN included) and the interval.
+    #[cfg(feature = "sphere")]
+    #[test]
+    fn an_encoded_sphere_case_decodes_to_itself() {
+        use super::{decode, encode_case, f, ray, vec3};
+        use crate::{Ray, case::Case, sphere::Sphere};
+        use glam::Vec3;
+        let (r, s) = (
+            Ray::new(Vec3::new(-0.0, 1.5, f32::NAN), Vec3::new(3.0, -2.0, 1e-40)),
+            Sphere::new(Vec3::new(7.0, -8.0, 9.0), 0.25),
+        );
+        let mut b = Vec::new();
+        encode_case(&Case::Sphere(r, s), &mut b);
+        let (cases, interval) =
+            decode(&b, |u| Ok((ray(u)?, Sphere::new(vec3(u)?, f(u)?)))).unwrap();
+        let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+        for (rd, sd) in cases {
+            assert_eq!(bits(rd.origin), bits(r.origin));
+            assert_eq!(bits(rd.dir), bits(r.dir));
+            assert_eq!((bits(sd.center), sd.radius), (bits(s.center), s.radius));
+        }
+        assert!(interval.0 <= interval.1, "{interval:?}");
+    }
+
     /// Every mode decodes as documented (i16 and u32 are little-endian).
     #[test]
     fn each_mode_decodes_as_documented() {
