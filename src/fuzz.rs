@@ -509,6 +509,22 @@ mod tests {
         assert!(interval.0 <= interval.1, "{interval:?}");
     }
 
+    /// A violation becomes a failure naming its lane and case; an
+    /// acceptable answer passes.
+    #[test]
+    fn a_violation_is_a_failure_naming_lane_and_case() {
+        use super::judged;
+        use crate::check::Violation;
+        let bad: Result<(), Violation> = Err(Violation::SphereAsQuadric("x".into()));
+        let f = judged(2, &"the case", bad).unwrap_err();
+        assert!(
+            f.0.starts_with("lane 2: ") && f.0.contains("\"the case\""),
+            "{}",
+            f.0
+        );
+        assert_eq!(judged(0, &"ok", Ok::<(), Violation>(())), Ok(()));
+    }
+
     /// Every mode decodes as documented (i16 and u32 are little-endian).
     #[test]
     fn each_mode_decodes_as_documented() {
