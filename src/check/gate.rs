@@ -980,8 +980,22 @@ fn sphere_band(ray: &Ray, s: &Sphere) -> f64 {
 }
 
 fn judge_sphere(d: &Declared, ray: &Ray, s: &Sphere, got: Answer) -> Verdict {
+    exact_sphere(d, ray, s).map_or(Verdict::Pass, |e| judge(d, &e, got))
+}
+
+fn judge_plane(d: &Declared, ray: &Ray, p: &Plane, got: Answer) -> Verdict {
+    exact_plane(d, ray, p).map_or(Verdict::Pass, |e| judge(d, &e, got))
+}
+
+fn judge_quadric(d: &Declared, ray: &Ray, q: &Quadric, got: Answer) -> Verdict {
+    exact_quadric(d, ray, q).map_or(Verdict::Pass, |e| judge(d, &e, got))
+}
+
+/// The exact answer a sphere case is judged against, or `None` where the
+/// oracle has none (non-finite inputs): then any answer passes.
+fn exact_sphere(d: &Declared, ray: &Ray, s: &Sphere) -> Option<Exact> {
     let Ok(q) = sphere::exact::quadratic(ray, s) else {
-        return Verdict::Pass;
+        return None;
     };
     let exact = sphere::exact::classify(&q);
     let margin = (&q.alpha * &q.discriminant()).mul_pow2(-2).to_f64();
@@ -1002,15 +1016,17 @@ fn judge_sphere(d: &Declared, ray: &Ray, s: &Sphere, got: Answer) -> Verdict {
         alpha_small: false,
         kappa,
     };
-    judge(d, &e, got)
+    Some(e)
 }
 
-fn judge_plane(d: &Declared, ray: &Ray, p: &Plane, got: Answer) -> Verdict {
+/// The exact answer a plane case is judged against, or `None` where the
+/// oracle has none (non-finite inputs): then any answer passes.
+fn exact_plane(d: &Declared, ray: &Ray, p: &Plane) -> Option<Exact> {
     let Ok(exact) = plane::exact::intersect(ray, p) else {
-        return Verdict::Pass;
+        return None;
     };
     let (Ok(dir), Ok(n)) = (vec3(ray.dir.to_array()), vec3(p.normal.to_array())) else {
-        return Verdict::Pass;
+        return None;
     };
     let margin = dot(&dir, &n).to_f64();
     let e = Exact {
@@ -1023,12 +1039,14 @@ fn judge_plane(d: &Declared, ray: &Ray, p: &Plane, got: Answer) -> Verdict {
         alpha_small: false,
         kappa: vec![super::plane_condition(ray, p)],
     };
-    judge(d, &e, got)
+    Some(e)
 }
 
-fn judge_quadric(d: &Declared, ray: &Ray, q: &Quadric, got: Answer) -> Verdict {
+/// The exact answer a quadric case is judged against, or `None` where the
+/// oracle has none (non-finite inputs): then any answer passes.
+fn exact_quadric(d: &Declared, ray: &Ray, q: &Quadric) -> Option<Exact> {
     let Ok(eq) = quadric::exact::quadratic(ray, q) else {
-        return Verdict::Pass;
+        return None;
     };
     let exact = quadric::exact::classify(&eq);
     let margin = eq.discriminant().to_f64();
@@ -1056,7 +1074,7 @@ fn judge_quadric(d: &Declared, ray: &Ray, q: &Quadric, got: Answer) -> Verdict {
         alpha_small: alpha_small && !small_integers(&Case::Quadric(*ray, *q)),
         kappa,
     };
-    judge(d, &e, got)
+    Some(e)
 }
 
 fn judge_camera(d: &Declared, p: &CameraParams, px: [u32; 2], got: Option<Ray>) -> Verdict {

@@ -22,11 +22,9 @@
 //! assert_eq!((far.wrong_hits, far.wrong_misses, far.max_ulps), (0, 0, 0));
 //! ```
 
-use super::{Answer, Gate, PlaneKernel, QuadricKernel, SphereKernel, Verdict};
+use super::{Answer, Exact, Gate, PlaneKernel, QuadricKernel, SphereKernel, Verdict, judge};
 use crate::case::Case;
-use crate::hit::Intersection;
 use crate::ulp::ulps;
-use crate::{plane, quadric, sphere};
 use std::fmt::Write;
 
 /// One family's numbers.
@@ -85,11 +83,12 @@ enum Truth {
     Nearest(Option<f32>),
 }
 
-fn truth(h: Result<impl Intersection, impl std::fmt::Debug>) -> Truth {
-    match h {
-        Err(_) => Truth::Refused,
-        Ok(h) if h.is_everywhere() => Truth::Everywhere,
-        Ok(h) => Truth::Nearest(h.roots().as_slice().iter().copied().find(|&t| t > 0.0)),
+/// The oracle's answer as the gate judged it (solved once for both).
+fn truth(e: Option<&Exact>) -> Truth {
+    match e {
+        None => Truth::Refused,
+        Some(Exact { roots: None, .. }) => Truth::Everywhere,
+        Some(Exact { roots: Some(r), .. }) => Truth::Nearest(r.iter().copied().find(|&t| t > 0.0)),
     }
 }
 
@@ -163,8 +162,11 @@ impl Gate {
         self.survey(families, |c| match c {
             Case::Sphere(r, s) => {
                 let got = k.intersect(r, s);
-                let v = super::judge_sphere(&self.declared, r, s, got.clone());
-                Some((truth(sphere::exact::intersect(r, s)), got, v))
+                let e = super::exact_sphere(&self.declared, r, s);
+                let v = e
+                    .as_ref()
+                    .map_or(Verdict::Pass, |e| judge(&self.declared, e, got.clone()));
+                Some((truth(e.as_ref()), got, v))
             }
             _ => None,
         })
@@ -189,8 +191,11 @@ impl Gate {
         self.survey(families, |c| match c {
             Case::Plane(r, p) => {
                 let got = k.intersect(r, p);
-                let v = super::judge_plane(&self.declared, r, p, got.clone());
-                Some((truth(plane::exact::intersect(r, p)), got, v))
+                let e = super::exact_plane(&self.declared, r, p);
+                let v = e
+                    .as_ref()
+                    .map_or(Verdict::Pass, |e| judge(&self.declared, e, got.clone()));
+                Some((truth(e.as_ref()), got, v))
             }
             _ => None,
         })
@@ -205,8 +210,11 @@ impl Gate {
         self.survey(families, |c| match c {
             Case::Quadric(r, q) => {
                 let got = k.intersect(r, q);
-                let v = super::judge_quadric(&self.declared, r, q, got.clone());
-                Some((truth(quadric::exact::intersect(r, q)), got, v))
+                let e = super::exact_quadric(&self.declared, r, q);
+                let v = e
+                    .as_ref()
+                    .map_or(Verdict::Pass, |e| judge(&self.declared, e, got.clone()));
+                Some((truth(e.as_ref()), got, v))
             }
             _ => None,
         })
