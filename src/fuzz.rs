@@ -525,6 +525,57 @@ mod tests {
         assert_eq!(judged(0, &"ok", Ok::<(), Violation>(())), Ok(()));
     }
 
+    /// The x4-against-reference check the targets run fails on each way x4
+    /// can differ: a lane's bits (−0 against +0 included), a nearest hit
+    /// that should not be there, one that is missing, and a different `t`;
+    /// and passes when x4 agrees (a miss reads as `+∞`).
+    #[cfg(feature = "plane")]
+    #[test]
+    fn x4_matches_fails_on_each_kind_of_difference() {
+        use super::x4_matches;
+        use crate::plane::PlaneHit::{self, Hit, InPlane, Parallel};
+        use wide::f32x4;
+        let reference: [PlaneHit; 4] = [Hit(1.0), Parallel, Hit(-2.0), InPlane];
+        let interval = (0.0, 10.0);
+        let inf = f32::INFINITY;
+        let nearest = |mask: [bool; 4], t: [f32; 4]| {
+            let m = f32x4::from(mask.map(|b| if b { f32::from_bits(!0) } else { 0.0 }));
+            (m, f32x4::from(t))
+        };
+        let good = nearest([true, false, false, true], [1.0, inf, inf, 0.0]);
+        assert_eq!(x4_matches(reference, &reference, good, interval), Ok(()));
+
+        let mut lanes = reference;
+        lanes[2] = Hit(-2.5);
+        let e = x4_matches(lanes, &reference, good, interval).unwrap_err();
+        assert!(e.0.starts_with("lane 2: x4 Hit(-2.5)"), "{}", e.0);
+        let zeros = [Hit(0.0), Parallel, Parallel, Parallel];
+        let e = x4_matches(
+            [Hit(-0.0), Parallel, Parallel, Parallel],
+            &zeros,
+            good,
+            interval,
+        );
+        assert!(e.unwrap_err().0.starts_with("lane 0: x4 Hit(-0.0)"));
+
+        for (bad, lane) in [
+            (nearest([true, true, false, true], [1.0, 5.0, inf, 0.0]), 1),
+            (
+                nearest([true, false, false, false], [1.0, inf, inf, inf]),
+                3,
+            ),
+            (nearest([true, false, false, true], [1.5, inf, inf, 0.0]), 0),
+            (nearest([true, false, false, true], [1.0, 0.0, inf, 0.0]), 1),
+        ] {
+            let e = x4_matches(reference, &reference, bad, interval).unwrap_err();
+            assert!(
+                e.0.starts_with(&format!("lane {lane}: x4 nearest")),
+                "{}",
+                e.0
+            );
+        }
+    }
+
     /// Every mode decodes as documented (i16 and u32 are little-endian).
     #[test]
     fn each_mode_decodes_as_documented() {
