@@ -170,11 +170,10 @@ pub fn parse_f32(field: &str, raw: &RawValue) -> Result<f32, CaseError> {
             )),
         };
     }
-    let starts_numeric = text.starts_with(|c: char| c == '-' || c.is_ascii_digit());
-    match text.parse::<f32>() {
-        Ok(x) if starts_numeric => Ok(x),
-        _ => Err(err(field, format!("expected a number, got {}", show(raw)))),
-    }
+    // A RawValue is valid JSON, so text that Rust parses as an f32 is a JSON
+    // number: "inf", "nan", "+1" and ".5" are not JSON and never get here.
+    text.parse::<f32>()
+        .map_err(|_| err(field, format!("expected a number, got {}", show(raw))))
 }
 
 fn parse_array<'a>(
@@ -385,6 +384,33 @@ mod tests {
 
     fn e(line: &str) -> String {
         parse_line(line).unwrap_err().to_string()
+    }
+
+    /// `parse_f32` trusts that a `RawValue` is JSON: the texts Rust would
+    /// parse as an f32 but JSON has no number for cannot be one.
+    #[test]
+    fn a_raw_value_cannot_hold_a_non_json_number() {
+        use serde_json::value::RawValue;
+        for t in ["inf", "-inf", "nan", "NaN", "+1", ".5", "1.", "infinity"] {
+            assert!(t.parse::<f32>().is_ok(), "{t}");
+            assert!(RawValue::from_string(t.to_string()).is_err(), "{t}");
+        }
+        let raw = RawValue::from_string("-0".to_string()).unwrap();
+        assert_eq!(
+            parse_f32("x", &raw).map(f32::to_bits),
+            Ok((-0.0f32).to_bits())
+        );
+    }
+
+    /// A raw value in a message is cut to 40 characters and an ellipsis;
+    /// 40 or fewer are shown whole.
+    #[test]
+    fn show_cuts_long_values_at_40_characters() {
+        let raw = |s: &str| serde_json::value::RawValue::from_string(s.to_string()).unwrap();
+        let forty = format!("\"{}\"", "é".repeat(38));
+        assert_eq!(show(&raw(&forty)), forty);
+        let long = format!("\"{}\"", "é".repeat(45));
+        assert_eq!(show(&raw(&long)), format!("\"{}…", "é".repeat(39)));
     }
 
     #[cfg(feature = "sphere")]
