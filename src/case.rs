@@ -444,6 +444,10 @@ mod tests {
     #[test]
     fn errors_name_the_field_and_the_problem_in_every_build() {
         assert_eq!(e(r#"[1,2]"#), "json: expected an object, one case per line");
+        assert_eq!(
+            e(r#"{"kind":"cube"}"#),
+            r#"kind: unknown kind "cube"; expected plane, sphere, quadric or camera"#
+        );
         assert!(e(r#"{"kind":"#).starts_with("json: "));
         assert_eq!(
             e(
