@@ -157,6 +157,9 @@ use crate::Ray;
 /// let p = Plane::new(Vec3::ZERO, Vec3::Z);
 /// assert!(in_domain(&Ray::new(Vec3::new(0.0, -5.0, 2.0), Vec3::Z), &p));
 /// assert!(!in_domain(&Ray::new(Vec3::new(0.0, -5.0, 2.3e-41), Vec3::Z), &p));
+/// // An origin exactly on the plane is in it: w·n is exactly 0.
+/// let tiny = Plane::new(Vec3::new(1.0, 0.0, 1e-30), Vec3::Z);
+/// assert!(in_domain(&Ray::new(Vec3::new(0.0, 0.0, 1e-30), Vec3::ONE), &tiny));
 /// ```
 pub fn in_domain(ray: &Ray, plane: &Plane) -> bool {
     use crate::num::scale::{Scale, crush_loss, in_range, negligible};

@@ -178,6 +178,14 @@ impl Frame {
     /// let mut b = a.clone();
     /// b.depth[1] = 2.0;
     /// assert_eq!(a.first_difference(&b), Some((1, 0)));
+    /// assert_eq!(a.first_difference(&a), None);
+    /// // Row-major: index 5 of a 3×3 frame is (2, 1), and 8 is (2, 2).
+    /// let c = Frame { width: 3, height: 3, depth: vec![0.0; 9], ..a };
+    /// let mut d = c.clone();
+    /// d.depth[8] = -0.0;
+    /// assert_eq!(c.first_difference(&d), Some((2, 2)));
+    /// d.depth[5] = 1.0;
+    /// assert_eq!(c.first_difference(&d), Some((2, 1)));
     /// ```
     pub fn first_difference(&self, other: &Frame) -> Option<(u32, u32)> {
         let n = (self.width * self.height) as usize;
