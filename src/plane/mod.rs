@@ -160,6 +160,10 @@ use crate::Ray;
 /// // An origin exactly on the plane is in it: w·n is exactly 0.
 /// let tiny = Plane::new(Vec3::new(1.0, 0.0, 1e-30), Vec3::Z);
 /// assert!(in_domain(&Ray::new(Vec3::new(0.0, 0.0, 1e-30), Vec3::ONE), &tiny));
+/// // Beside 1e30 the prescaling rounds 1e-20 to 0, and what it rounds away
+/// // is all of Σ|(aᵢ − oᵢ)nᵢ| (which is 0 exactly): outside.
+/// let far = Plane::new(Vec3::new(1e30, 1.0, 1e-20), Vec3::new(0.0, 1.0, 1.0));
+/// assert!(!in_domain(&Ray::new(Vec3::new(0.0, 1.0, 1e-20), Vec3::Y), &far));
 /// ```
 pub fn in_domain(ray: &Ray, plane: &Plane) -> bool {
     use crate::num::scale::{Scale, crush_loss, in_range, negligible};
