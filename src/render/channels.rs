@@ -67,6 +67,8 @@ impl Channels {
     /// ```
     /// use rayoracle::render::Channels;
     /// assert!(!Channels::DEPTH.tracks_objects() && Channels::ALL.tracks_objects());
+    /// assert!(Channels::parse("normal").unwrap().tracks_objects());
+    /// assert!(Channels::parse("id").unwrap().tracks_objects());
     /// ```
     pub fn tracks_objects(&self) -> bool {
         self.normal || self.id

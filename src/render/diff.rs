@@ -197,3 +197,65 @@ pub fn diff_png(old: &[u8], new: &[u8]) -> Result<(Vec<u8>, Comparison), String>
     }
     Ok((bytes, cmp))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::decode;
+
+    fn png(w: u32, h: u32, color: png::ColorType, depth: png::BitDepth, data: &[u8]) -> Vec<u8> {
+        let mut bytes = Vec::new();
+        let mut enc = png::Encoder::new(&mut bytes, w, h);
+        enc.set_color(color);
+        enc.set_depth(depth);
+        enc.write_header().unwrap().write_image_data(data).unwrap();
+        bytes
+    }
+
+    /// 16-bit samples are big-endian pairs, one per pixel, shown by their
+    /// high byte; every pixel of a 3×2 image lands in its own place.
+    #[test]
+    fn sixteen_bit_grey_decodes_each_pixel_in_place() {
+        let values: [u16; 6] = [0x0102, 0x0304, 0xfe05, 0x0006, 0x8007, 0xffff];
+        let data: Vec<u8> = values.iter().flat_map(|v| v.to_be_bytes()).collect();
+        let d = decode(&png(
+            3,
+            2,
+            png::ColorType::Grayscale,
+            png::BitDepth::Sixteen,
+            &data,
+        ))
+        .unwrap();
+        assert_eq!((d.width, d.height, d.max), (3, 2, 65535));
+        assert_eq!(d.samples, values.map(|v| vec![v]).to_vec());
+        let high = values.map(|v| (v >> 8) as u8);
+        assert_eq!(d.rgb, high.map(|g| [g; 3]).to_vec());
+    }
+
+    /// 8-bit RGB keeps its three channels per pixel, in order.
+    #[test]
+    fn eight_bit_rgb_decodes_each_channel_in_place() {
+        let data: Vec<u8> = (1..=12).collect();
+        let d = decode(&png(2, 2, png::ColorType::Rgb, png::BitDepth::Eight, &data)).unwrap();
+        assert_eq!((d.width, d.height, d.max), (2, 2, 255));
+        let px: Vec<[u8; 3]> = data.chunks(3).map(|c| [c[0], c[1], c[2]]).collect();
+        assert_eq!(d.rgb, px);
+        assert_eq!(d.samples[3], vec![10, 11, 12]);
+    }
+
+    /// Colour types and depths the snapshots never use are refused by name.
+    #[test]
+    fn other_formats_are_refused_with_their_name() {
+        let rgba = png(
+            1,
+            1,
+            png::ColorType::Rgba,
+            png::BitDepth::Eight,
+            &[1, 2, 3, 4],
+        );
+        assert_eq!(
+            decode(&rgba).err().unwrap(),
+            "unsupported PNG colour type Rgba"
+        );
+        assert!(decode(b"GIF89a").err().unwrap().starts_with("not a PNG: "));
+    }
+}
