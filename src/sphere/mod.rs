@@ -162,6 +162,17 @@ fn f64_terms(ray: &Ray, s: &Sphere) -> ([f64; 3], [f64; 3], f64) {
 /// let s = Sphere::new(Vec3::ZERO, 1.0);
 /// assert!(in_domain(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), &s));
 /// assert!(!in_domain(&Ray::new(Vec3::new(1.0, 0.0, 1e-20), Vec3::Z), &s));
+/// // Far but not too far: f/|f| is what must be in range.
+/// assert!(in_domain(&Ray::new(Vec3::new(0.0, 0.0, -1e20), Vec3::Z), &s));
+/// // f·d/|f| = 3e-20 < 2⁻⁵⁰: b underflows its exactness.
+/// assert!(!in_domain(&Ray::new(Vec3::new(1e20, 3.0, 0.0), Vec3::Y), &s));
+/// // Beside 1e30, the prescaling rounds 1e-20 to 0. Whether it is the
+/// // origin's, the centre's or the radius's, that is all of max(|f|, R):
+/// let big = Vec3::new(1e30, 0.0, 0.0);
+/// let tiny = Vec3::new(1e30, 0.0, 1e-20);
+/// assert!(!in_domain(&Ray::new(big, Vec3::Z), &Sphere::new(tiny, 1e-20)));
+/// assert!(!in_domain(&Ray::new(tiny, Vec3::Z), &Sphere::new(big, 0.0)));
+/// assert!(!in_domain(&Ray::new(big, Vec3::Z), &Sphere::new(big, 1e-20)));
 /// ```
 pub fn in_domain(ray: &Ray, s: &Sphere) -> bool {
     use crate::num::scale::{Scale, crush_loss, in_range, negligible};
@@ -194,6 +205,10 @@ pub fn in_domain(ray: &Ray, s: &Sphere) -> bool {
 /// use glam::Vec3;
 /// let b = band(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), &Sphere::new(Vec3::ZERO, 1.0));
 /// assert!(b < 1e-10);
+/// // By hand, for f = (0, 0, −5), d = (0, 0, 2), R = 2: a = 4, Σ|fᵢdᵢ| = 10,
+/// // ((aR)² + (4·5 + 10·2)²)·2⁻⁴⁰.
+/// let b = band(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::new(0.0, 0.0, 2.0)), &Sphere::new(Vec3::ZERO, 2.0));
+/// assert_eq!(b, (64.0 + 1600.0) * 2f64.powi(-40));
 /// ```
 pub fn band(ray: &Ray, s: &Sphere) -> f64 {
     let (f, d, r) = f64_terms(ray, s);
@@ -214,6 +229,9 @@ pub fn band(ray: &Ray, s: &Sphere) -> f64 {
 /// use glam::Vec3;
 /// let r = Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z);
 /// assert_eq!(scaled_discriminant(&r, &Sphere::new(Vec3::ZERO, 1.0)), 0.0);
+/// // Through the centre with |d| = 2, R = 2: a = 4, a f − b d = 0, aΔ = (aR)².
+/// let r = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::new(0.0, 0.0, 2.0));
+/// assert_eq!(scaled_discriminant(&r, &Sphere::new(Vec3::ZERO, 2.0)), 64.0);
 /// ```
 pub fn scaled_discriminant(ray: &Ray, s: &Sphere) -> f64 {
     let (f, d, r) = f64_terms(ray, s);
