@@ -250,6 +250,16 @@ pub fn scaled_discriminant(ray: &Ray, s: &Sphere) -> f64 {
 /// use glam::Vec3;
 /// let k = condition(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), &Sphere::new(Vec3::ZERO, 1.0));
 /// assert!(k[0] > 1.0 && k[0] < 4.0);
+/// // The roots are 3 and 7 here, and each gets condition_at's number.
+/// use rayoracle::sphere::condition_at;
+/// let (r, s) = (Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), Sphere::new(Vec3::ZERO, 2.0));
+/// assert_eq!(condition(&r, &s), [condition_at(&r, &s, 3.0), condition_at(&r, &s, 7.0)]);
+/// // A tangent (Δ = 0 exactly) has no finite condition number.
+/// let tangent = Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z);
+/// assert_eq!(condition(&tangent, &Sphere::new(Vec3::ZERO, 1.0)), [f64::INFINITY; 2]);
+/// // Even where Δ = 0 in f64 but −b/a is inexact, so ∂g/∂t is not 0 there.
+/// let tangent = Ray::new(Vec3::new(0.0, 1.0, -3.0), Vec3::new(0.0, 0.0, 0.3));
+/// assert_eq!(condition(&tangent, &Sphere::new(Vec3::ZERO, 1.0)), [f64::INFINITY; 2]);
 /// ```
 pub fn condition(ray: &Ray, s: &Sphere) -> [f64; 2] {
     let (f, d, r) = f64_terms(ray, s);
