@@ -250,10 +250,12 @@ pub fn scaled_discriminant(ray: &Ray, s: &Sphere) -> f64 {
 /// use glam::Vec3;
 /// let k = condition(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), &Sphere::new(Vec3::ZERO, 1.0));
 /// assert!(k[0] > 1.0 && k[0] < 4.0);
-/// // The roots are 3 and 7 here, and each gets condition_at's number.
+/// // With |d| = 2 and R = 2 the roots are 1.5 and 3.5, and each gets
+/// // condition_at's number.
 /// use rayoracle::sphere::condition_at;
-/// let (r, s) = (Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), Sphere::new(Vec3::ZERO, 2.0));
-/// assert_eq!(condition(&r, &s), [condition_at(&r, &s, 3.0), condition_at(&r, &s, 7.0)]);
+/// let r = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::new(0.0, 0.0, 2.0));
+/// let s = Sphere::new(Vec3::ZERO, 2.0);
+/// assert_eq!(condition(&r, &s), [condition_at(&r, &s, 1.5), condition_at(&r, &s, 3.5)]);
 /// // A tangent (Δ = 0 exactly) has no finite condition number.
 /// let tangent = Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z);
 /// assert_eq!(condition(&tangent, &Sphere::new(Vec3::ZERO, 1.0)), [f64::INFINITY; 2]);
