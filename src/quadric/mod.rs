@@ -350,3 +350,83 @@ pub fn condition(ray: &Ray, q: &Quadric) -> [f64; 2] {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{Quadric, band, condition, terms};
+    use crate::Ray;
+    use glam::Vec3;
+
+    /// `α t² + β t + γ` is the quadric at `o + t d`: on integer inputs (all
+    /// exact in f64) with no 0, ±1 or 2, a misplaced factor in any of the 28
+    /// terms changes the polynomial at one of these `t`.
+    #[test]
+    fn the_terms_are_the_quadric_along_the_ray() {
+        let k = [3.0, 5.0, 7.0, 11.0, 13.0, 17.0, 19.0, 23.0, 29.0, 31.0];
+        let (o, d) = ([11.0, -13.0, 3.0], [5.0, -3.0, 7.0]);
+        let (a, b, g) = terms(
+            &Ray::new(Vec3::from_array(o), Vec3::from_array(d)),
+            &Quadric::new(k),
+        );
+        let (a, b, g): (f64, f64, f64) = (a.iter().sum(), b.iter().sum(), g.iter().sum());
+        let k = k.map(f64::from);
+        for t in [0.0, 1.0, -1.0, 3.0, -7.0] {
+            let p = [0, 1, 2].map(|i| f64::from(o[i]) + t * f64::from(d[i]));
+            let q = k[0] * p[0] * p[0]
+                + k[1] * p[1] * p[1]
+                + k[2] * p[2] * p[2]
+                + k[3] * p[0] * p[1]
+                + k[4] * p[0] * p[2]
+                + k[5] * p[1] * p[2]
+                + k[6] * p[0]
+                + k[7] * p[1]
+                + k[8] * p[2]
+                + k[9];
+            assert_eq!(a * t * t + b * t + g, q, "t = {t}");
+        }
+    }
+
+    /// A unit cylinder seen from x = −5 along 3x: α = 9, β = −30, γ = 25 − 1
+    /// (Σ|γ terms| = 26), so the roots are 4/3 and 2.
+    fn cylinder() -> (Ray, Quadric) {
+        (
+            Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::new(3.0, 0.0, 0.0)),
+            Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]),
+        )
+    }
+
+    #[test]
+    fn the_band_by_hand() {
+        let (r, q) = cylinder();
+        assert_eq!(
+            band(&r, &q),
+            (30.0 * 30.0 + 4.0 * 9.0 * 26.0) * 2f64.powi(-40)
+        );
+    }
+
+    /// κ(t) = 3(Σ|α|t² + Σ|β||t| + Σ|γ|) / (|2αt + β| |t|): at t = 4/3,
+    /// (48 + 120 + 78) / (6 · 4/3) = 30.75; at t = 2, 366 / 12 = 30.5. The
+    /// smaller root comes first.
+    #[test]
+    fn the_condition_numbers_by_hand() {
+        let (r, q) = cylinder();
+        let k = condition(&r, &q);
+        assert!((k[0] - 30.75).abs() < 1e-12, "{k:?}");
+        assert_eq!(k[1], 30.5);
+        // Grazing: β² = 4αγ exactly, a double root with no finite number.
+        let graze = Ray::new(Vec3::new(-5.0, 1.0, 0.0), Vec3::X);
+        assert_eq!(condition(&graze, &q), [f64::INFINITY; 2]);
+    }
+
+    /// α = 0: the one root −γ/β, reported twice. For x = 2 from x = −1
+    /// along 4x: β = 4, γ = −3, t = 3/4, κ = 3(4 · 3/4 + 3) / (4 · 3/4) = 6.
+    #[test]
+    fn a_linear_quadric_has_one_root_and_its_number_twice() {
+        let plane = Quadric::new([0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, -2.0]);
+        let r = Ray::new(Vec3::new(-1.0, 0.0, 0.0), Vec3::new(4.0, 0.0, 0.0));
+        assert_eq!(condition(&r, &plane), [6.0, 6.0]);
+        // At t = 0 (the origin on the surface) the relative number is 0.
+        let on = Ray::new(Vec3::new(2.0, 0.0, 0.0), Vec3::X);
+        assert_eq!(condition(&on, &plane), [0.0, 0.0]);
+    }
+}
