@@ -120,3 +120,40 @@ fn in_lane(case: &Case, lane: usize) -> Outcome {
         },
     }
 }
+
+#[cfg(test)]
+mod tests {
+    /// The decoys are what their docs say: an ordinary hit, a NaN ray and
+    /// a boundary class, so a lane that leaks into its neighbours meets
+    /// answers of every kind. (Any change to them weakens the column
+    /// without failing a correct kernel, so it is pinned here.)
+    #[cfg(feature = "sphere")]
+    #[test]
+    fn the_sphere_decoys_are_a_two_hit_a_nan_and_a_tangent() {
+        use crate::sphere::{SphereHit, reference::intersect};
+        let [two, nan, tangent] = super::sphere_decoys();
+        assert_eq!(intersect(&two.0, &two.1), SphereHit::Two(4.0, 6.0));
+        assert!(nan.0.origin.is_nan());
+        assert_eq!(intersect(&tangent.0, &tangent.1), SphereHit::Tangent(5.0));
+    }
+
+    #[cfg(feature = "plane")]
+    #[test]
+    fn the_plane_decoys_are_a_hit_a_nan_and_a_parallel() {
+        use crate::plane::{PlaneHit, reference::intersect};
+        let [hit, nan, parallel] = super::plane_decoys();
+        assert_eq!(intersect(&hit.0, &hit.1), PlaneHit::Hit(1.0));
+        assert!(nan.0.origin.is_nan());
+        assert_eq!(intersect(&parallel.0, &parallel.1), PlaneHit::Parallel);
+    }
+
+    #[cfg(feature = "quadric")]
+    #[test]
+    fn the_quadric_decoys_are_a_two_hit_a_nan_and_an_all() {
+        use crate::quadric::{QuadricHit, reference::intersect};
+        let [two, nan, all] = super::quadric_decoys();
+        assert_eq!(intersect(&two.0, &two.1), QuadricHit::Two(4.0, 6.0));
+        assert!(nan.0.origin.is_nan());
+        assert_eq!(intersect(&all.0, &all.1), QuadricHit::All);
+    }
+}
