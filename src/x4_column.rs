@@ -49,6 +49,12 @@ fn quadric_decoys() -> [(Ray, Quadric); 3] {
     ]
 }
 
+/// Neighbours for a camera pixel: two corners and the middle of the top
+/// row, all inside the image.
+fn camera_decoys([w, h]: [u32; 2]) -> [[u32; 2]; 3] {
+    [[0, 0], [w - 1, h - 1], [w / 2, 0]]
+}
+
 /// The case placed in lane `lane` and the decoys in the others.
 fn packet<T: Copy>(case: T, decoys: [T; 3], lane: usize) -> [T; 4] {
     let mut d = decoys.into_iter();
@@ -112,9 +118,8 @@ fn in_lane(case: &Case, lane: usize) -> Outcome {
         }
         Case::Camera(p, px) => match p.build() {
             Ok(cam) => {
-                let [w, h] = p.res;
-                let corners = [[0, 0], [w - 1, h - 1], [w / 2, 0]];
-                Outcome::Ray(cam.ray4(packet(*px, corners, lane)).to_rays()[lane])
+                let pk = packet(*px, camera_decoys(p.res), lane);
+                Outcome::Ray(cam.ray4(pk).to_rays()[lane])
             }
             Err(e) => Outcome::Error(e.to_string()),
         },
@@ -145,6 +150,11 @@ mod tests {
         assert_eq!(intersect(&hit.0, &hit.1), PlaneHit::Hit(1.0));
         assert!(nan.0.origin.is_nan());
         assert_eq!(intersect(&parallel.0, &parallel.1), PlaneHit::Parallel);
+    }
+
+    #[test]
+    fn the_camera_decoys_are_corners_and_the_top_middle() {
+        assert_eq!(super::camera_decoys([5, 3]), [[0, 0], [4, 2], [2, 0]]);
     }
 
     #[cfg(feature = "quadric")]
