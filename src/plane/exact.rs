@@ -38,3 +38,26 @@ pub fn intersect(ray: &Ray, plane: &Plane) -> Result<PlaneHit, NonFinite> {
     let guess = num.to_f64() / den.to_f64();
     Ok(PlaneHit::Hit(round_to_f32(|m| num.cmp(&(&den * m)), guess)))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{Plane, PlaneHit, Ray, intersect};
+    use crate::exact::round::comparisons;
+    use glam::Vec3;
+
+    /// The f64 guess only decides how long the exact search takes: a good
+    /// one settles each `t` in a few comparisons, where `num·den` or a
+    /// remainder would need 50 or more. Both signs of `d·n` are here.
+    #[test]
+    fn the_guess_makes_the_search_short() {
+        let p = Plane::new(Vec3::new(0.0, 7.0, 0.0), Vec3::new(0.0, 3.0, 0.0));
+        for (o, d) in [(-5.0, 3.0), (11.0, -0.1), (1e-3, 1e-7), (-9.0, 4e20)] {
+            let r = Ray::new(Vec3::new(0.0, o, 0.0), Vec3::new(0.0, d, 0.0));
+            let mut got = Err(crate::exact::NonFinite);
+            let n = comparisons::during(|| got = intersect(&r, &p));
+            let want = ((7.0 - f64::from(o)) / f64::from(d)) as f32;
+            assert_eq!(got, Ok(PlaneHit::Hit(want)), "o = {o}, d = {d}");
+            assert!(n <= 12, "o = {o}, d = {d}: {n} comparisons");
+        }
+    }
+}
