@@ -285,11 +285,12 @@ pub fn condition(ray: &Ray, s: &Sphere) -> [f64; 2] {
 /// use glam::Vec3;
 /// let k = condition_at(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), &Sphere::new(Vec3::ZERO, 1.0), 4.0);
 /// assert!(k > 1.0 && k < 4.0);
-/// // By hand, o = (0, 0, −4), d = Z, C = (0, 0, 1), R = 2 at the root t = 3:
-/// // p = f + t d = (0, 0, −2), so the o, C, d and R terms are 16, 4, 12 and
-/// // 8, over |∂g/∂t|·t = 4·3.
-/// let (r, s) = (Ray::new(Vec3::new(0.0, 0.0, -4.0), Vec3::Z), Sphere::new(Vec3::Z, 2.0));
-/// assert_eq!(condition_at(&r, &s, 3.0), 40.0 / 12.0);
+/// // By hand, o = (0, 0, −4), d = (0, 0, 2), C = (0, 0, 1), R = 2 at the
+/// // root t = 1.5: p = f + t d = (0, 0, −2), so the o, C, d and R terms are
+/// // 16, 4, 12 and 8, over |∂g/∂t|·t = 8·1.5.
+/// let r = Ray::new(Vec3::new(0.0, 0.0, -4.0), Vec3::new(0.0, 0.0, 2.0));
+/// let s = Sphere::new(Vec3::Z, 2.0);
+/// assert_eq!(condition_at(&r, &s, 1.5), 40.0 / 12.0);
 /// assert_eq!(condition_at(&r, &s, f64::INFINITY), f64::INFINITY);
 /// assert_eq!(condition_at(&r, &s, f64::NAN), f64::INFINITY);
 /// ```

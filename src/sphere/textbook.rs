@@ -50,6 +50,11 @@ use crate::Ray;
 /// let far = Ray::new(Vec3::new(0.0, 0.0, -1e4), Vec3::Z);
 /// assert_eq!(exact::intersect(&far, &unit), Ok(SphereHit::Two(9999.0, 10001.0)));
 /// assert_eq!(intersect(&far, &unit), SphereHit::Tangent(1e4));
+/// // R = 2, |d| = 2: a = 4, b = −20, c = 21, b² − 4ac = 64, all exact.
+/// let two = Sphere::new(Vec3::ZERO, 2.0);
+/// assert_eq!(intersect(&r, &two), SphereHit::Two(1.5, 3.5));
+/// let miss = Ray::new(Vec3::new(0.0, 5.0, -5.0), Vec3::Z);
+/// assert_eq!(intersect(&miss, &unit), SphereHit::None);
 /// ```
 pub fn intersect(ray: &Ray, sphere: &Sphere) -> SphereHit {
     let f = ray.origin - sphere.center;
