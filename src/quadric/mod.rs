@@ -99,6 +99,13 @@ impl Quadric {
     /// let (q, exact) = Quadric::from_sphere(&Sphere::new(Vec3::new(1.0, 2.0, 3.0), 2.0));
     /// assert!(exact);
     /// assert_eq!(q.coeffs, [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, -2.0, -4.0, -6.0, 10.0]);
+    /// // |C|² = 4097² needs 25 bits, but J = 4097² − 4096² = 8193 is exact.
+    /// let (q, exact) = Quadric::from_sphere(&Sphere::new(Vec3::new(4097.0, 0.0, 0.0), 4096.0));
+    /// assert!(exact && q.coeffs[9] == 8193.0);
+    /// // J = 2²⁴ + 1 − 0.25 is not an f32, and a non-finite radius has no J.
+    /// assert!(!Quadric::from_sphere(&Sphere::new(Vec3::new(4097.0, 0.0, 0.0), 0.5)).1);
+    /// assert!(!Quadric::from_sphere(&Sphere::new(Vec3::ONE, f32::INFINITY)).1);
+    /// assert!(!Quadric::from_sphere(&Sphere::new(Vec3::ONE, f32::NAN)).1);
     /// ```
     #[cfg(feature = "sphere")]
     pub fn from_sphere(s: &Sphere) -> (Quadric, bool) {
