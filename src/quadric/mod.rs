@@ -102,6 +102,9 @@ impl Quadric {
     /// // |C|² = 4097² needs 25 bits, but J = 4097² − 4096² = 8193 is exact.
     /// let (q, exact) = Quadric::from_sphere(&Sphere::new(Vec3::new(4097.0, 0.0, 0.0), 4096.0));
     /// assert!(exact && q.coeffs[9] == 8193.0);
+    /// // Neither |C|² nor R² is an f32 here, but J = 2·32772 is.
+    /// let (q, exact) = Quadric::from_sphere(&Sphere::new(Vec3::new(16387.0, 0.0, 0.0), 16385.0));
+    /// assert!(exact && q.coeffs[9] == 65544.0);
     /// // J = 2²⁴ + 1 − 0.25 is not an f32, and a non-finite radius has no J.
     /// assert!(!Quadric::from_sphere(&Sphere::new(Vec3::new(4097.0, 0.0, 0.0), 0.5)).1);
     /// assert!(!Quadric::from_sphere(&Sphere::new(Vec3::ONE, f32::INFINITY)).1);
