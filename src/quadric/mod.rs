@@ -396,6 +396,34 @@ mod tests {
         }
     }
 
+    /// Each of the domain's conditions alone puts a case outside it.
+    #[test]
+    fn each_domain_condition_alone_excludes() {
+        use super::in_domain;
+        let p = |e: i32| 2f32.powi(e);
+        let at = |o: [f32; 3], d: [f32; 3], k: [f32; 10]| {
+            in_domain(&Ray::new(Vec3::from(o), Vec3::from(d)), &Quadric::new(k))
+        };
+        // In: α = 1, β = 2⁻⁴⁰, γ = −1.
+        let base = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, p(-40), 0.0, 0.0, -1.0];
+        assert!(at([0.0; 3], [1.0, 0.0, 0.0], base));
+        // (Σ|β terms|)² = 2⁻¹²⁰, below 2⁻¹⁰⁰, though Σ|β terms| is in range.
+        let mut k = base;
+        k[6] = p(-60);
+        assert!(!at([0.0; 3], [1.0, 0.0, 0.0], k));
+        // Σ|α terms| · Σ|γ terms| = 2⁻¹²⁰, though each is in range.
+        let k = [p(-60), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, p(-60)];
+        assert!(!at([0.0; 3], [1.0, 0.0, 0.0], k));
+        // Only γ loses to the prescaling: 1.5·2⁻⁵⁰ beside 2⁹⁹ becomes the
+        // subnormal 1.5·2⁻¹⁴⁹, rounded to 2·2⁻¹⁴⁹, and x = 2³⁹ makes the
+        // loss 2⁻¹¹¹, against Σ|γ terms| ≈ 2⁻⁶⁰ (α = 1 and β = 0 are exact).
+        let mut k = [0.0; 10];
+        (k[1], k[6], k[9]) = (p(99), 1.5 * p(-50), p(39));
+        assert!(!at([p(39), 0.0, 0.0], [0.0, 1.0, 0.0], k));
+        k[6] = p(-50);
+        assert!(at([p(39), 0.0, 0.0], [0.0, 1.0, 0.0], k));
+    }
+
     /// A unit cylinder seen from x = −5 along 3x: α = 9, β = −30, γ = 25 − 1
     /// (Σ|γ terms| = 26), so the roots are 4/3 and 2.
     fn cylinder() -> (Ray, Quadric) {
