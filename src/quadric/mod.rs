@@ -454,6 +454,19 @@ mod tests {
         // Grazing: β² = 4αγ exactly, a double root with no finite number.
         let graze = Ray::new(Vec3::new(-5.0, 1.0, 0.0), Vec3::X);
         assert_eq!(condition(&graze, &q), [f64::INFINITY; 2]);
+        // Also where β² = 4αγ in f64 (110² = 4·25·121) but the double root
+        // −β/2α = 2.2 rounds, so p' there is not quite 0.
+        let graze = Ray::new(Vec3::new(-11.0, 1.0, 0.0), Vec3::new(5.0, 0.0, 0.0));
+        assert_eq!(condition(&graze, &q), [f64::INFINITY; 2]);
+    }
+
+    /// Roots 10⁻⁸ and 10⁸ (t² − 10⁸t + 1): the stable form keeps the small
+    /// one, where `−β − √Δ` would cancel to almost nothing; κ ≈ 6 for both.
+    #[test]
+    fn the_small_root_of_a_stiff_quadratic_is_not_cancelled_away() {
+        let q = Quadric::new([1.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1e8, 0.0, 0.0, 1.0]);
+        let k = condition(&Ray::new(Vec3::ZERO, Vec3::X), &q);
+        assert!(k.iter().all(|k| (k - 6.0).abs() < 1e-6), "{k:?}");
     }
 
     /// α = 0: the one root −γ/β, reported twice. For x = 2 from x = −1
