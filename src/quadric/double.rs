@@ -46,6 +46,9 @@ use crate::Ray;
 /// let para = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0]);
 /// let up = Ray::new(Vec3::new(0.5, 0.0, -3.0), Vec3::Z);
 /// assert_eq!(intersect(&up, &para), QuadricHit::One(3.25));
+/// // A graze (β² = 4αγ exactly) with α = 4: the double root −β/2α.
+/// let graze = Ray::new(Vec3::new(-5.0, 1.0, 0.0), Vec3::new(2.0, 0.0, 0.0));
+/// assert_eq!(intersect(&graze, &cyl), QuadricHit::One(2.5));
 /// // α ≈ 0, where the textbook formula cancels: the correctly rounded roots.
 /// let q = Quadric::new([1e-6, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.7]);
 /// let r = Ray::new(Vec3::ZERO, Vec3::X);

@@ -12,7 +12,12 @@ use crate::exact::{Dyadic, ExactQuadratic, NonFinite, Quadratic};
 /// use glam::Vec3;
 /// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
 /// let q = quadratic(&Ray::new(Vec3::ZERO, Vec3::Z), &cyl).unwrap();
-/// assert!(q.alpha.is_zero() && q.beta.is_zero());
+/// // Along the axis from inside: 0t² + 0t − 1 (a sign the normalisation
+/// // of Quadratic::new leaves alone when α = β = 0).
+/// assert!(q.alpha.is_zero() && q.beta.is_zero() && q.gamma.to_f64() == -1.0);
+/// // Across it from x = −5: t² − 10t + 24.
+/// let q = quadratic(&Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), &cyl).unwrap();
+/// assert_eq!([q.alpha, q.beta, q.gamma].map(|x| x.to_f64()), [1.0, -10.0, 24.0]);
 /// ```
 pub fn quadratic(ray: &Ray, quadric: &Quadric) -> Result<Quadratic, NonFinite> {
     let o = vec3(ray.origin.to_array())?;
