@@ -85,6 +85,11 @@ where
 /// // Parallel to the axis, on the surface: α = β = γ = 0, caught exactly.
 /// let along = Ray::new(Vec3::new(1.0, 0.0, 0.0), Vec3::Z);
 /// assert_eq!(intersect(&along, &cyl), QuadricHit::All);
+/// // A graze (β²/4α² − γ/α = 25 − 25) and a miss (25 − 28).
+/// let graze = Ray::new(Vec3::new(-5.0, 1.0, 0.0), Vec3::X);
+/// assert_eq!(intersect(&graze, &cyl), QuadricHit::One(5.0));
+/// let miss = Ray::new(Vec3::new(-5.0, 2.0, 0.0), Vec3::X);
+/// assert_eq!(intersect(&miss, &cyl), QuadricHit::None);
 /// // α ≈ 0: 10⁻⁶x² + x + 0.7 = 0 has roots near −10⁶ and −0.7. The one
 /// // near −0.7 is −β/2α + √… ≈ −500000 + 499999.3, and next to 5·10⁵ an
 /// // f32 has steps of 1/32: 3·10⁵ ulps off.
