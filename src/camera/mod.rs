@@ -264,3 +264,34 @@ pub fn component_scale(cam: &Camera, px: u32, py: u32) -> [f64; 3] {
         (f[i] as f64).abs() + (u as f64 * x[i] as f64).abs() + (v as f64 * y[i] as f64).abs()
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{CameraParams, in_domain};
+    use glam::Vec3;
+
+    fn domain(dir: [f32; 3], up: [f32; 3]) -> bool {
+        in_domain(&CameraParams::new(
+            Vec3::ZERO,
+            Vec3::from(dir),
+            Vec3::from(up),
+            1.0,
+            [4, 4],
+        ))
+    }
+
+    /// `dir × up` where a component is two tiny products: exactly 0 when
+    /// they cancel (in the domain), and a non-zero value below 2⁻¹⁰⁰ when
+    /// they do not (outside it: built near the subnormal range).
+    #[test]
+    fn a_cross_product_component_of_two_tiny_products() {
+        let p = |e: i32| 2f32.powi(e);
+        let dir = [1.0, p(-60), p(-70)];
+        // x: 2⁻⁶⁰·2⁻⁵⁰ − 2⁻⁷⁰·2⁻⁴⁰ = 0.
+        assert!(domain(dir, [1.0, p(-40), p(-50)]));
+        // x: 2⁻⁶⁰·2⁻⁵⁰ − 2⁻⁷⁰·2⁻⁴¹ = 2⁻¹¹¹.
+        assert!(!domain(dir, [1.0, p(-41), p(-50)]));
+        // The same one axis on, in y: 2⁻⁶⁰·2⁻⁵⁰ − 2⁻⁷⁰·2⁻⁴⁰ = 0.
+        assert!(domain([p(-70), 1.0, p(-60)], [p(-50), 1.0, p(-40)]));
+    }
+}
