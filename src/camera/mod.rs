@@ -294,4 +294,97 @@ mod tests {
         // The same one axis on, in y: 2⁻⁶⁰·2⁻⁵⁰ − 2⁻⁷⁰·2⁻⁴⁰ = 0.
         assert!(domain([p(-70), 1.0, p(-60)], [p(-50), 1.0, p(-40)]));
     }
+
+    /// Each step of `in_domain` decides one of these cases alone (found by
+    /// running the function's mutants over powers of two, then worked by
+    /// hand). `x̂ = dir × up / |…|` and `ŷ = dir × x̂`, both of the prescaled
+    /// vectors; "tiny" is non-zero and below 2⁻¹⁰⁰.
+    #[test]
+    fn each_step_of_the_domain_decides_a_case_alone() {
+        let p = |e: i32| 2f32.powi(e);
+        let cases: [([f32; 3], [f32; 3], bool, &str); 12] = [
+            // dir·2⁻¹⁰⁰ = ((1+2⁻²²)·2⁻¹⁰⁰, 0, −1.5): x̂ = (0, −1, 0), and
+            // ŷ = (−1.5, 0, −(1+2⁻²²)·2⁻¹⁰⁰), whose z over |ŷ| is tiny.
+            (
+                [1.0 + p(-22), 0.0, -1.5 * p(100)],
+                [1.0, 0.0, 0.0],
+                false,
+                "ŷ.z tiny",
+            ),
+            // The same in ŷ.z through the other product: ŷ = (0, −1, 1.5·2⁻¹³⁰).
+            (
+                [0.0, 1.5 * p(-130), 1.0],
+                [0.0, 1.0, 0.0],
+                false,
+                "ŷ.z tiny, dir.y",
+            ),
+            // ŷ.y = −2⁻¹⁰¹/√2 while ŷ.x = 1/√2 + 1/√2 is a sum, not a cancellation.
+            ([p(-101), 1.0, 1.0], [-p(-101), 0.0, 0.0], false, "ŷ.y tiny"),
+            // x̂ ≈ (0, 0, 1), ŷ = (1.5·2⁻¹²⁹, −1, 0).
+            (
+                [1.0, 1.5 * p(-129), 0.0],
+                [-1.5 * p(-50), 1.0, 0.0],
+                false,
+                "ŷ.x tiny",
+            ),
+            // up·2⁵⁰ = (0, 0, 1.25): x̂ = (1, −1, 0)/√2 and
+            // ŷ = (dir.z/√2, dir.z/√2, −√2) with dir.z/√2 over |ŷ| = 1.25·2⁻¹¹¹.
+            (
+                [1.0, 1.0, 1.25 * p(-110)],
+                [0.0, 0.0, 1.25 * p(-50)],
+                false,
+                "ŷ.x, ŷ.y tiny",
+            ),
+            // dir·2⁻¹⁰⁰ = (−1.5, 0, 2⁻¹⁰⁰): dir × up = (2⁻¹⁰⁰, 0, 1.5) is not
+            // tiny, but x̂ = (2⁻¹⁰⁰/1.5, 0, 1) is.
+            (
+                [-1.5 * p(100), 0.0, 1.0],
+                [0.0, -1.0, 0.0],
+                false,
+                "x̂.x tiny",
+            ),
+            // Exactly 2⁻¹⁰⁰ is not tiny: dir × up = (2⁻¹⁰⁰, 0, −1), ŷ = (−1, 0, −2⁻¹⁰⁰).
+            ([0.0, 1.0, 0.0], [1.0, 0.0, p(-100)], true, "2⁻¹⁰⁰ exactly"),
+            (
+                [0.0, 1.25 * p(-100), 1.0],
+                [0.0, 1.0, 0.0],
+                true,
+                "ŷ.z = 1.25·2⁻¹⁰⁰",
+            ),
+            // dir·2⁻¹⁰⁰ = (0, 1, 2⁻¹⁰⁰), up·2⁶⁰ = (−1, 0, 0):
+            // x̂ = (0, −2⁻¹⁰⁰, 1) and ŷ = (1, 0, 0).
+            (
+                [0.0, p(100), 1.0],
+                [-p(-60), 0.0, 0.0],
+                true,
+                "x̂.y = −2⁻¹⁰⁰",
+            ),
+            // dir × up = (−2⁻⁷⁰, 1, 2⁻⁷⁰ + 2⁻¹⁰¹), ŷ ≈ (−1, −2⁻⁶⁹, 1).
+            (
+                [1.0, -p(-101), 1.0],
+                [1.0, p(-70), 0.0],
+                true,
+                "nothing below 2⁻¹⁰⁰",
+            ),
+            // z of dir × up: 2⁻⁶⁰·2⁻⁵⁰ − 2⁻⁷⁰·2⁻⁴⁰ = 0, as the test above in x and y.
+            (
+                [p(-60), p(-70), 1.0],
+                [p(-40), p(-50), 1.0],
+                true,
+                "z cancels exactly",
+            ),
+            // dir ∥ up exactly, so dir × up = 0, but up·2⁻¹⁰⁰ rounds its z
+            // (1+2⁻²²)·2⁻¹³⁰ in the subnormal range: the loss is not negligible
+            // against |dir × up| = 0, and it is dir's scale 2⁰ that is exact.
+            (
+                [1.0, 0.0, p(-130)],
+                [p(100) * (1.0 + p(-22)), 0.0, (1.0 + p(-22)) * p(-30)],
+                false,
+                "up crushed, dir exact",
+            ),
+        ];
+        for (dir, up, want, why) in cases {
+            assert_eq!(domain(dir, up), want, "{why}: dir {dir:?}, up {up:?}");
+        }
+    }
 }
