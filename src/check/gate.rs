@@ -38,6 +38,8 @@
 pub mod fuzz;
 pub mod strategy;
 pub mod survey;
+#[cfg(test)]
+mod tests;
 
 use crate::Ray;
 use crate::camera::{CameraParams, component_scale};
@@ -301,44 +303,55 @@ fn in_every_lane<P: Copy>(
     }
 }
 
+// The decoys that fill the other three lanes: for each kind, answers of
+// different classes and at different t (pinned in the tests), so a kernel
+// that leaks one lane's data into another shows as a wrong or inconsistent
+// answer.
+fn sphere_decoys() -> [(Ray, Sphere); 3] {
+    let unit = Sphere::new(Vec3::ZERO, 1.0);
+    [
+        (Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), unit),
+        (
+            Ray::new(Vec3::new(3.0, 7.0, 1.0), Vec3::X),
+            Sphere::new(Vec3::new(9.0, 7.0, 1.0), 2.0),
+        ),
+        (Ray::new(Vec3::new(0.0, 4.0, 0.0), Vec3::Y), unit),
+    ]
+}
+fn plane_decoys() -> [(Ray, Plane); 3] {
+    let ground = Plane::new(Vec3::ZERO, Vec3::Y);
+    [
+        (Ray::new(Vec3::Y, -Vec3::Y), ground),
+        (
+            Ray::new(Vec3::new(1.0, 2.0, 3.0), Vec3::X),
+            Plane::new(Vec3::new(7.0, 0.0, 0.0), Vec3::X),
+        ),
+        (Ray::new(Vec3::Y, Vec3::Z), ground),
+    ]
+}
+fn quadric_decoys() -> [(Ray, Quadric); 3] {
+    let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+    let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -4.0]);
+    [
+        (Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), cyl),
+        (Ray::new(Vec3::new(0.0, 0.0, -9.0), Vec3::Z), ball),
+        (Ray::new(Vec3::new(0.5, 0.0, 0.0), Vec3::Z), cyl),
+    ]
+}
+
 impl<K: SphereKernel4> SphereKernel for Lanes<K> {
     fn intersect(&self, ray: &Ray, s: &Sphere) -> Answer {
-        let unit = Sphere::new(Vec3::ZERO, 1.0);
-        let decoys = [
-            (Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), unit),
-            (
-                Ray::new(Vec3::new(3.0, 7.0, 1.0), Vec3::X),
-                Sphere::new(Vec3::new(9.0, 7.0, 1.0), 2.0),
-            ),
-            (Ray::new(Vec3::new(0.0, 4.0, 0.0), Vec3::Y), unit),
-        ];
-        in_every_lane((*ray, *s), decoys, |r, p| self.0.intersect4(r, p))
+        in_every_lane((*ray, *s), sphere_decoys(), |r, p| self.0.intersect4(r, p))
     }
 }
 impl<K: PlaneKernel4> PlaneKernel for Lanes<K> {
     fn intersect(&self, ray: &Ray, p: &Plane) -> Answer {
-        let ground = Plane::new(Vec3::ZERO, Vec3::Y);
-        let decoys = [
-            (Ray::new(Vec3::Y, -Vec3::Y), ground),
-            (
-                Ray::new(Vec3::new(1.0, 2.0, 3.0), Vec3::X),
-                Plane::new(Vec3::new(7.0, 0.0, 0.0), Vec3::X),
-            ),
-            (Ray::new(Vec3::Y, Vec3::Z), ground),
-        ];
-        in_every_lane((*ray, *p), decoys, |r, q| self.0.intersect4(r, q))
+        in_every_lane((*ray, *p), plane_decoys(), |r, q| self.0.intersect4(r, q))
     }
 }
 impl<K: QuadricKernel4> QuadricKernel for Lanes<K> {
     fn intersect(&self, ray: &Ray, q: &Quadric) -> Answer {
-        let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
-        let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -4.0]);
-        let decoys = [
-            (Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), cyl),
-            (Ray::new(Vec3::new(0.0, 0.0, -9.0), Vec3::Z), ball),
-            (Ray::new(Vec3::new(0.5, 0.0, 0.0), Vec3::Z), cyl),
-        ];
-        in_every_lane((*ray, *q), decoys, |r, p| self.0.intersect4(r, p))
+        in_every_lane((*ray, *q), quadric_decoys(), |r, p| self.0.intersect4(r, p))
     }
 }
 

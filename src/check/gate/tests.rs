@@ -1,0 +1,234 @@
+//! The gate's own machinery, worked by hand: the tolerance formula, the
+//! lane placements, the decoys, what a report keeps, and the random
+//! families. (The gate's power against wrong kernels is `tests/known_wrong.rs`.)
+
+use super::*;
+use std::cell::RefCell;
+
+#[test]
+fn answers_print_by_class() {
+    assert_eq!(Answer::Roots(vec![]).to_string(), "no roots");
+    assert_eq!(
+        Answer::Roots(vec![1.0, 2.5]).to_string(),
+        "roots [1.0, 2.5]"
+    );
+    assert_eq!(Answer::Nearest(Some(3.0)).to_string(), "nearest 3.0");
+    assert_eq!(Answer::Nearest(None).to_string(), "no hit");
+    assert_eq!(Answer::Everywhere.to_string(), "every t");
+}
+
+/// `2^bits − 1 + κ · precision · 2²⁴`, term by term.
+#[test]
+fn allowed_ulps_term_by_term() {
+    let exact = Declared::exact(Semantics::WholeLine);
+    // 2¹ − 1 + 4 · 2⁻⁴² · 2²⁴.
+    assert_eq!(exact.allowed_ulps(4.0), 1.0 + 4.0 * 2f64.powi(-18));
+    let f32 = Declared::f32(Semantics::WholeLine);
+    // 2² − 1 + 3 · 2⁻²² · 2²⁴.
+    assert_eq!(f32.allowed_ulps(3.0), 3.0 + 12.0);
+    assert_eq!(f32.allowed_ulps(f64::NAN), f64::INFINITY);
+}
+
+#[test]
+fn unit_dirs_changes_only_that() {
+    let d = Declared::exact(Semantics::NearestPositive);
+    let u = d.unit_dirs();
+    assert!(!d.unit_dirs_only && u.unit_dirs_only);
+    assert_eq!(
+        (u.bits, u.precision, u.band_scale),
+        (d.bits, d.precision, d.band_scale)
+    );
+}
+
+/// The case goes into each lane in turn, and the other three lanes hold the
+/// three decoys, in order.
+#[test]
+fn every_lane_gets_the_case_among_all_three_decoys() {
+    let ray = Ray::new(Vec3::ZERO, Vec3::X);
+    let placed = RefCell::new(Vec::new());
+    let answer = in_every_lane((ray, 9u8), [(ray, 0), (ray, 1), (ray, 2)], |_, tags| {
+        placed.borrow_mut().push(*tags);
+        tags.map(|t| Answer::Nearest(Some(t as f32)))
+    });
+    assert_eq!(answer, Answer::Nearest(Some(9.0)));
+    assert_eq!(
+        placed.into_inner(),
+        [[9, 0, 1, 2], [0, 9, 1, 2], [0, 1, 9, 2], [0, 1, 2, 9]]
+    );
+    // A kernel that answers from the lane beside it disagrees with itself.
+    let shifted = in_every_lane((ray, 9u8), [(ray, 0), (ray, 1), (ray, 2)], |_, tags| {
+        [0, 1, 2, 3].map(|i| Answer::Nearest(Some(tags[(i + 1) % 4] as f32)))
+    });
+    assert!(matches!(shifted, Answer::Inconsistent(_)), "{shifted}");
+}
+
+/// Each kind's decoys give answers of different classes and at different
+/// t, so no leak from one lane to another can go unseen.
+#[test]
+fn the_decoys_answer_differently() {
+    let roots = |a: Answer| a.to_string();
+    let s =
+        sphere_decoys().map(|(r, s)| roots(Answer::roots(sphere::reference::intersect(&r, &s))));
+    assert_eq!(
+        s,
+        ["roots [4.0, 6.0]", "roots [4.0, 8.0]", "roots [-5.0, -3.0]"]
+    );
+    let p = plane_decoys().map(|(r, p)| roots(Answer::roots(plane::reference::intersect(&r, &p))));
+    assert_eq!(p, ["roots [1.0]", "roots [6.0]", "no roots"]);
+    let q =
+        quadric_decoys().map(|(r, q)| roots(Answer::roots(quadric::reference::intersect(&r, &q))));
+    assert_eq!(q, ["roots [4.0, 6.0]", "roots [7.0, 11.0]", "no roots"]);
+}
+
+/// A kernel that never hits fails whole families: the report counts every
+/// failure, keeps (shrunk) the first three of each family, and names
+/// exactly the families that failed.
+#[test]
+fn a_report_keeps_three_failures_a_family() {
+    let never = |_: &Ray, _: &Sphere| Answer::Nearest(None);
+    let r = Gate::new(Declared::f32(Semantics::NearestPositive))
+        .budget(8)
+        .sphere(&never);
+    let mut failing = 0;
+    for (family, _, failed) in &r.families {
+        let kept = r.failures.iter().filter(|f| &f.family == family).count();
+        assert_eq!(kept, (*failed).min(3), "{family}");
+        failing += usize::from(*failed > 0);
+    }
+    assert!(r.families.iter().any(|f| f.2 > 3));
+    assert_eq!(r.failing_families().len(), failing);
+    assert!(
+        failing < r.families.len(),
+        "some families have no hit to miss"
+    );
+}
+
+#[test]
+fn a_correct_kernel_fails_no_family() {
+    let good = |r: &Ray, s: &Sphere| Answer::nearest(sphere::double::intersect(r, s), 0.0);
+    let r = Gate::new(Declared::f32(Semantics::NearestPositive))
+        .budget(8)
+        .sphere(&good);
+    assert!(
+        r.failing_families().is_empty(),
+        "{:?}",
+        r.failing_families()
+    );
+    assert!(r.cases > 100);
+}
+
+/// `n` cases a family for every kind, each kind with a stream of its own,
+/// and the same cases for the same seed on every run and build (pinned).
+#[test]
+fn random_families_are_seeded_per_kind() {
+    let count = |kind: &str| random_cases(kind, 5, 3).len();
+    assert_eq!(
+        (count("sphere"), count("plane"), count("quadric")),
+        (6, 3, 3)
+    );
+    // A random camera is kept only if it builds.
+    assert!((1..=3).contains(&count("camera")));
+    let seed = Gate::new(Declared::exact(Semantics::WholeLine)).seed;
+    let nth = |kind: &str, seed: u64, i: usize| eval_line(&random_cases(kind, seed, 1)[i].1, "f");
+    assert_eq!(
+        [
+            nth("sphere", seed, 0),
+            nth("sphere", seed, 1),
+            nth("quadric", seed, 0)
+        ],
+        PINNED
+    );
+    assert_ne!(nth("sphere", 2, 0), nth("sphere", 4, 0));
+}
+
+/// The first random sphere cases (aimed, inside) and quadric case of the
+/// default seed, with the locked `rand`.
+const PINNED: [&str; 3] = [
+    r#"{"kind":"sphere","family":"f","origin":[-12.997591,-14.722791,-10.010107],"dir":[17.39785,18.238468,2.4735003],"center":[5.5224895,2.7836657,-8.714907],"radius":1.6225507}"#,
+    r#"{"kind":"sphere","family":"f","origin":[5.772785,2.9203901,-9.234395],"dir":[-0.03994727,0.6658251,0.24818134],"center":[5.5224895,2.7836657,-8.714907],"radius":1.6225507}"#,
+    r#"{"kind":"quadric","family":"f","origin":[-5.585551,4.205204,1.2802863],"dir":[-0.9152405,0.86650085,-0.42728305],"coeffs":[-1.9977055, -0.7196121, 0.5238104, 0.44048786, 0.816869, -0.58995414, -0.42059255, 0.4542184, -0.28483868, -0.21260095]}"#,
+];
+
+fn whole_line() -> Gate {
+    Gate::new(Declared::f32(Semantics::WholeLine))
+}
+fn nearest_positive() -> Gate {
+    Gate::new(Declared::f32(Semantics::NearestPositive))
+}
+
+/// From the unit sphere's surface the roots are 0 and 2: the nearest hit
+/// with `t > 0` is 2, not the origin's own 0.
+#[test]
+fn nearest_positive_is_strictly_positive() {
+    let (r, s) = (Ray::new(-Vec3::Z, Vec3::Z), Sphere::new(Vec3::ZERO, 1.0));
+    assert!(
+        nearest_positive()
+            .judge_sphere(&r, &s, Answer::Nearest(Some(2.0)))
+            .is_ok()
+    );
+    assert!(
+        nearest_positive()
+            .judge_sphere(&r, &s, Answer::Nearest(Some(0.0)))
+            .is_err()
+    );
+}
+
+/// A NaN is named as such, not taken for a hit where there is none.
+#[test]
+fn a_nan_nearest_hit_is_a_nan_root() {
+    let (r, s) = (
+        Ray::new(Vec3::new(0.0, 5.0, -5.0), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
+    let f = nearest_positive().judge_sphere(&r, &s, Answer::Nearest(Some(f32::NAN)));
+    assert_eq!(f.unwrap_err().why, "a NaN root");
+}
+
+/// A ray in the plane has no nearest hit to check: any answer passes in
+/// `NearestPositive`, while `WholeLine` wants `Everywhere`.
+#[test]
+fn a_ray_in_the_plane_has_no_nearest_hit_to_check() {
+    let (r, p) = (
+        Ray::new(Vec3::ZERO, Vec3::X),
+        Plane::new(Vec3::ZERO, Vec3::Y),
+    );
+    for a in [Answer::Nearest(None), Answer::Nearest(Some(1.0))] {
+        assert!(nearest_positive().judge_plane(&r, &p, a).is_ok());
+    }
+    assert!(whole_line().judge_plane(&r, &p, Answer::Everywhere).is_ok());
+    assert!(
+        whole_line()
+            .judge_plane(&r, &p, Answer::Roots(vec![]))
+            .is_err()
+    );
+}
+
+/// `x² − (1 − 2⁻²⁴)y² + z − 1 = 0` along `(1, 1, 1)` from 0:
+/// `2⁻²⁴t² + t − 1 = 0`, with roots ≈ −2²⁴ − 1 and ≈ 1 − 2⁻²⁴. α is
+/// within the f32 band of its terms (2·2⁻²⁴), so a kernel may take it for
+/// 0 and answer the one root 1 (an ulp off), but not a wrong one.
+#[test]
+fn a_tiny_alpha_may_drop_a_root_but_not_miss_both() {
+    let q = Quadric::new([
+        1.0,
+        -(1.0 - 2f32.powi(-24)),
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        1.0,
+        -1.0,
+    ]);
+    let r = Ray::new(Vec3::ZERO, Vec3::ONE);
+    assert!(
+        whole_line()
+            .judge_quadric(&r, &q, Answer::Roots(vec![1.0]))
+            .is_ok()
+    );
+    let f = whole_line()
+        .judge_quadric(&r, &q, Answer::Roots(vec![5.0]))
+        .unwrap_err();
+    assert!(f.why.contains("near none"), "{}", f.why);
+}
