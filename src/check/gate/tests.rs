@@ -232,3 +232,127 @@ fn a_tiny_alpha_may_drop_a_root_but_not_miss_both() {
         .unwrap_err();
     assert!(f.why.contains("near none"), "{}", f.why);
 }
+
+/// From `z = 0.999` inside the unit sphere the roots are −1.999 (κ = 2,
+/// 11 ulps allowed in f32) and 0.0009999871 (κ = 2000, 8003 ulps): the
+/// nearest hit is judged by its own root's κ, not the first root's.
+#[test]
+fn a_nearest_hit_is_judged_by_its_own_roots_condition() {
+    let (r, s) = (
+        Ray::new(Vec3::new(0.0, 0.0, 0.999), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
+    let off = |n: u32| f32::from_bits(0.000_999_987_1f32.to_bits() + n);
+    assert!(
+        nearest_positive()
+            .judge_sphere(&r, &s, Answer::Nearest(Some(off(1000))))
+            .is_ok()
+    );
+    assert!(
+        nearest_positive()
+            .judge_sphere(&r, &s, Answer::Nearest(Some(off(9000))))
+            .is_err()
+    );
+}
+
+/// A hit where there is none is named by the side of 0 it is on.
+#[test]
+fn a_spurious_hit_is_named_by_its_sign() {
+    let (r, s) = (
+        Ray::new(Vec3::new(0.0, 5.0, -5.0), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
+    let why = |t: f32| {
+        let f = nearest_positive().judge_sphere(&r, &s, Answer::Nearest(Some(t)));
+        f.unwrap_err().why
+    };
+    assert_eq!(why(-1.0), "a hit at t ≤ 0 was returned");
+    // (A hit at t = 0 itself passes: a root at t ≈ 0 may go either way.)
+    assert!(
+        nearest_positive()
+            .judge_sphere(&r, &s, Answer::Nearest(Some(0.0)))
+            .is_ok()
+    );
+    assert_eq!(why(3.0), "a hit where there is none");
+}
+
+/// A tangent (one exact root) may come as one root or as the same root
+/// twice, but not as two different ones.
+#[test]
+fn a_tangent_may_come_twice() {
+    let (r, s) = (
+        Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
+    assert!(
+        whole_line()
+            .judge_sphere(&r, &s, Answer::Roots(vec![5.0]))
+            .is_ok()
+    );
+    assert!(
+        whole_line()
+            .judge_sphere(&r, &s, Answer::Roots(vec![5.0, 5.0]))
+            .is_ok()
+    );
+    assert!(
+        whole_line()
+            .judge_sphere(&r, &s, Answer::Roots(vec![5.0, 6.0]))
+            .is_err()
+    );
+}
+
+/// Two roots answered with one is a class error for a sphere (only a
+/// quadric's tiny α excuses it), even when the one root is right; and the
+/// tiny-α quadric answered with no root is a class error too.
+#[test]
+fn a_dropped_root_is_a_class_error_unless_alpha_is_tiny() {
+    let (r, s) = (
+        Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
+    let f = whole_line()
+        .judge_sphere(&r, &s, Answer::Roots(vec![4.0]))
+        .unwrap_err();
+    assert!(f.why.starts_with("a different class"), "{}", f.why);
+    let q = Quadric::new([
+        1.0,
+        -(1.0 - 2f32.powi(-24)),
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        1.0,
+        -1.0,
+    ]);
+    let f = whole_line()
+        .judge_quadric(&Ray::new(Vec3::ZERO, Vec3::ONE), &q, Answer::Roots(vec![]))
+        .unwrap_err();
+    assert!(f.why.starts_with("a different class"), "{}", f.why);
+}
+
+/// Answers of another kind: a ray 2⁻⁴⁰ above a plane is within the band
+/// of lying in it, so `Everywhere` passes; in the plane exactly, roots are
+/// wrong because every t solves it; and a nearest hit where the whole line
+/// was declared is the wrong semantics.
+#[test]
+fn answers_of_another_kind() {
+    let p = Plane::new(Vec3::ZERO, Vec3::Y);
+    let above = Ray::new(Vec3::new(0.0, 2f32.powi(-40), 0.0), Vec3::X);
+    assert!(
+        whole_line()
+            .judge_plane(&above, &p, Answer::Everywhere)
+            .is_ok()
+    );
+    let on = Ray::new(Vec3::ZERO, Vec3::X);
+    let f = whole_line()
+        .judge_plane(&on, &p, Answer::Roots(vec![]))
+        .unwrap_err();
+    assert!(f.why.starts_with("every t solves it"), "{}", f.why);
+    let down = Ray::new(Vec3::Y, -Vec3::Y);
+    let f = whole_line()
+        .judge_plane(&down, &p, Answer::Nearest(Some(1.0)))
+        .unwrap_err();
+    assert!(f.why.contains("wrong semantics"), "{}", f.why);
+}
