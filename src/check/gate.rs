@@ -992,6 +992,19 @@ fn sphere_band(ray: &Ray, s: &Sphere) -> f64 {
     a * a * (r * r + r * f.length()) * 2f64.powi(-44)
 }
 
+/// `Σ |kᵢ dⱼ dₖ|` over α's six terms: the scale α's rounding error is
+/// relative to.
+fn alpha_terms(ray: &Ray, q: &Quadric) -> f64 {
+    let k = q.coeffs.map(f64::from);
+    let dd = ray.dir.to_array().map(f64::from);
+    (k[0] * dd[0] * dd[0]).abs()
+        + (k[1] * dd[1] * dd[1]).abs()
+        + (k[2] * dd[2] * dd[2]).abs()
+        + (k[3] * dd[0] * dd[1]).abs()
+        + (k[4] * dd[0] * dd[2]).abs()
+        + (k[5] * dd[1] * dd[2]).abs()
+}
+
 fn judge_sphere(d: &Declared, ray: &Ray, s: &Sphere, got: Answer) -> Verdict {
     exact_sphere(d, ray, s).map_or(Verdict::Pass, |e| judge(d, &e, got))
 }
@@ -1064,15 +1077,8 @@ fn exact_quadric(d: &Declared, ray: &Ray, q: &Quadric) -> Option<Exact> {
     let exact = quadric::exact::classify(&eq);
     let margin = eq.discriminant().to_f64();
     // α within the band of its terms may be taken for 0 (a linear answer).
-    let k = q.coeffs.map(f64::from);
-    let dd = ray.dir.to_array().map(f64::from);
-    let alpha_terms = (k[0] * dd[0] * dd[0]).abs()
-        + (k[1] * dd[1] * dd[1]).abs()
-        + (k[2] * dd[2] * dd[2]).abs()
-        + (k[3] * dd[0] * dd[1]).abs()
-        + (k[4] * dd[0] * dd[2]).abs()
-        + (k[5] * dd[1] * dd[2]).abs();
-    let alpha_small = eq.alpha.to_f64().abs() <= alpha_terms * 2f64.powi(-44) * d.band_scale;
+    let alpha_small =
+        eq.alpha.to_f64().abs() <= alpha_terms(ray, q) * 2f64.powi(-44) * d.band_scale;
     let kappa = match exact {
         QuadricHit::Two(..) | QuadricHit::One(..) => quadric::condition(ray, q).to_vec(),
         _ => vec![f64::INFINITY; 2],

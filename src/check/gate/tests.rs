@@ -356,3 +356,54 @@ fn answers_of_another_kind() {
         .unwrap_err();
     assert!(f.why.contains("wrong semantics"), "{}", f.why);
 }
+
+/// `a² (r² + r|f|) 2⁻⁴⁴` with `a = d·d = 4`, `r = 2`, `f = o − c = (3, 4, 0)`:
+/// `16 · (4 + 10) · 2⁻⁴⁴`.
+#[test]
+fn sphere_band_term_by_term() {
+    let ray = Ray::new(Vec3::new(4.0, 4.0, 0.0), Vec3::new(0.0, 0.0, 2.0));
+    let s = Sphere::new(Vec3::X, 2.0);
+    assert_eq!(sphere_band(&ray, &s), 224.0 * 2f64.powi(-44));
+}
+
+/// `Σ |kᵢ dⱼ dₖ|` for `k = 1..6` and `d = (2, 3, 5)`:
+/// 4 + 18 + 75 + 4·6 + 5·10 + 6·15 = 261.
+#[test]
+fn alpha_terms_term_by_term() {
+    let q = Quadric::new([1.0, 2.0, -3.0, 4.0, 5.0, -6.0, 7.0, 8.0, 9.0, 10.0]);
+    let ray = Ray::new(Vec3::ONE, Vec3::new(2.0, 3.0, -5.0));
+    assert_eq!(alpha_terms(&ray, &q), 261.0);
+}
+
+/// The sphere's margin is `α · (β² − 4αγ) / 4`: from z = −5 along (0, 0, 2)
+/// to the unit sphere, α = 4, β = −20, γ = 24, so 4 · 16 / 4 = 16. A band
+/// of 32 holds it and a band of 8 does not.
+#[test]
+fn the_sphere_margin_against_its_band() {
+    let (ray, s) = (
+        Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::new(0.0, 0.0, 2.0)),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
+    // sphere_band = 4² · (1 + 5) · 2⁻⁴⁴ = 96 · 2⁻⁴⁴.
+    let with_band = |band: f64| Declared {
+        band_scale: band / (96.0 * 2f64.powi(-44)),
+        ..Declared::f32(Semantics::WholeLine)
+    };
+    assert!(exact_sphere(&with_band(32.0), &ray, &s).unwrap().in_band);
+    assert!(!exact_sphere(&with_band(8.0), &ray, &s).unwrap().in_band);
+}
+
+/// A plane's band is scaled by the declared factor, not offset by it: a
+/// ray at 30° to the plane is far outside rayoracle's own band.
+#[test]
+fn a_steep_ray_is_outside_the_plane_band() {
+    let (ray, p) = (
+        Ray::new(Vec3::Y, Vec3::new(1.0, -0.5, 0.0)),
+        Plane::new(Vec3::ZERO, Vec3::Y),
+    );
+    assert!(
+        !exact_plane(&Declared::exact(Semantics::WholeLine), &ray, &p)
+            .unwrap()
+            .in_band
+    );
+}
