@@ -255,6 +255,19 @@ mod tests {
     use crate::sphere::Sphere;
     use glam::Vec3;
 
+    /// The truth is the nearest root strictly above 0 (a root at 0 is the
+    /// origin on the surface, not a hit).
+    #[test]
+    fn the_truth_is_the_nearest_root_above_zero() {
+        let e = Exact {
+            roots: Some(vec![-1.0, 0.0, 2.0]),
+            in_band: false,
+            alpha_small: false,
+            kappa: vec![1.0; 3],
+        };
+        assert!(matches!(truth(Some(&e)), Truth::Nearest(Some(2.0))));
+    }
+
     fn counted(truth: Truth, got: Answer) -> FamilyStats {
         let mut s = FamilyStats::default();
         tally(&mut s, &mut Vec::new(), truth, &got);

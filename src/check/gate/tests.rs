@@ -407,3 +407,163 @@ fn a_steep_ray_is_outside_the_plane_band() {
             .in_band
     );
 }
+
+/// The tiny-α quadric again: α = 2⁻²⁴ against terms 2 − 2⁻²⁴, so α is
+/// small for a band scale of 2²⁰ (bound 2⁻²³ − 2⁻⁴⁸) and not for 2¹⁹
+/// (bound 2⁻²⁴ − 2⁻⁴⁹); and small-integer inputs never are.
+#[test]
+fn alpha_small_at_its_bound() {
+    let q = Quadric::new([
+        1.0,
+        -(1.0 - 2f32.powi(-24)),
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        1.0,
+        -1.0,
+    ]);
+    let r = Ray::new(Vec3::ZERO, Vec3::ONE);
+    let scaled = |e: i32| Declared {
+        band_scale: 2f64.powi(e),
+        ..Declared::f32(Semantics::WholeLine)
+    };
+    assert!(exact_quadric(&scaled(20), &r, &q).unwrap().alpha_small);
+    assert!(!exact_quadric(&scaled(19), &r, &q).unwrap().alpha_small);
+    // The unit sphere as a quadric, from (0, 0.875, −5): α = 1 is not small.
+    let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+    let r = Ray::new(Vec3::new(0.0, 0.875, -5.0), Vec3::Z);
+    assert!(!exact_quadric(&scaled(20), &r, &ball).unwrap().alpha_small);
+    // x² − y² + z − 1 along (1, 1, 1): α = 0 exactly, on small integers.
+    let q = Quadric::new([1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, -1.0]);
+    assert!(
+        !exact_quadric(&scaled(20), &Ray::new(Vec3::ZERO, Vec3::ONE), &q)
+            .unwrap()
+            .alpha_small
+    );
+}
+
+/// The quadric margin (here β² − 4αγ = 100 − 99.0625 = 0.9375) is judged
+/// against the band times the declared scale.
+#[test]
+fn the_quadric_margin_against_its_band() {
+    let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+    let r = Ray::new(Vec3::new(0.0, 0.875, -5.0), Vec3::Z);
+    let b = quadric::band(&r, &ball);
+    let with_band = |band: f64| Declared {
+        band_scale: band / b,
+        ..Declared::f32(Semantics::WholeLine)
+    };
+    assert!(
+        exact_quadric(&with_band(2.0 * 0.9375), &r, &ball)
+            .unwrap()
+            .in_band
+    );
+    assert!(
+        !exact_quadric(&with_band(0.5 * 0.9375), &r, &ball)
+            .unwrap()
+            .in_band
+    );
+}
+
+/// Shrinking a sphere case that fails while `R > 1` and `d.z ≠ 0`: every
+/// other field goes to 0, R to the integer 2, and d.z = 0.4 (binary
+/// 1.1001…·2⁻²) to 0.375, its first mantissa bit kept (0 would pass).
+#[test]
+fn shrink_keeps_the_failure_and_drops_the_rest() {
+    let case = Case::Sphere(
+        Ray::new(Vec3::new(1.2345, -6.789, 3.3), Vec3::new(0.1, -0.2, 0.4)),
+        Sphere::new(Vec3::new(4.5, 0.7, -2.2), 1.7371),
+    );
+    let fails = |c: &Case| matches!(c, Case::Sphere(r, s) if s.radius > 1.0 && r.dir.z != 0.0);
+    let small = shrink(&case, &fails);
+    assert_eq!(
+        eval_line(&small, "f"),
+        r#"{"kind":"sphere","family":"f","origin":[0.0,0.0,0.0],"dir":[0.0,0.0,0.375],"center":[0.0,0.0,0.0],"radius":2.0}"#
+    );
+}
+
+/// Shrinking stops after 400 tries however long it could go on.
+#[test]
+fn shrink_gives_up_after_400_tries() {
+    let case = Case::Quadric(
+        Ray::new(Vec3::new(1.3, -2.7, 3.1), Vec3::new(0.3, -0.7, 0.9)),
+        Quadric::new([1.1, -2.3, 3.7, 0.3, -0.9, 1.9, 2.9, -3.3, 0.7, -1.3]),
+    );
+    let calls = std::cell::Cell::new(0);
+    let every_50th = |_: &Case| {
+        calls.set(calls.get() + 1);
+        calls.get() % 50 == 0
+    };
+    shrink(&case, &every_50th);
+    assert_eq!(calls.get(), 401);
+}
+
+/// The fuzz helpers decode the case the way rayoracle's own targets encode
+/// it, hand it to the kernel, and panic when the gate fails the answer.
+#[test]
+fn the_fuzz_helpers_judge_the_decoded_case() {
+    use crate::fuzz::encode_f32;
+    let mut bytes = Vec::new();
+    for x in [0.0, 0.0, -5.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0] {
+        encode_f32(x, &mut bytes);
+    }
+    let seen = RefCell::new(None);
+    let right = |r: &Ray, s: &Sphere| {
+        *seen.borrow_mut() = Some(eval_line(&Case::Sphere(*r, *s), "f"));
+        Answer::Roots(vec![4.0, 6.0])
+    };
+    super::fuzz::sphere(&bytes, &whole_line(), &right);
+    assert_eq!(
+        seen.into_inner().unwrap(),
+        r#"{"kind":"sphere","family":"f","origin":[0.0,0.0,-5.0],"dir":[0.0,0.0,1.0],"center":[0.0,0.0,0.0],"radius":1.0}"#
+    );
+    let wrong = |_: &Ray, _: &Sphere| Answer::Roots(vec![4.0, 7.0]);
+    assert!(
+        std::panic::catch_unwind(|| super::fuzz::sphere(&bytes, &whole_line(), &wrong)).is_err()
+    );
+
+    // A plane: origin (0, 1, 0) down onto y = 0 at t = 1.
+    let mut bytes = Vec::new();
+    for x in [0.0, 1.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0] {
+        encode_f32(x, &mut bytes);
+    }
+    let right = |_: &Ray, _: &Plane| Answer::Roots(vec![1.0]);
+    super::fuzz::plane(&bytes, &whole_line(), &right);
+    let wrong = |_: &Ray, _: &Plane| Answer::Roots(vec![2.0]);
+    assert!(
+        std::panic::catch_unwind(|| super::fuzz::plane(&bytes, &whole_line(), &wrong)).is_err()
+    );
+
+    // A quadric: the unit sphere from z = −5 along z.
+    let mut bytes = Vec::new();
+    for x in [
+        0.0, 0.0, -5.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0,
+    ] {
+        encode_f32(x, &mut bytes);
+    }
+    let right = |_: &Ray, _: &Quadric| Answer::Roots(vec![4.0, 6.0]);
+    super::fuzz::quadric(&bytes, &whole_line(), &right);
+    let wrong = |_: &Ray, _: &Quadric| Answer::Roots(vec![4.0]);
+    assert!(
+        std::panic::catch_unwind(|| super::fuzz::quadric(&bytes, &whole_line(), &wrong)).is_err()
+    );
+}
+
+/// The random strategies draw components of both signs.
+#[test]
+fn random_strategies_draw_both_signs() {
+    use proptest::strategy::{Strategy, ValueTree};
+    let mut runner = proptest::test_runner::TestRunner::deterministic();
+    let s = super::strategy::plane("plane/random/any").unwrap();
+    let mut signs = [[false; 2]; 3];
+    for _ in 0..64 {
+        let (ray, _) = s.new_tree(&mut runner).unwrap().current();
+        for (i, x) in ray.origin.to_array().into_iter().enumerate() {
+            signs[i][usize::from(x > 0.0)] = true;
+        }
+    }
+    assert_eq!(signs, [[true; 2]; 3]);
+}
