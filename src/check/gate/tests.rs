@@ -209,18 +209,7 @@ fn a_ray_in_the_plane_has_no_nearest_hit_to_check() {
 /// 0 and answer the one root 1 (an ulp off), but not a wrong one.
 #[test]
 fn a_tiny_alpha_may_drop_a_root_but_not_miss_both() {
-    let q = Quadric::new([
-        1.0,
-        -(1.0 - 2f32.powi(-24)),
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        1.0,
-        -1.0,
-    ]);
+    let q = tiny_alpha();
     let r = Ray::new(Vec3::ZERO, Vec3::ONE);
     assert!(
         whole_line()
@@ -314,18 +303,7 @@ fn a_dropped_root_is_a_class_error_unless_alpha_is_tiny() {
         .judge_sphere(&r, &s, Answer::Roots(vec![4.0]))
         .unwrap_err();
     assert!(f.why.starts_with("a different class"), "{}", f.why);
-    let q = Quadric::new([
-        1.0,
-        -(1.0 - 2f32.powi(-24)),
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        1.0,
-        -1.0,
-    ]);
+    let q = tiny_alpha();
     let f = whole_line()
         .judge_quadric(&Ray::new(Vec3::ZERO, Vec3::ONE), &q, Answer::Roots(vec![]))
         .unwrap_err();
@@ -413,18 +391,7 @@ fn a_steep_ray_is_outside_the_plane_band() {
 /// (bound 2⁻²⁴ − 2⁻⁴⁹); and small-integer inputs never are.
 #[test]
 fn alpha_small_at_its_bound() {
-    let q = Quadric::new([
-        1.0,
-        -(1.0 - 2f32.powi(-24)),
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        1.0,
-        -1.0,
-    ]);
+    let q = tiny_alpha();
     let r = Ray::new(Vec3::ZERO, Vec3::ONE);
     let scaled = |e: i32| Declared {
         band_scale: 2f64.powi(e),
@@ -566,4 +533,21 @@ fn random_strategies_draw_both_signs() {
         }
     }
     assert_eq!(signs, [[true; 2]; 3]);
+}
+
+/// `x² − (1 − 2⁻²⁴)y² + z − 1`, crossed along `(1, 1, 1)` from 0 with
+/// α = 2⁻²⁴.
+fn tiny_alpha() -> Quadric {
+    Quadric::new([
+        1.0,
+        -(1.0 - 2f32.powi(-24)),
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        1.0,
+        -1.0,
+    ])
 }
