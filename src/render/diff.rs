@@ -78,6 +78,8 @@ fn decode(bytes: &[u8]) -> Result<Decoded, String> {
 /// use rayoracle::render::diff::heat;
 /// assert_eq!(heat(0.0), [0, 0, 0]);
 /// assert!(heat(1e-9)[0] >= 96);
+/// // √0.25 = 0.5, so v = 0.25 + 0.75·0.5 = 0.625: red full, green 0.875.
+/// assert_eq!(heat(0.25), [255, 223, 0]);
 /// assert_eq!(heat(1.0), [255, 255, 255]);
 /// ```
 pub fn heat(d: f64) -> [u8; 3] {
