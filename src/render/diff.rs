@@ -80,6 +80,8 @@ fn decode(bytes: &[u8]) -> Result<Decoded, String> {
 /// assert!(heat(1e-9)[0] >= 96);
 /// // √0.25 = 0.5, so v = 0.25 + 0.75·0.5 = 0.625: red full, green 0.875.
 /// assert_eq!(heat(0.25), [255, 223, 0]);
+/// // √(1/144) = 1/12, v = 0.3125: red 0.375 + 0.625·0.9375, no green.
+/// assert_eq!(heat(1.0 / 144.0), [245, 0, 0]);
 /// assert_eq!(heat(1.0), [255, 255, 255]);
 /// ```
 pub fn heat(d: f64) -> [u8; 3] {
@@ -202,7 +204,7 @@ pub fn diff_png(old: &[u8], new: &[u8]) -> Result<(Vec<u8>, Comparison), String>
 
 #[cfg(test)]
 mod tests {
-    use super::decode;
+    use super::{decode, diff_png, heat};
 
     fn png(w: u32, h: u32, color: png::ColorType, depth: png::BitDepth, data: &[u8]) -> Vec<u8> {
         let mut bytes = Vec::new();
@@ -259,5 +261,58 @@ mod tests {
             "unsupported PNG colour type Rgba"
         );
         assert!(decode(b"GIF89a").err().unwrap().starts_with("not a PNG: "));
+    }
+
+    fn grey(w: u32, h: u32, data: &[u8]) -> Vec<u8> {
+        png(w, h, png::ColorType::Grayscale, png::BitDepth::Eight, data)
+    }
+
+    /// Two 2×2 greys: the diff is `old | 4 grey | new | 4 grey | heat`,
+    /// 14×2, each pixel in place, and the numbers count the one pixel that
+    /// changed, by 100 of 255.
+    #[test]
+    fn the_diff_lays_out_old_new_and_heat() {
+        let (old, new) = ([0, 100, 50, 255], [0, 200, 50, 255]);
+        let (png, c) = diff_png(&grey(2, 2, &old), &grey(2, 2, &new)).unwrap();
+        assert_eq!(
+            (c.pixels, c.differing, c.max_difference),
+            (4, 1, 100.0 / 255.0)
+        );
+        let d = decode(&png).unwrap();
+        assert_eq!((d.width, d.height), (14, 2));
+        let g = |v: u8| [v; 3];
+        let h = heat(100.0 / 255.0);
+        let rows: Vec<&[[u8; 3]]> = d.rgb.chunks(14).collect();
+        let gutter = [g(96); 4];
+        let row0 = [
+            &[g(0), g(100)][..],
+            &gutter,
+            &[g(0), g(200)],
+            &gutter,
+            &[g(0), h],
+        ]
+        .concat();
+        let row1 = [
+            &[g(50), g(255)][..],
+            &gutter,
+            &[g(50), g(255)],
+            &gutter,
+            &[g(0), g(0)],
+        ]
+        .concat();
+        assert_eq!(rows, [&row0[..], &row1[..]]);
+    }
+
+    /// Images of different sizes are shown side by side, with a white
+    /// heat map and no pixel compared, even when their pixel counts match.
+    #[test]
+    fn images_of_different_sizes_are_not_compared() {
+        let (png, c) = diff_png(&grey(2, 1, &[10, 20]), &grey(1, 2, &[30, 40])).unwrap();
+        assert_eq!((c.pixels, c.differing), (0, 0));
+        let d = decode(&png).unwrap();
+        assert_eq!((d.width, d.height), (2 + 4 + 1 + 4 + 2, 2));
+        assert_eq!(&d.rgb[11..13], &[[255; 3]; 2]);
+        assert_eq!(d.rgb[6], [30; 3]);
+        assert_eq!(d.rgb[13 + 6], [40; 3]);
     }
 }
