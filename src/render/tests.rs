@@ -144,3 +144,28 @@ fn a_scene_with_compiled_out_planes_is_refused_by_name() {
     assert_eq!(e.field, "planes");
     assert!(e.message.contains("feature \"plane\" is off"), "{e}");
 }
+
+/// Two objects of every kind, each seen somewhere (a floor and a ceiling,
+/// two spheres, and two balls written as quadrics, of radius 1 at
+/// (0, 0, −4) and 1.2 at (−4, 0, −4)): the object numbers are each kind's
+/// base plus its index on both paths, so every id shows up, and the paths
+/// agree bit for bit.
+#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+#[test]
+fn two_objects_of_each_kind_keep_their_ids_on_both_paths() {
+    let s = scene(
+        r#""planes": [{"id": 11, "point": [0, -1, 0], "normal": [0, 1, 0]},
+                      {"id": 12, "point": [0, 1.5, 0], "normal": [0, -1, 0]}],
+           "spheres": [{"id": 21, "center": [-1.5, 0, -4], "radius": 0.7},
+                       {"id": 22, "center": [1.5, 0, -4], "radius": 0.7}],
+           "quadrics": [{"id": 31, "coeffs": [1, 1, 1, 0, 0, 0, 0, 0, 8, 15]},
+                        {"id": 32, "coeffs": [1, 1, 1, 0, 0, 0, 8, 0, 8, 30.56]}]"#,
+    );
+    let plan = Plan::compile(&s, Channels::ALL).unwrap();
+    let (r, x) = (render(&plan, Path::Reference), render(&plan, Path::X4));
+    assert!(r.same_bits(&x));
+    let mut ids = r.id.clone();
+    ids.sort_unstable();
+    ids.dedup();
+    assert_eq!(ids, [11, 12, 21, 22, 31, 32]);
+}
