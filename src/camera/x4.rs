@@ -34,7 +34,7 @@ impl Camera {
     /// use rayoracle::camera::CameraParams;
     /// use glam::Vec3;
     /// let cam = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [8, 6]).build().unwrap();
-    /// assert_eq!(cam.ray4_row(4, 2).to_rays()[3], cam.ray(7, 2));
+    /// assert_eq!(cam.ray4_row(4, 2).to_rays(), [4, 5, 6, 7].map(|x| cam.ray(x, 2)));
     /// ```
     #[inline]
     pub fn ray4_row(&self, px: u32, py: u32) -> Ray4 {
@@ -47,7 +47,8 @@ impl Camera {
     /// use rayoracle::camera::CameraParams;
     /// use glam::Vec3;
     /// let cam = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [8, 6]).build().unwrap();
-    /// assert_eq!(cam.ray4_tile(2, 2).to_rays()[2], cam.ray(2, 3));
+    /// let want = [[2, 3], [3, 3], [2, 4], [3, 4]].map(|[x, y]| cam.ray(x, y));
+    /// assert_eq!(cam.ray4_tile(2, 3).to_rays(), want);
     /// ```
     #[inline]
     pub fn ray4_tile(&self, px: u32, py: u32) -> Ray4 {
