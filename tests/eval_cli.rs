@@ -331,3 +331,38 @@ fn a_bad_line_does_not_stop_the_run() {
         assert_eq!(v.get("error").is_some(), i % 3 == 1, "{line}");
     }
 }
+
+/// A reader that closes the pipe early (`| head`) is not an I/O error:
+/// the exit code is the run's own. A write that fails for another reason
+/// (a full disk) is one, with the OS error named.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_closed_pipe_is_not_an_error_but_a_full_disk_is() {
+    use std::io::Read;
+    use std::process::{Command, Stdio};
+    // Far more output than a pipe buffers (about 6 MB for 64 KiB).
+    let line = r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#;
+    let path = temp_file("many.jsonl", &vec![line; 20_000]);
+    let input = path.to_str().unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rayoracle"))
+        .args(["eval", input])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut first = [0u8; 16];
+    child.stdout.take().unwrap().read_exact(&mut first).unwrap();
+    // The pipe is closed here, with most of the output unwritten.
+    let code = child.wait().unwrap().code();
+    assert!(matches!(code, Some(0 | 1)), "{code:?}");
+
+    let full = std::fs::File::create("/dev/full").unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_rayoracle"))
+        .args(["eval", input])
+        .stdout(full)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot write stdout"));
+    let _ = std::fs::remove_file(path);
+}

@@ -197,7 +197,7 @@ fn report_command(args: &ReportArgs) -> u8 {
     } else {
         Options::FULL
     };
-    let steps = (catalogue.families.len() * Variant::ALL.len()) as u64;
+    let steps = report_steps(&catalogue);
     let bar = indicatif::ProgressBar::new(steps);
     bar.set_style(
         indicatif::ProgressStyle::with_template(
@@ -302,7 +302,7 @@ fn render_command(
         let bar = indicatif::ProgressBar::new(u64::from(h));
         // Only long renders get a bar (and indicatif draws nothing when
         // stderr is not a terminal).
-        if u64::from(w) * u64::from(h) < 1 << 20 {
+        if !long_render(w, h) {
             bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
         }
         bar.set_style(
@@ -427,6 +427,16 @@ fn eval_command(file: Option<&Path>) -> u8 {
     }
 }
 
+/// Whether a render is long enough (a million pixels) for a progress bar.
+fn long_render(w: u32, h: u32) -> bool {
+    u64::from(w) * u64::from(h) >= 1 << 20
+}
+
+/// The report's progress steps: one per family per variant.
+fn report_steps(catalogue: &rayoracle::report::Catalogue) -> u64 {
+    (catalogue.families.len() * rayoracle::report::Variant::ALL.len()) as u64
+}
+
 /// The `*.jsonl` files in `dir`, sorted by file name; an empty list if `dir`
 /// does not exist.
 fn case_files(dir: &Path) -> io::Result<Vec<PathBuf>> {
@@ -518,9 +528,7 @@ fn default_job(cases_dir: &Path, out_path: &Path) -> u8 {
         EXIT_IO
     } else if summary.malformed == 0 && summary.internal == 0 && summary.invalid == expected_errors
     {
-        if expected_errors > 0 {
-            println!("({expected_errors} invalid lines are the fixtures' expected error cases)");
-        }
+        println!("({expected_errors} invalid lines are the fixtures' expected error cases)");
         EXIT_OK
     } else {
         EXIT_BAD_LINE
@@ -544,6 +552,28 @@ fn expected_error_lines(files: &[PathBuf]) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A bar from a million pixels on, in either orientation.
+    #[test]
+    fn a_render_is_long_from_a_million_pixels() {
+        assert!(long_render(1024, 1024) && long_render(1 << 20, 1));
+        assert!(!long_render(1024, 1023) && !long_render(1, 1));
+    }
+
+    /// 27 stiff families, 5 variants each.
+    #[test]
+    fn the_report_counts_a_step_per_family_and_variant() {
+        let c = rayoracle::report::Catalogue::builtin().unwrap();
+        assert_eq!(report_steps(&c), 27 * 5);
+    }
+
+    /// A missing cases directory is an empty run; a path that is not a
+    /// directory is an error.
+    #[test]
+    fn case_files_refuses_a_file_for_a_directory() {
+        assert!(case_files(Path::new("no/such/dir")).unwrap().is_empty());
+        assert!(case_files(Path::new("Cargo.toml")).is_err());
+    }
 
     fn temp_dir(name: &str) -> PathBuf {
         let dir = std::env::temp_dir().join(format!("rayoracle-bin-{}-{name}", std::process::id()));
