@@ -199,7 +199,9 @@ pub fn run(catalogue: &Catalogue, options: Options, on_step: &mut dyn FnMut()) -
 /// ```
 /// use rayoracle::report::{Point, pareto};
 /// let p = |v: &str, ns, bits| Point { variant: v.into(), ns_per_ray: ns, error_bits: bits, mismatches: 0, front: false };
-/// let pts = pareto(vec![p("a", 1.0, 20.0), p("b", 5.0, 1.0), p("c", 6.0, 2.0), p("d", 50.0, 0.0)]);
+/// // e ties b on time and f ties it on error: b beats both.
+/// let pts = pareto(vec![p("a", 1.0, 20.0), p("b", 5.0, 1.0), p("c", 6.0, 2.0), p("d", 50.0, 0.0),
+///     p("e", 5.0, 3.0), p("f", 7.0, 1.0)]);
 /// let front: Vec<_> = pts.iter().filter(|p| p.front).map(|p| p.variant.as_str()).collect();
 /// assert_eq!(front, vec!["a", "b", "d"]);
 /// ```
@@ -318,6 +320,36 @@ pub fn markdown(rows: &[Row], catalogue: &Catalogue) -> String {
 
 #[cfg(test)]
 mod tests {
+    use super::{Catalogue, Kernel, Row, points};
+
+    /// A kernel's points average its own rows only, variant by variant.
+    #[test]
+    fn points_take_only_their_kernel_and_variant() {
+        let row = |kernel: &str, variant: &str, family: &str, ns: f64| Row {
+            kernel: kernel.into(),
+            variant: variant.into(),
+            family: family.into(),
+            cases: 4,
+            max_bits: 1.0,
+            p99_bits: 1.0,
+            mean_bits: 1.0,
+            class_mismatches: 0,
+            ns_per_ray: ns,
+        };
+        let rows = [
+            row("sphere", "reference", "sphere/far-tiny", 10.0),
+            row("sphere", "x4", "sphere/far-tiny", 4.0),
+            row("plane", "reference", "plane/grazing", 1000.0),
+        ];
+        let c = Catalogue::builtin().unwrap();
+        let pts = points(&rows, &c, Kernel::Sphere);
+        let got: Vec<(&str, f64)> = pts
+            .iter()
+            .map(|p| (p.variant.as_str(), p.ns_per_ray))
+            .collect();
+        assert_eq!(got, [("reference", 10.0), ("x4", 4.0)]);
+    }
+
     /// ⌈0.99·200⌉ = 198th of 1..=200, ⌈0.99·1⌉ = 1st of one.
     #[test]
     fn p99_is_the_nearest_rank() {
