@@ -320,12 +320,10 @@ pub fn markdown(rows: &[Row], catalogue: &Catalogue) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{Catalogue, Kernel, Row, points};
+    use super::{Catalogue, Kernel, Row, markdown, points};
 
-    /// A kernel's points average its own rows only, variant by variant.
-    #[test]
-    fn points_take_only_their_kernel_and_variant() {
-        let row = |kernel: &str, variant: &str, family: &str, ns: f64| Row {
+    fn row(kernel: &str, variant: &str, family: &str, ns: f64, mismatches: usize) -> Row {
+        Row {
             kernel: kernel.into(),
             variant: variant.into(),
             family: family.into(),
@@ -333,21 +331,45 @@ mod tests {
             max_bits: 1.0,
             p99_bits: 1.0,
             mean_bits: 1.0,
-            class_mismatches: 0,
+            class_mismatches: mismatches,
             ns_per_ray: ns,
-        };
-        let rows = [
-            row("sphere", "reference", "sphere/far-tiny", 10.0),
-            row("sphere", "x4", "sphere/far-tiny", 4.0),
-            row("plane", "reference", "plane/grazing", 1000.0),
-        ];
+        }
+    }
+
+    fn rows() -> Vec<Row> {
+        vec![
+            row("sphere", "reference", "sphere/far-tiny", 10.0, 0),
+            row("sphere", "reference", "sphere/huge-near", 20.0, 0),
+            row("sphere", "x4", "sphere/far-tiny", 4.0, 1),
+            row("sphere", "x4", "sphere/huge-near", 2.0, 0),
+            row("plane", "reference", "plane/far", 1000.0, 0),
+        ]
+    }
+
+    /// A kernel's points average its own rows only, variant by variant;
+    /// a misclassified case in a well-conditioned family counts 32 bits.
+    #[test]
+    fn points_take_only_their_kernel_and_variant() {
         let c = Catalogue::builtin().unwrap();
-        let pts = points(&rows, &c, Kernel::Sphere);
-        let got: Vec<(&str, f64)> = pts
+        let pts = points(&rows(), &c, Kernel::Sphere);
+        let got: Vec<(&str, f64, f64, usize)> = pts
             .iter()
-            .map(|p| (p.variant.as_str(), p.ns_per_ray))
+            .map(|p| (p.variant.as_str(), p.ns_per_ray, p.error_bits, p.mismatches))
             .collect();
-        assert_eq!(got, [("reference", 10.0), ("x4", 4.0)]);
+        assert_eq!(got, [("reference", 15.0, 1.0, 0), ("x4", 3.0, 32.0, 1)]);
+    }
+
+    /// One section per kernel, each row with its family's conditioning.
+    #[test]
+    fn markdown_sections_per_kernel_with_conditioning() {
+        let c = Catalogue::builtin().unwrap();
+        let md = markdown(&rows(), &c);
+        let (sphere, plane) = md.split_once("### plane").unwrap();
+        assert!(sphere.starts_with("### sphere"));
+        assert!(sphere.contains("| sphere/far-tiny | well | reference | 4 |"));
+        assert!(sphere.contains("| sphere/huge-near | ill | x4 | 4 |"));
+        assert!(!sphere.contains("plane/far"));
+        assert!(plane.contains("| plane/far | well | reference |"));
     }
 
     /// ⌈0.99·200⌉ = 198th of 1..=200, ⌈0.99·1⌉ = 1st of one.
