@@ -58,6 +58,15 @@ pub const MAX_PIXELS: u64 = 1 << 26;
 /// assert!(check_resolution([1920, 1080]).is_ok());
 /// assert_eq!(check_resolution([0, 5]).unwrap_err().0, "res");
 /// assert!(check_resolution([100_000, 100_000]).unwrap_err().1.contains("67108864"));
+/// // Each side up to the limit, in either orientation.
+/// let max = rayoracle::camera::MAX_RESOLUTION;
+/// assert!(check_resolution([max, 1]).is_ok() && check_resolution([1, max]).is_ok());
+/// for res in [[max + 1, 1], [1, max + 1]] {
+///     assert!(check_resolution(res).unwrap_err().1.contains("a side exceeds"));
+/// }
+/// // Up to 2²⁶ pixels.
+/// assert!(check_resolution([8192, 8192]).is_ok());
+/// assert!(check_resolution([8192, 8193]).unwrap_err().1.contains("pixels"));
 /// ```
 pub fn check_resolution(res: [u32; 2]) -> Result<(), (&'static str, String)> {
     let [w, h] = res;
