@@ -92,6 +92,7 @@ pub fn check_resolution(res: [u32; 2]) -> Result<(), (&'static str, String)> {
 /// ```
 /// use rayoracle::scene::DepthRange;
 /// assert!(DepthRange::DEFAULT.near < DepthRange::DEFAULT.far);
+/// assert_eq!((DepthRange::DEFAULT.near, DepthRange::DEFAULT.far), (0.00390625, 16777216.0));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DepthRange {
@@ -318,5 +319,29 @@ fn located(path: String, inner: serde_json::Error) -> SceneError {
         column: (line > 0).then_some(column.max(1)),
         field,
         message,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Scene, located};
+
+    /// A scene that is not an object is refused where its first character
+    /// is: here line 2, column 3.
+    #[test]
+    fn a_non_object_is_refused_at_its_first_character() {
+        let e = Scene::parse("\n  [1, 2]").unwrap_err();
+        assert_eq!((e.line, e.column), (Some(2), Some(3)));
+        let e = Scene::parse("7").unwrap_err();
+        assert_eq!((e.line, e.column), (Some(1), Some(1)));
+    }
+
+    /// An error serde_json could not place (line 0) has no line or column.
+    #[test]
+    fn an_unplaced_error_has_no_line_or_column() {
+        let inner = serde_json::from_value::<u32>(serde_json::json!("x")).unwrap_err();
+        assert_eq!(inner.line(), 0);
+        let e = located("camera".into(), inner);
+        assert_eq!((e.line, e.column, e.field.as_str()), (None, None, "camera"));
     }
 }
