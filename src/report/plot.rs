@@ -12,6 +12,10 @@ use plotters::prelude::*;
 /// let p = |v: &str, ns, bits| Point { variant: v.into(), ns_per_ray: ns, error_bits: bits, mismatches: 0, front: false };
 /// let s = svg("sphere", &pareto(vec![p("textbook", 3.0, 32.0), p("reference", 60.0, 1.0)]));
 /// assert!(s.starts_with("<svg") && s.contains("textbook") && s.contains("Pareto"));
+/// // A time that is not a positive number (not measured) is left off the
+/// // axis range, and the rest is still drawn.
+/// let s = svg("sphere", &pareto(vec![p("f64", 0.0, 1.0), p("exact", f64::INFINITY, 0.0), p("reference", 60.0, 1.0)]));
+/// assert!(s.contains("\nreference\n"));
 /// ```
 pub fn svg(kernel: &str, points: &[Point]) -> String {
     let mut out = String::new();
