@@ -98,3 +98,72 @@ fn draw(
         .draw()?;
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Point, pareto};
+
+    /// Where each variant lands: the circles, the front's line and the
+    /// labels' places, for three points with fixed times and errors. Any
+    /// change to the axis ranges or the offsets moves them.
+    #[test]
+    fn the_points_land_where_their_numbers_say() {
+        let p = |v: &str, ns, bits, mismatches| Point {
+            variant: v.into(),
+            ns_per_ray: ns,
+            error_bits: bits,
+            mismatches,
+            front: false,
+        };
+        let mut pts = pareto(vec![
+            p("textbook", 3.0, 32.0, 154),
+            p("reference", 60.0, 1.0, 0),
+            p("f64", 14.0, 0.0, 0),
+        ]);
+        // An untimed variant (0 ns) is left out of the plot and its axes.
+        pts.push(p("untimed", 0.0, 0.5, 0));
+        let s = super::svg("sphere", &pts);
+        let lines: Vec<&str> = s.lines().collect();
+        let attr = |l: &str, a: &str| {
+            let v = l.split(&format!(" {a}=\"")).nth(1).unwrap();
+            v[..v.find('"').unwrap()].to_string()
+        };
+        // Circles at (cx, cy); the front's line (blue, 2 px) by its points.
+        let shapes: Vec<String> = lines
+            .iter()
+            .filter_map(|l| {
+                if l.starts_with("<circle") {
+                    Some(format!("{},{}", attr(l, "cx"), attr(l, "cy")))
+                } else if l.starts_with("<polyline") && l.contains("#0000FF") {
+                    Some(attr(l, "points"))
+                } else {
+                    None
+                }
+            })
+            .collect();
+        // Each label's text and where it starts.
+        let labels: Vec<String> = lines
+            .windows(2)
+            .filter(|w| {
+                w[0].starts_with("<text")
+                    && ["textbook (154 misclassified)", "reference", "f64"].contains(&w[1])
+            })
+            .map(|w| format!("{},{} {}", attr(w[0], "x"), attr(w[0], "y"), w[1]))
+            .collect();
+        assert_eq!(shapes, PINNED_SHAPES, "{shapes:#?}");
+        assert_eq!(labels, PINNED_LABELS, "{labels:#?}");
+    }
+
+    const PINNED_SHAPES: [&str; 5] = [
+        "278,91 455,414 ",
+        "278,91",
+        "623,404",
+        "455,414",
+        "593,231 613,231 ",
+    ];
+    const PINNED_LABELS: [&str; 3] = [
+        "287,77 textbook (154 misclassified)",
+        "632,390 reference",
+        "464,400 f64",
+    ];
+}
