@@ -333,3 +333,27 @@ pub(super) fn time_pass(variant: Variant, batch: &Batch, reps: usize) -> f64 {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{Batch, Variant, outcomes};
+    use crate::report::Catalogue;
+
+    /// On every family of every kernel (6 cases each, so the last packet
+    /// is padded), x4 gives one outcome per case, with the reference's
+    /// bits, and so does every other variant's count.
+    #[test]
+    fn x4_matches_the_reference_case_for_case() {
+        let c = Catalogue::builtin().unwrap().quick(6);
+        for f in &c.families {
+            let batch = Batch::new(f.kernel, &f.cases);
+            assert_eq!(batch.len(), f.cases.len(), "{}", f.name);
+            let reference = outcomes(Variant::Reference, &batch);
+            let x4 = outcomes(Variant::X4, &batch);
+            assert_eq!(x4.len(), f.cases.len(), "{}", f.name);
+            for (i, (r, x)) in reference.iter().zip(&x4).enumerate() {
+                assert!(r.same_bits(x), "{} case {i}: {r:?} against {x:?}", f.name);
+            }
+        }
+    }
+}

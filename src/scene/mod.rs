@@ -336,6 +336,21 @@ mod tests {
         assert_eq!((e.line, e.column), (Some(1), Some(1)));
     }
 
+    /// The bounds are strict: a depth range of no width and a sphere of
+    /// radius 0 are refused, by field.
+    #[test]
+    fn the_bounds_are_strict() {
+        let cam = r#""camera": {"position": [0, 0, 0], "dir": [0, 0, -1], "up": [0, 1, 0], "angle": 1, "res": [4, 3]}"#;
+        let e =
+            Scene::parse(&format!(r#"{{{cam}, "depth": {{"near": 2, "far": 2}}}}"#)).unwrap_err();
+        assert_eq!(e.field, "depth.far", "{e}");
+        let e = Scene::parse(&format!(
+            r#"{{{cam}, "spheres": [{{"id": 1, "center": [0, 0, -3], "radius": 0}}]}}"#
+        ))
+        .unwrap_err();
+        assert_eq!(e.field, "spheres[0].radius", "{e}");
+    }
+
     /// An error serde_json could not place (line 0) has no line or column.
     #[test]
     fn an_unplaced_error_has_no_line_or_column() {
