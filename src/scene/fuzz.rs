@@ -12,6 +12,24 @@ fn fail(what: String) -> Result<(), Failure> {
 /// this size (`Scene::with_size`) so one input stays fast.
 pub const FUZZ_MAX_PIXELS: u32 = 24 * 16;
 
+/// A rejection must say what is wrong, and any line and column it gives
+/// must be inside `text` (lines from 1, columns from 1).
+fn well_placed(text: &str, e: &super::SceneError) -> Result<(), Failure> {
+    if e.message.is_empty() {
+        return fail(format!("an error without a message: {e:?}"));
+    }
+    if let (Some(line), Some(column)) = (e.line, e.column) {
+        let lines = text.split('\n').count().max(1);
+        if !(1..=lines).contains(&line) || column == 0 {
+            return fail(format!(
+                "line {line}, column {column} of {lines} lines: {e}"
+            ));
+        }
+    }
+    let _ = e.to_string();
+    Ok(())
+}
+
 /// Parses `data` as a scene. Loading must never panic; a rejected scene must
 /// have an error that names a place inside the text; an accepted one must
 /// compile and render to the same bits through the reference and x4 paths,
@@ -30,21 +48,7 @@ pub fn check(data: &[u8]) -> Result<(), Failure> {
     };
     let scene = match Scene::parse(text) {
         Ok(s) => s,
-        Err(e) => {
-            if e.message.is_empty() {
-                return fail(format!("an error without a message: {e:?}"));
-            }
-            if let (Some(line), Some(column)) = (e.line, e.column) {
-                let lines = text.split('\n').count().max(1);
-                if !(1..=lines).contains(&line) || column == 0 {
-                    return fail(format!(
-                        "line {line}, column {column} of {lines} lines: {e}"
-                    ));
-                }
-            }
-            let _ = e.to_string();
-            return Ok(());
-        }
+        Err(e) => return well_placed(text, &e),
     };
     let [w, h] = scene.camera.res;
     let scene = if w.saturating_mul(h) > FUZZ_MAX_PIXELS {
@@ -85,4 +89,30 @@ pub fn check(data: &[u8]) -> Result<(), Failure> {
         return fail("not every channel encoded".into());
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::SceneError;
+    use super::well_placed;
+
+    fn at(line: usize, column: usize, message: &str) -> SceneError {
+        SceneError {
+            line: Some(line),
+            column: Some(column),
+            ..SceneError::field("camera", message)
+        }
+    }
+
+    /// Each way a rejection can be badly placed fails the check, and a
+    /// well placed one passes, on a two-line text.
+    #[test]
+    fn a_rejection_must_be_placed_inside_the_text() {
+        let text = "{\n}";
+        assert!(well_placed(text, &at(2, 1, "no camera")).is_ok());
+        assert!(well_placed(text, &SceneError::field("camera", "no line")).is_ok());
+        for bad in [at(2, 1, ""), at(0, 1, "x"), at(3, 1, "x"), at(1, 0, "x")] {
+            assert!(well_placed(text, &bad).is_err(), "{bad:?}");
+        }
+    }
 }
