@@ -433,6 +433,7 @@ fn long_render(w: u32, h: u32) -> bool {
 }
 
 /// The report's progress steps: one per family per variant.
+#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn report_steps(catalogue: &rayoracle::report::Catalogue) -> u64 {
     (catalogue.families.len() * rayoracle::report::Variant::ALL.len()) as u64
 }
@@ -561,6 +562,7 @@ mod tests {
     }
 
     /// 27 stiff families, 5 variants each.
+    #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
     #[test]
     fn the_report_counts_a_step_per_family_and_variant() {
         let c = rayoracle::report::Catalogue::builtin().unwrap();
