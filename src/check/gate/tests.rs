@@ -335,13 +335,14 @@ fn answers_of_another_kind() {
     assert!(f.why.contains("wrong semantics"), "{}", f.why);
 }
 
-/// `a² (r² + r|f|) 2⁻⁴⁴` with `a = d·d = 4`, `r = 2`, `f = o − c = (3, 4, 0)`:
-/// `16 · (4 + 10) · 2⁻⁴⁴`.
+/// `a² (r² + r|f|) 2⁻⁴⁴` with `a = d·d = 4`, `r = 3`, `f = o − c = (3, 4, 0)`:
+/// `16 · (9 + 15) · 2⁻⁴⁴`. (With `r = 2`, `r·r` and `r + r` agree: the
+/// re-run of the fixes caught that.)
 #[test]
 fn sphere_band_term_by_term() {
     let ray = Ray::new(Vec3::new(4.0, 4.0, 0.0), Vec3::new(0.0, 0.0, 2.0));
-    let s = Sphere::new(Vec3::X, 2.0);
-    assert_eq!(sphere_band(&ray, &s), 224.0 * 2f64.powi(-44));
+    let s = Sphere::new(Vec3::X, 3.0);
+    assert_eq!(sphere_band(&ray, &s), 384.0 * 2f64.powi(-44));
 }
 
 /// `Σ |kᵢ dⱼ dₖ|` for `k = 1..6` and `d = (2, 3, 5)`:
