@@ -23,7 +23,7 @@
 //! [`encode_f32`] writes any float back as raw bits, which is how corpora are
 //! built from the fixtures ([`encode_case`]).
 
-use crate::camera::CameraParams;
+use crate::camera::{Camera, CameraParams};
 use crate::case::Case;
 use crate::check::{self, Violation};
 use crate::num::Lane;
@@ -215,6 +215,40 @@ fn interval4(i: (f32, f32)) -> (f32x4, f32x4) {
     (f32x4::splat(i.0), f32x4::splat(i.1))
 }
 
+/// The two implementations a target compares: the scalar one and the
+/// four-lane one. Each target is a one-line call of its `*_with` function
+/// with the shipped pair; the tests (`fuzz/wrong_kernels.rs`) pass in wrong
+/// ones, to show that every check a target makes fires on a wrong kernel.
+#[derive(Clone, Copy)]
+pub(crate) struct Kernels<R, X> {
+    /// The scalar kernel, judged against the exact oracle.
+    pub(crate) reference: R,
+    /// The four-lane kernel, compared bit for bit with `reference`.
+    pub(crate) x4: X,
+}
+
+/// The plane kernels a target can be given.
+#[cfg(feature = "plane")]
+pub(crate) type PlaneKernels = Kernels<
+    fn(&Ray, &Plane) -> plane::PlaneHit,
+    fn(&Ray4, &plane::x4::Plane4) -> plane::x4::PlaneHit4,
+>;
+/// The sphere kernels a target can be given.
+#[cfg(feature = "sphere")]
+pub(crate) type SphereKernels = Kernels<
+    fn(&Ray, &Sphere) -> sphere::SphereHit,
+    fn(&Ray4, &sphere::x4::Sphere4) -> sphere::x4::SphereHit4,
+>;
+/// The quadric kernels a target can be given.
+#[cfg(feature = "quadric")]
+pub(crate) type QuadricKernels = Kernels<
+    fn(&Ray, &Quadric) -> quadric::QuadricHit,
+    fn(&Ray4, &quadric::x4::Quadric4) -> quadric::x4::QuadricHit4,
+>;
+/// The camera kernels a target can be given: one pixel's ray, four pixels'.
+pub(crate) type CameraKernels =
+    Kernels<fn(&Camera, u32, u32) -> crate::Ray, fn(&Camera, [[u32; 2]; 4]) -> crate::ray4::Ray4>;
+
 /// The `plane` target.
 ///
 /// ```
@@ -225,12 +259,24 @@ fn interval4(i: (f32, f32)) -> (f32x4, f32x4) {
 /// ```
 #[cfg(feature = "plane")]
 pub fn plane(data: &[u8]) -> Result<(), Failure> {
+    plane_with(
+        data,
+        Kernels {
+            reference: plane::reference::intersect,
+            x4: plane::x4::intersect,
+        },
+    )
+}
+
+/// [`plane()`] with the kernels given.
+#[cfg(feature = "plane")]
+pub(crate) fn plane_with(data: &[u8], k: PlaneKernels) -> Result<(), Failure> {
     let Some((cases, interval)) = decode(data, |u| Ok((ray(u)?, Plane::new(vec3(u)?, vec3(u)?))))
     else {
         return Ok(());
     };
-    let reference = cases.map(|(r, p)| plane::reference::intersect(&r, &p));
-    let h4 = plane::x4::intersect(
+    let reference = cases.map(|(r, p)| (k.reference)(&r, &p));
+    let h4 = (k.x4)(
         &Ray4::from_rays(cases.map(|c| c.0)),
         &plane::x4::Plane4::from_planes(cases.map(|c| c.1)),
     );
@@ -253,12 +299,24 @@ pub fn plane(data: &[u8]) -> Result<(), Failure> {
 /// ```
 #[cfg(feature = "sphere")]
 pub fn sphere(data: &[u8]) -> Result<(), Failure> {
+    sphere_with(
+        data,
+        Kernels {
+            reference: sphere::reference::intersect,
+            x4: sphere::x4::intersect,
+        },
+    )
+}
+
+/// [`sphere()`] with the kernels given.
+#[cfg(feature = "sphere")]
+pub(crate) fn sphere_with(data: &[u8], k: SphereKernels) -> Result<(), Failure> {
     let Some((cases, interval)) = decode(data, |u| Ok((ray(u)?, Sphere::new(vec3(u)?, f(u)?))))
     else {
         return Ok(());
     };
-    let reference = cases.map(|(r, s)| sphere::reference::intersect(&r, &s));
-    let h4 = sphere::x4::intersect(
+    let reference = cases.map(|(r, s)| (k.reference)(&r, &s));
+    let h4 = (k.x4)(
         &Ray4::from_rays(cases.map(|c| c.0)),
         &sphere::x4::Sphere4::from_spheres(cases.map(|c| c.1)),
     );
@@ -280,6 +338,18 @@ pub fn sphere(data: &[u8]) -> Result<(), Failure> {
 /// ```
 #[cfg(feature = "quadric")]
 pub fn quadric(data: &[u8]) -> Result<(), Failure> {
+    quadric_with(
+        data,
+        Kernels {
+            reference: quadric::reference::intersect,
+            x4: quadric::x4::intersect,
+        },
+    )
+}
+
+/// [`quadric()`] with the kernels given.
+#[cfg(feature = "quadric")]
+pub(crate) fn quadric_with(data: &[u8], k: QuadricKernels) -> Result<(), Failure> {
     let one = |u: &mut Unstructured<'_>| -> arbitrary::Result<(Ray, Quadric)> {
         let r = ray(u)?;
         let mut k = [0.0; 10];
@@ -291,8 +361,8 @@ pub fn quadric(data: &[u8]) -> Result<(), Failure> {
     let Some((cases, interval)) = decode(data, one) else {
         return Ok(());
     };
-    let reference = cases.map(|(r, q)| quadric::reference::intersect(&r, &q));
-    let h4 = quadric::x4::intersect(
+    let reference = cases.map(|(r, q)| (k.reference)(&r, &q));
+    let h4 = (k.x4)(
         &Ray4::from_rays(cases.map(|c| c.0)),
         &quadric::x4::Quadric4::from_quadrics(cases.map(|c| c.1)),
     );
@@ -314,6 +384,17 @@ pub fn quadric(data: &[u8]) -> Result<(), Failure> {
 /// assert_eq!(rayoracle::fuzz::camera(&b), Ok(()));
 /// ```
 pub fn camera(data: &[u8]) -> Result<(), Failure> {
+    camera_with(
+        data,
+        Kernels {
+            reference: Camera::ray,
+            x4: Camera::ray4,
+        },
+    )
+}
+
+/// [`camera()`] with the kernels given.
+pub(crate) fn camera_with(data: &[u8], k: CameraKernels) -> Result<(), Failure> {
     let mut u = Unstructured::new(data);
     let decoded = (|| -> arbitrary::Result<_> {
         let (position, dir, up, angle) = (vec3(&mut u)?, vec3(&mut u)?, vec3(&mut u)?, f(&mut u)?);
@@ -334,9 +415,9 @@ pub fn camera(data: &[u8]) -> Result<(), Failure> {
     let built = p.build();
     let px = px.map(|[x, y]| [x % p.res[0].max(1), y % p.res[1].max(1)]);
     if let Ok(cam) = &built {
-        let got = cam.ray4(px).to_rays();
+        let got = (k.x4)(cam, px).to_rays();
         for i in 0..4 {
-            let want = cam.ray(px[i][0], px[i][1]);
+            let want = (k.reference)(cam, px[i][0], px[i][1]);
             let same = |a: f32, b: f32| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
             let all_same = (0..3).all(|c| {
                 same(got[i].origin[c], want.origin[c]) && same(got[i].dir[c], want.dir[c])
@@ -350,7 +431,7 @@ pub fn camera(data: &[u8]) -> Result<(), Failure> {
         }
     }
     for (i, pixel) in px.iter().enumerate() {
-        let got = built.map(|cam| cam.ray(pixel[0], pixel[1]));
+        let got = built.map(|cam| (k.reference)(&cam, pixel[0], pixel[1]));
         judged(i, &(p, pixel), check::check_camera(&p, *pixel, got))?;
     }
     Ok(())
@@ -365,9 +446,14 @@ pub fn camera(data: &[u8]) -> Result<(), Failure> {
 /// assert_eq!(rayoracle::fuzz::eval_line(b"\xff\xfe"), Ok(()));
 /// ```
 pub fn eval_line(data: &[u8]) -> Result<(), Failure> {
+    eval_line_with(data, crate::eval::eval_line)
+}
+
+/// [`eval_line()`] with the `eval` of one line given.
+pub(crate) fn eval_line_with(data: &[u8], eval: fn(usize, &str) -> String) -> Result<(), Failure> {
     let line = String::from_utf8_lossy(data);
     let line = line.lines().next().unwrap_or("");
-    let out = crate::eval::eval_line(7, line);
+    let out = eval(7, line);
     if line.trim().is_empty() {
         return if out.is_empty() {
             Ok(())
@@ -478,6 +564,9 @@ pub const TARGETS: &[(&str, Check)] = &[
     #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
     ("scene", crate::scene::fuzz::check),
 ];
+
+#[cfg(test)]
+mod wrong_kernels;
 
 #[cfg(test)]
 mod tests {
