@@ -739,7 +739,8 @@ pub struct KindTally {
 /// s.add(&evaluate(1, r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap());
 /// s.add(&evaluate(2, r#"{"kind":"sphere"}"#).unwrap());
 /// assert_eq!(s.kind("sphere").unwrap().cases, 1);
-/// assert_eq!(s.kind("sphere").unwrap().impls[0].zero_ulp, 2);
+/// let t = &s.kind("sphere").unwrap().impls[0];
+/// assert_eq!((t.compared, t.values, t.zero_ulp), (1, 2, 2));
 /// assert_eq!(s.malformed, 1);
 /// assert!(!s.all_ok());
 /// assert!(s.render().contains("sphere"));

@@ -299,12 +299,15 @@ fn render_command(
             }
         };
         let [w, h] = plan.size();
-        let bar = indicatif::ProgressBar::new(u64::from(h));
         // Only long renders get a bar (and indicatif draws nothing when
-        // stderr is not a terminal).
-        if !long_render(w, h) {
-            bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
-        }
+        // stderr is not a terminal, so tests see no bar either way: the
+        // choice is `long_render`, tested on its own).
+        let target = if long_render(w, h) {
+            indicatif::ProgressDrawTarget::stderr()
+        } else {
+            indicatif::ProgressDrawTarget::hidden()
+        };
+        let bar = indicatif::ProgressBar::with_draw_target(Some(u64::from(h)), target);
         bar.set_style(
             indicatif::ProgressStyle::with_template(
                 "{msg} [{bar:40}] {pos}/{len} rows, {eta} left",
