@@ -167,10 +167,18 @@ fn accuracy_against(
 /// resolution and the call overhead of the timer do not show.
 pub fn time_per_case(family: &Family, variant: Variant, passes: usize) -> f64 {
     let batch = Batch::new(family.kernel, &family.cases);
-    let once = variant::time_pass(variant, &batch, 1) * batch.len().max(1) as f64;
+    median_pass(passes, |reps| variant::time_pass(variant, &batch, reps))
+}
+
+/// The median nanoseconds per ray of `passes` calls of `pass(reps)`
+/// (at least one), `reps` chosen from one untimed call of `pass(1)` so that
+/// a pass lasts about 2·10⁵ ns (1 to 10,000 repetitions). `pass` is a
+/// parameter so that a test can give it a fake clock.
+fn median_pass(passes: usize, mut pass: impl FnMut(usize) -> variant::Timed) -> f64 {
+    let once = pass(1).nanos;
     let reps = ((2e5 / once.max(1.0)).ceil() as usize).clamp(1, 10_000);
     let mut t: Vec<f64> = (0..passes.max(1))
-        .map(|_| variant::time_pass(variant, &batch, reps))
+        .map(|_| pass(reps).ns_per_ray())
         .collect();
     t.sort_by(f64::total_cmp);
     t[t.len() / 2]
@@ -320,7 +328,43 @@ pub fn markdown(rows: &[Row], catalogue: &Catalogue) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{Catalogue, Kernel, Row, markdown, points};
+    use super::variant::Timed;
+    use super::{Catalogue, Kernel, Row, markdown, median_pass, points};
+
+    /// The calibration pass sets the repetitions (2·10⁵ ns over a pass of
+    /// 10³ ns: 200; capped at 10⁴ for a pass too fast to see, at least 1
+    /// for a slow one), and the median of four passes is the upper middle
+    /// one.
+    #[test]
+    fn the_time_is_the_median_of_calibrated_passes() {
+        let fake = |once: f64| {
+            let (mut calls, mut reps_seen) = (0, Vec::new());
+            let ns = median_pass(4, |reps| {
+                calls += 1;
+                reps_seen.push(reps);
+                let nanos = if calls == 1 {
+                    once
+                } else {
+                    [50.0, 10.0, 30.0, 70.0][calls - 2] * reps as f64
+                };
+                Timed {
+                    nanos,
+                    rays: reps as f64,
+                }
+            });
+            (ns, reps_seen)
+        };
+        assert_eq!(fake(1e3), (50.0, vec![1, 200, 200, 200, 200]));
+        assert_eq!(fake(0.0).1[1], 10_000);
+        assert_eq!(fake(1e9).1[1], 1);
+        assert_eq!(
+            median_pass(0, |r| Timed {
+                nanos: 6.0 * r as f64,
+                rays: 2.0 * r as f64
+            }),
+            3.0
+        );
+    }
 
     fn row(kernel: &str, variant: &str, family: &str, ns: f64, mismatches: usize) -> Row {
         Row {

@@ -238,14 +238,31 @@ fn built<C>(
         .collect()
 }
 
-/// Nanoseconds per ray of `reps` passes of `variant` over `batch`: one
-/// `black_box`ed call per case (per packet of four for x4), so the
-/// optimiser cannot vectorise the scalar variants across cases. Packing
-/// into packets and building cameras happen before the clock starts; a
-/// camera case is timed for its ray only (the construction is once per
-/// frame), except for the exact oracle, whose f64 basis is rebuilt per
-/// call.
-pub(super) fn time_pass(variant: Variant, batch: &Batch, reps: usize) -> f64 {
+/// What one timed pass measured: its wall time and the rays it computed
+/// in that time. The count is kept apart from the clock so that a test can
+/// check it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Timed {
+    /// Wall time of the whole pass.
+    pub(super) nanos: f64,
+    /// Rays computed.
+    pub(super) rays: f64,
+}
+
+impl Timed {
+    /// Nanoseconds per ray.
+    pub(super) fn ns_per_ray(self) -> f64 {
+        self.nanos / self.rays
+    }
+}
+
+/// `reps` passes of `variant` over `batch`, timed: one `black_box`ed call
+/// per case (per packet of four for x4), so the optimiser cannot vectorise
+/// the scalar variants across cases. Packing into packets and building
+/// cameras happen before the clock starts; a camera case is timed for its
+/// ray only (the construction is once per frame), except for the exact
+/// oracle, whose f64 basis is rebuilt per call.
+pub(super) fn time_pass(variant: Variant, batch: &Batch, reps: usize) -> Timed {
     let n = batch.len().max(1);
     macro_rules! timed {
         ($body:block) => {{
@@ -253,7 +270,10 @@ pub(super) fn time_pass(variant: Variant, batch: &Batch, reps: usize) -> f64 {
             for _ in 0..reps {
                 $body
             }
-            start.elapsed().as_nanos() as f64 / (reps * n) as f64
+            Timed {
+                nanos: start.elapsed().as_nanos() as f64,
+                rays: (reps * n) as f64,
+            }
         }};
     }
     match (variant, batch) {
@@ -270,15 +290,18 @@ pub(super) fn time_pass(variant: Variant, batch: &Batch, reps: usize) -> f64 {
             timed!({ scalar!(&v, |r, q| quadric::x4::intersect(&r, &q)) })
         }
         (Variant::X4, Batch::Camera(v)) => {
-            // Four pixels of a row per call: a quarter of a call per ray.
+            // Four pixels of a row per call: four rays per case.
             let v = built(v, |p| p.build().ok());
-            let per_case = timed!({
+            let t = timed!({
                 for (c, [x, y]) in &v {
                     let [w, _] = c.params.res;
                     black_box(black_box(c).ray4_row((*x).min(w.saturating_sub(4)), *y));
                 }
             });
-            per_case / 4.0
+            Timed {
+                rays: 4.0 * t.rays,
+                ..t
+            }
         }
         (Variant::Textbook, Batch::Plane(v)) => {
             timed!({ scalar!(v, |r, p| plane::textbook::intersect(&r, &p)) })
@@ -336,8 +359,39 @@ pub(super) fn time_pass(variant: Variant, batch: &Batch, reps: usize) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::{Batch, Variant, outcomes};
+    use super::{Batch, Timed, Variant, outcomes, time_pass};
     use crate::report::Catalogue;
+
+    /// A pass counts `reps` rays per case, four per case for the x4
+    /// camera (one `ray4_row` call makes four), and divides its time by
+    /// them.
+    #[test]
+    fn a_timed_pass_counts_its_rays() {
+        let c = Catalogue::builtin().unwrap().quick(3);
+        for f in &c.families {
+            let batch = Batch::new(f.kernel, &f.cases);
+            for v in Variant::ALL {
+                let t = time_pass(v, &batch, 5);
+                let per_case = if (v, f.kernel) == (Variant::X4, crate::report::Kernel::Camera) {
+                    4.0
+                } else {
+                    1.0
+                };
+                assert_eq!(
+                    t.rays,
+                    5.0 * f.cases.len() as f64 * per_case,
+                    "{} {v:?}",
+                    f.name
+                );
+                assert!(t.nanos >= 0.0);
+            }
+        }
+        let t = Timed {
+            nanos: 60.0,
+            rays: 4.0,
+        };
+        assert_eq!(t.ns_per_ray(), 15.0);
+    }
 
     /// On every family of every kernel (6 cases each, so the last packet
     /// is padded), x4 gives one outcome per case, with the reference's
