@@ -97,6 +97,7 @@ impl Batch {
         }
     }
 
+    #[cfg(test)]
     pub(super) fn len(&self) -> usize {
         match self {
             Batch::Plane(v) => v.len(),
@@ -263,96 +264,121 @@ impl Timed {
 /// ray only (the construction is once per frame), except for the exact
 /// oracle, whose f64 basis is rebuilt per call.
 pub(super) fn time_pass(variant: Variant, batch: &Batch, reps: usize) -> Timed {
-    let n = batch.len().max(1);
+    // `rays` is the rays one repetition computes: a case each, or four
+    // for the x4 camera, over the cases actually run (a camera that fails
+    // to build is left out of the pass, and so of the count).
     macro_rules! timed {
-        ($body:block) => {{
+        ($rays:expr, $body:block) => {{
+            let rays = $rays;
             let start = Instant::now();
             for _ in 0..reps {
                 $body
             }
             Timed {
                 nanos: start.elapsed().as_nanos() as f64,
-                rays: (reps * n) as f64,
+                rays: (reps * rays.max(1)) as f64,
             }
         }};
     }
     match (variant, batch) {
         (Variant::X4, Batch::Plane(v)) => {
-            let v = packed(v, Plane4::from_planes);
-            timed!({ scalar!(&v, |r, p| plane::x4::intersect(&r, &p)) })
+            let (n, v) = (v.len(), packed(v, Plane4::from_planes));
+            timed!(n, { scalar!(&v, |r, p| plane::x4::intersect(&r, &p)) })
         }
         (Variant::X4, Batch::Sphere(v)) => {
-            let v = packed(v, Sphere4::from_spheres);
-            timed!({ scalar!(&v, |r, s| sphere::x4::intersect(&r, &s)) })
+            let (n, v) = (v.len(), packed(v, Sphere4::from_spheres));
+            timed!(n, { scalar!(&v, |r, s| sphere::x4::intersect(&r, &s)) })
         }
         (Variant::X4, Batch::Quadric(v)) => {
-            let v = packed(v, Quadric4::from_quadrics);
-            timed!({ scalar!(&v, |r, q| quadric::x4::intersect(&r, &q)) })
+            let (n, v) = (v.len(), packed(v, Quadric4::from_quadrics));
+            timed!(n, { scalar!(&v, |r, q| quadric::x4::intersect(&r, &q)) })
         }
         (Variant::X4, Batch::Camera(v)) => {
             // Four pixels of a row per call: four rays per case.
             let v = built(v, |p| p.build().ok());
-            let t = timed!({
+            timed!(4 * v.len(), {
                 for (c, [x, y]) in &v {
                     let [w, _] = c.params.res;
                     black_box(black_box(c).ray4_row((*x).min(w.saturating_sub(4)), *y));
                 }
-            });
-            Timed {
-                rays: 4.0 * t.rays,
-                ..t
-            }
+            })
         }
         (Variant::Textbook, Batch::Plane(v)) => {
-            timed!({ scalar!(v, |r, p| plane::textbook::intersect(&r, &p)) })
+            timed!(v.len(), {
+                scalar!(v, |r, p| plane::textbook::intersect(&r, &p))
+            })
         }
         (Variant::Textbook, Batch::Sphere(v)) => {
-            timed!({ scalar!(v, |r, s| sphere::textbook::intersect(&r, &s)) })
+            timed!(v.len(), {
+                scalar!(v, |r, s| sphere::textbook::intersect(&r, &s))
+            })
         }
         (Variant::Textbook, Batch::Quadric(v)) => {
-            timed!({ scalar!(v, |r, q| quadric::textbook::intersect(&r, &q)) })
+            timed!(v.len(), {
+                scalar!(v, |r, q| quadric::textbook::intersect(&r, &q))
+            })
         }
         (Variant::Textbook, Batch::Camera(v)) => {
             let v = built(v, |p| camera::textbook::Camera::new(p).ok());
-            timed!({ scalar!(&v, |c, px| c.ray(px[0], px[1])) })
+            timed!(v.len(), { scalar!(&v, |c, px| c.ray(px[0], px[1])) })
         }
         (Variant::Reference, Batch::Plane(v)) => {
-            timed!({ scalar!(v, |r, p| plane::reference::intersect(&r, &p)) })
+            timed!(v.len(), {
+                scalar!(v, |r, p| plane::reference::intersect(&r, &p))
+            })
         }
         (Variant::Reference, Batch::Sphere(v)) => {
-            timed!({ scalar!(v, |r, s| sphere::reference::intersect(&r, &s)) })
+            timed!(v.len(), {
+                scalar!(v, |r, s| sphere::reference::intersect(&r, &s))
+            })
         }
         (Variant::Reference, Batch::Quadric(v)) => {
-            timed!({ scalar!(v, |r, q| quadric::reference::intersect(&r, &q)) })
+            timed!(v.len(), {
+                scalar!(v, |r, q| quadric::reference::intersect(&r, &q))
+            })
         }
         (Variant::Reference, Batch::Camera(v)) => {
             let v = built(v, |p| p.build().ok());
-            timed!({ scalar!(&v, |c, px| c.ray(px[0], px[1])) })
+            timed!(v.len(), { scalar!(&v, |c, px| c.ray(px[0], px[1])) })
         }
         (Variant::F64, Batch::Plane(v)) => {
-            timed!({ scalar!(v, |r, p| plane::double::intersect(&r, &p)) })
+            timed!(v.len(), {
+                scalar!(v, |r, p| plane::double::intersect(&r, &p))
+            })
         }
         (Variant::F64, Batch::Sphere(v)) => {
-            timed!({ scalar!(v, |r, s| sphere::double::intersect(&r, &s)) })
+            timed!(v.len(), {
+                scalar!(v, |r, s| sphere::double::intersect(&r, &s))
+            })
         }
         (Variant::F64, Batch::Quadric(v)) => {
-            timed!({ scalar!(v, |r, q| quadric::double::intersect(&r, &q)) })
+            timed!(v.len(), {
+                scalar!(v, |r, q| quadric::double::intersect(&r, &q))
+            })
         }
         (Variant::F64, Batch::Camera(v)) => {
             let v = built(v, |p| camera::double::Camera::new(p).ok());
-            timed!({ scalar!(&v, |c, px| c.ray(px[0], px[1])) })
+            timed!(v.len(), { scalar!(&v, |c, px| c.ray(px[0], px[1])) })
         }
         (Variant::Exact, Batch::Plane(v)) => {
-            timed!({ scalar!(v, |r, p| plane::exact::intersect(&r, &p).ok()) })
+            timed!(v.len(), {
+                scalar!(v, |r, p| plane::exact::intersect(&r, &p).ok())
+            })
         }
         (Variant::Exact, Batch::Sphere(v)) => {
-            timed!({ scalar!(v, |r, s| sphere::exact::intersect(&r, &s).ok()) })
+            timed!(v.len(), {
+                scalar!(v, |r, s| sphere::exact::intersect(&r, &s).ok())
+            })
         }
         (Variant::Exact, Batch::Quadric(v)) => {
-            timed!({ scalar!(v, |r, q| quadric::exact::intersect(&r, &q).ok()) })
+            timed!(v.len(), {
+                scalar!(v, |r, q| quadric::exact::intersect(&r, &q).ok())
+            })
         }
         (Variant::Exact, Batch::Camera(v)) => {
-            timed!({ scalar!(v, |p, px| camera::exact::ray(&p, px[0], px[1]).ok()) })
+            timed!(v.len(), {
+                scalar!(v, |p, px| camera::exact::ray(&p, px[0], px[1]).ok())
+            })
         }
     }
 }
@@ -363,26 +389,30 @@ mod tests {
     use crate::report::Catalogue;
 
     /// A pass counts `reps` rays per case, four per case for the x4
-    /// camera (one `ray4_row` call makes four), and divides its time by
-    /// them.
+    /// camera (one `ray4_row` call makes four), over the cases it ran: the
+    /// textbook and f64 cameras leave out a case whose camera they cannot
+    /// build, and nothing else is left out.
     #[test]
     fn a_timed_pass_counts_its_rays() {
+        use crate::report::Kernel;
         let c = Catalogue::builtin().unwrap().quick(3);
         for f in &c.families {
             let batch = Batch::new(f.kernel, &f.cases);
             for v in Variant::ALL {
                 let t = time_pass(v, &batch, 5);
-                let per_case = if (v, f.kernel) == (Variant::X4, crate::report::Kernel::Camera) {
+                let per_case = if (v, f.kernel) == (Variant::X4, Kernel::Camera) {
                     4.0
                 } else {
                     1.0
                 };
-                assert_eq!(
-                    t.rays,
-                    5.0 * f.cases.len() as f64 * per_case,
-                    "{} {v:?}",
-                    f.name
-                );
+                let all = 5.0 * f.cases.len() as f64 * per_case;
+                let may_drop =
+                    f.kernel == Kernel::Camera && matches!(v, Variant::Textbook | Variant::F64);
+                if may_drop {
+                    assert!((5.0..=all).contains(&t.rays), "{} {v:?}", f.name);
+                } else {
+                    assert_eq!(t.rays, all, "{} {v:?}", f.name);
+                }
                 assert!(t.nanos >= 0.0);
             }
         }
@@ -391,6 +421,32 @@ mod tests {
             rays: 4.0,
         };
         assert_eq!(t.ns_per_ray(), 15.0);
+    }
+
+    /// Five cases make two packets, the second padded with the last case;
+    /// `built` keeps the cases whose camera builds, with their pixels.
+    #[test]
+    fn packets_and_cameras_are_prepared_case_for_case() {
+        use super::{built, packed};
+        use crate::{Ray, camera::CameraParams};
+        use glam::Vec3;
+        let v: Vec<(Ray, u32)> = (0..5)
+            .map(|i| (Ray::new(Vec3::splat(i as f32), Vec3::X), i))
+            .collect();
+        let p = packed(&v, |k: [u32; 4]| k);
+        assert_eq!(p.len(), 2);
+        assert_eq!((p[0].1, p[1].1), ([0, 1, 2, 3], [4, 4, 4, 4]));
+        assert_eq!(p[1].0.origin[0].to_array(), [4.0; 4]);
+        let cams: Vec<(CameraParams, [u32; 2])> = [0.5, 2.0, 1.5]
+            .iter()
+            .enumerate()
+            .map(|(i, &a)| {
+                let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, a, [4, 3]);
+                (p, [i as u32, 0])
+            })
+            .collect();
+        let kept = built(&cams, |p| (p.angle > 1.0).then_some(p.angle));
+        assert_eq!(kept, vec![(2.0, [1, 0]), (1.5, [2, 0])]);
     }
 
     /// On every family of every kernel (6 cases each, so the last packet
