@@ -352,11 +352,11 @@ pub fn quadric(data: &[u8]) -> Result<(), Failure> {
 pub(crate) fn quadric_with(data: &[u8], k: QuadricKernels) -> Result<(), Failure> {
     let one = |u: &mut Unstructured<'_>| -> arbitrary::Result<(Ray, Quadric)> {
         let r = ray(u)?;
-        let mut k = [0.0; 10];
-        for c in &mut k {
+        let mut coeffs = [0.0; 10];
+        for c in &mut coeffs {
             *c = f(u)?;
         }
-        Ok((r, Quadric::new(k)))
+        Ok((r, Quadric::new(coeffs)))
     };
     let Some((cases, interval)) = decode(data, one) else {
         return Ok(());
