@@ -18,12 +18,11 @@
 //! must give the same bits.
 //!
 //! Candidates are reject-sampled: a case is kept only if the exact oracle
-//! gives the class the family wants, the case is inside its kernel's stated
-//! domain (`in_domain`, and for the quadric the root displacement rule of
-//! `check`), and, for a well-conditioned family, every root's condition
-//! number κ (as `rayoracle::check` evaluates it) is at most `2¹⁸` (plane,
-//! sphere) or `2¹⁶` (quadric), so that the documented root bound is at most
-//! 2 ulps. The rejections are counted per reason and printed.
+//! gives the class the family wants, a camera is inside its stated domain
+//! (`camera::in_domain`), and, for a well-conditioned family, every root's
+//! condition number κ (as `rayoracle::check` evaluates it) is at most `2¹⁸`
+//! (plane, sphere) or `2¹⁶` (quadric). The rejections are counted per
+//! reason and printed.
 
 use glam::Vec3;
 use rand::rngs::SmallRng;
@@ -314,7 +313,7 @@ const FAMILIES: &[Family] = &[
         seed: 0x5f1f_0001,
         cond: Cond::Well,
         make: sphere_far_tiny,
-        why: "R = 1 at 1e3 to 1e7, aimed to hit (80%) or to miss by at least 0.1 R: b² ≈ ac ≈ 1e14 while Δ ≈ 1, so the textbook f32 discriminant b² − ac is rounding noise and (−b − √Δ)/a loses every digit of the near root, although the roots are well-conditioned (κ < 5). From a distance of 4e5 to 1e6 on (depending on the aim) the exact margin is inside sphere::band, so there only the roots, not the class, are promised.",
+        why: "R = 1 at 1e3 to 1e7, aimed to hit (80%) or to miss by at least 0.1 R: b² ≈ ac ≈ 1e14 while Δ ≈ 1, so the textbook f32 discriminant b² − ac is rounding noise and (−b − √Δ)/a loses every digit of the near root, although the roots are well-conditioned (κ < 5). From a distance of 4e5 to 1e6 on (depending on the aim) even the f64 textbook discriminant can lose the class.",
     },
     Family {
         name: "sphere/huge-near",
@@ -342,7 +341,7 @@ const FAMILIES: &[Family] = &[
         seed: 0x5f1f_0005,
         cond: Cond::Ill,
         make: sphere_near_tangent,
-        why: "Exact integer tangents perturbed by a tilt of 1e-30 to 1e-3 (relative) in a zero component of d, or by 1 to 1024 ulps of R or of the origin: the exact discriminant is tiny against its terms (down to 1e-46 of the band), so the class is ill-conditioned and the two roots nearly coincide (κ → ∞). A naive kernel flips hit and miss at random.",
+        why: "Exact integer tangents perturbed by a tilt of 1e-30 to 1e-3 (relative) in a zero component of d, or by 1 to 1024 ulps of R or of the origin: the exact discriminant is tiny against its terms (down to 1e-46 of its terms), so the class is ill-conditioned and the two roots nearly coincide (κ → ∞). A naive kernel flips hit and miss at random.",
     },
     Family {
         name: "sphere/exact-tangent",
@@ -378,7 +377,7 @@ const FAMILIES: &[Family] = &[
         seed: 0x91a0_0001,
         cond: Cond::Ill,
         make: plane_near_parallel,
-        why: "d = n × e_i with its zero component set to ε, so d·n = ε·n_i exactly and |d·n| / Σ|dᵢnᵢ| runs from 1e-30 to 1e-3 (roots up to 1e34): κ ≈ 1/ε, judged by the κ-aware bound and the parallel band. In a naive f32 dot product the ε term is absorbed before the other two cancel, so it returns 0 (parallel) or a residue of the wrong size.",
+        why: "d = n × e_i with its zero component set to ε, so d·n = ε·n_i exactly and |d·n| / Σ|dᵢnᵢ| runs from 1e-30 to 1e-3 (roots up to 1e34): κ ≈ 1/ε, for the class and the root alike. In a naive f32 dot product the ε term is absorbed before the other two cancel, so it returns 0 (parallel) or a residue of the wrong size.",
     },
     Family {
         name: "plane/in-plane",
@@ -449,7 +448,7 @@ const FAMILIES: &[Family] = &[
         seed: 0x9ad0_0007,
         cond: Cond::Ill,
         make: quadric_cone_apex,
-        why: "Rays exactly through the apex of elliptic cones (integer axes and apex, dyadic t₀): p(t) = (t − t₀)²·dᵀMd, a double root at the apex, class one with t₀ known exactly. A double root is infinitely ill-conditioned, so the judge only asks for the class outside the band; a naive kernel reports two roots or none.",
+        why: "Rays exactly through the apex of elliptic cones (integer axes and apex, dyadic t₀): p(t) = (t − t₀)²·dᵀMd, a double root at the apex, class one with t₀ known exactly. A double root is infinitely ill-conditioned: only exact arithmetic finds it, and a naive kernel reports two roots or none.",
     },
     Family {
         name: "quadric/line-on-surface",
@@ -470,7 +469,7 @@ const FAMILIES: &[Family] = &[
         seed: 0x9ad0_000a,
         cond: Cond::Ill,
         make: quadric_double_plane,
-        why: "(n·p − e)² = 0 with integer n, e (x² = 0 and its rotations), random rays: β² − 4αγ = 0 exactly, a double root where the ray crosses the plane, class one. Infinitely ill-conditioned, so only the band applies; the scalar reference itself answers two or none on most of these (inside the band), as any f32 kernel must for inexact t.",
+        why: "(n·p − e)² = 0 with integer n, e (x² = 0 and its rotations), random rays: β² − 4αγ = 0 exactly, a double root where the ray crosses the plane, class one. Infinitely ill-conditioned: plain floating point answers two or none on most of these, as it must for inexact t.",
     },
     // ----------------------------------------------------------------- camera
     Family {
@@ -1521,8 +1520,6 @@ struct Kept {
     class: &'static str,
     /// The largest root κ (infinite at a double root; 0 with no roots).
     kappa: f64,
-    /// `|margin| / band` (NaN where there is none).
-    margin_over_band: f64,
     /// The scalar reference against the exact oracle.
     reference: Result<CaseReport, String>,
     tilt: Option<f64>,
@@ -1531,7 +1528,7 @@ struct Kept {
 }
 
 /// The exact oracle's own answer, judged by `check` (which computes the
-/// domain, the margin, the band and each root's κ).
+/// margin and each root's κ).
 fn self_report(case: &Case) -> CaseReport {
     let r = match case {
         Case::Sphere(ray, s) => {
@@ -1589,7 +1586,6 @@ fn judge(fam: &Family, cand: &Cand) -> Result<Kept, Reject> {
         line: line(fam.name, case, cand.expect.as_ref()),
         class,
         kappa,
-        margin_over_band: report.margin.abs() / report.band,
         reference: check::reference_case(case).map_err(|v| v.to_string()),
         tilt: cand.tilt,
         kappa_f64: match case {
@@ -1730,10 +1726,7 @@ struct Stats {
     rejected: BTreeMap<Reject, usize>,
     classes: BTreeMap<&'static str, usize>,
     kappa_max: f64,
-    in_band: usize,
-    margin_min: f64,
     ref_worst_ulps: u64,
-    ref_in_band: usize,
     ref_violations: Vec<String>,
     by_tilt: BTreeMap<usize, TiltRow>,
 }
@@ -1765,10 +1758,7 @@ fn generate(fam: &Family, n: usize) -> (Vec<String>, Stats) {
         rejected: REJECTS.iter().map(|r| (*r, 0)).collect(),
         classes: BTreeMap::new(),
         kappa_max: 0.0,
-        in_band: 0,
-        margin_min: f64::INFINITY,
         ref_worst_ulps: 0,
-        ref_in_band: 0,
         ref_violations: Vec::new(),
         by_tilt: BTreeMap::new(),
     };
@@ -1786,12 +1776,6 @@ fn generate(fam: &Family, n: usize) -> (Vec<String>, Stats) {
         };
         *st.classes.entry(k.class).or_default() += 1;
         st.kappa_max = st.kappa_max.max(k.kappa);
-        if k.margin_over_band <= 1.0 {
-            st.in_band += 1;
-        }
-        if !k.margin_over_band.is_nan() {
-            st.margin_min = st.margin_min.min(k.margin_over_band);
-        }
         let ref_ulps = k
             .reference
             .as_ref()
@@ -1804,12 +1788,7 @@ fn generate(fam: &Family, n: usize) -> (Vec<String>, Stats) {
             row.ref_ulps = row.ref_ulps.max(ref_ulps);
         }
         match &k.reference {
-            Ok(r) => {
-                st.ref_worst_ulps = st.ref_worst_ulps.max(ref_ulps);
-                if r.status == Status::ClassInBand {
-                    st.ref_in_band += 1;
-                }
-            }
+            Ok(_) => st.ref_worst_ulps = st.ref_worst_ulps.max(ref_ulps),
             Err(v) => st.ref_violations.push(format!("{}: {v}", k.line)),
         }
         lines.push(k.line);
@@ -1887,22 +1866,18 @@ Candidates are reject-sampled: a case is kept only if
 * the exact oracle gives the class the family wants (and, where it says so,
   a geometric condition holds: a miss by at least 0.1 R, the origin on the
   intended side of the surface, the tilt surviving rounding);
-* it is inside its kernel's stated domain (`plane::in_domain`,
-  `sphere::in_domain`, `quadric::in_domain` and the quadric's root
-  displacement rule in `check`, `camera::in_domain`; cameras must also
-  build);
+* a camera is inside its stated domain (`camera::in_domain`) and builds;
 * for a **well**-conditioned family, every root's condition number κ, as
   `rayoracle::check` evaluates it at the exact roots, is at most 2¹⁸
-  (plane, sphere) or 2¹⁶ (quadric), so that the documented bound
-  `ROOT_ULPS(κ)` is **at most 2 ulps**; or the case is an exact
-  construction with an `expect`, which the kernel documents it reproduces
-  exactly (an exact tangent is a double root, with κ = ∞).
+  (plane, sphere) or 2¹⁶ (quadric); or the case is an exact construction
+  with an `expect` (an exact tangent is a double root, with κ = ∞).
 
-**ill** families are judged with the κ-aware root bound and the class band
-of `rayoracle::check`: their roots, their class or (camera) their basis move
-a lot when an input moves by one ulp. The camera has no κ: every camera
-case is judged by the 4-ulp component bound, and *ill* says that the
-inputs, not the bound, are sensitive.
+The plane, sphere and quadric kernels are correctly rounded, so every case
+of every family, well or **ill**, is judged the same way: the exact class
+and the oracle's bits. *ill* says that the roots, the class or (camera) the
+basis move a lot when an input moves by one ulp: a kernel in plain
+floating point gets these wrong. The camera has no κ: every camera case is
+judged by the 4-ulp component bound.
 
 ## What the data showed
 
@@ -1910,9 +1885,8 @@ inputs, not the bound, are sensitive.
   centre moves the surface by R·2⁻²⁴, far more than the origin's height h,
   so the near root has κ ≈ R/h, up to 1.2e10 here. Its far root is fine.
 * `sphere/far-tiny`: the roots have κ < 5, but from a distance of 4e5 to
-  1e6 on (depending on the aim) the exact margin `aΔ` is inside
-  `sphere::band` (the band scales with |f|², not R²), so `check` tolerates
-  a class mismatch on about a third of the family.
+  1e6 on the textbook discriminant `b² − ac` loses the margin `aΔ` to
+  cancellation (its rounding error scales with |f|², not R²).
 * `sphere/near-surface-*`: the near root's κ is at least 1/δ (δ the
   relative height), whatever the kernel does, so δ starts at 2⁻¹⁶ for the
   family to stay within 2 ulps.
@@ -1923,11 +1897,8 @@ inputs, not the bound, are sensitive.
   rotated paraboloid, β's terms `2·M o·d` cancel exactly (M d = 0), and the
   term-wise κ that `check` uses counts them.
 * The scalar reference reproduces every exact tangent, every cone apex
-  (class one, exact root), every in-plane ray and every line on a surface;
-  on `quadric/double-plane` (random rays, inexact t) it answers two or none
-  on about three quarters, inside the band.
-* No candidate of any family was outside its kernel's domain, the
-  subnormal normals included.
+  (class one, exact root), every in-plane ray and every line on a surface,
+  and every root of `quadric/double-plane` (random rays, inexact t).
 ";
 
 const README_ALPHA: &str = "
@@ -1939,8 +1910,7 @@ does not depend on the tilt θ: α ≈ θ² has no cancelling terms, and what κ
 there is comes from the off-centre γ terms. For the cylinder off the
 coordinate axes α is a difference of O(1) terms, and κ grows roughly like
 1/θ²; below θ ≈ 1e-6, `quadric::condition`'s own f64 α has lost digits and
-it overstates κ. The reference's error grows with κ but stays inside
-`ROOT_ULPS(κ)`.
+it overstates κ. The reference is correctly rounded whatever κ is.
 
 ";
 
@@ -1967,22 +1937,14 @@ fn readme(stats: &[(&Family, Stats)]) -> String {
          failed), outside the kernel's domain, a root κ above the limit of a \
          well-conditioned family, not representable. *κ max* is the largest \
          root condition number as `rayoracle::check` evaluates it (∞ at a \
-         double root). *In band* counts the cases whose exact \
-         classification margin is within the kernel's band, where `check` \
-         tolerates a class mismatch; *min margin/band* is the smallest \
-         ratio (0 for an exact zero: tangent, in-plane, all).\n\n",
+         double root).\n\n",
     );
     s.push_str(
-        "| family | cases | exact classes | rejected: class / domain / κ / range | κ max | in band | min margin/band |\n|---|---|---|---|---|---|---|\n",
+        "| family | cases | exact classes | rejected: class / domain / κ / range | κ max |\n|---|---|---|---|---|\n",
     );
     for (f, st) in stats {
         let classes: Vec<String> = st.classes.iter().map(|(c, n)| format!("{c} {n}")).collect();
         let rej: Vec<String> = REJECTS.iter().map(|r| st.rejected[r].to_string()).collect();
-        let (band, margin) = if f.kernel() == "camera" {
-            ("–".to_string(), "–".to_string())
-        } else {
-            (st.in_band.to_string(), sci(st.margin_min))
-        };
         let kappa = if f.kernel() == "camera" {
             "–".to_string()
         } else {
@@ -1990,14 +1952,12 @@ fn readme(stats: &[(&Family, Stats)]) -> String {
         };
         writeln!(
             s,
-            "| `{}` | {} | {} | {} | {} | {} | {} |",
+            "| `{}` | {} | {} | {} | {} |",
             f.name,
             st.classes.values().sum::<usize>(),
             classes.join(", "),
             rej.join(" / "),
-            kappa,
-            band,
-            margin
+            kappa
         )
         .unwrap();
     }
@@ -2030,8 +1990,8 @@ fn main() {
     let mut files: BTreeMap<&str, String> = BTreeMap::new();
     let mut stats = Vec::new();
     println!(
-        "{:<38} {:>5} {:>22} {:>9} {:>7} {:>9} {:>8}",
-        "family", "cases", "rejected c/d/k/r", "kappa max", "in band", "ref ulps", "ref band"
+        "{:<38} {:>5} {:>22} {:>9} {:>9}",
+        "family", "cases", "rejected c/d/k/r", "kappa max", "ref ulps"
     );
     for f in FAMILIES {
         let (lines, st) = generate(f, N);
@@ -2042,14 +2002,12 @@ fn main() {
         }
         let rej: Vec<String> = REJECTS.iter().map(|r| st.rejected[r].to_string()).collect();
         println!(
-            "{:<38} {:>5} {:>22} {:>9} {:>7} {:>9} {:>8}",
+            "{:<38} {:>5} {:>22} {:>9} {:>9}",
             f.name,
             lines.len(),
             rej.join("/"),
             sci(st.kappa_max),
-            st.in_band,
-            st.ref_worst_ulps,
-            st.ref_in_band
+            st.ref_worst_ulps
         );
         for v in &st.ref_violations {
             println!("  reference violation: {v}");

@@ -994,17 +994,39 @@ mod tests {
         assert!(t.ends_with(", 1 invalid, 2 internal errors\n"), "{t}");
     }
 
-    /// A class mismatch is tallied as compared and mismatched, twice over
-    /// two lines: the exact tangent of `sphere/tangent-exact-large`, which
-    /// lies inside the band, where both implementations say two roots.
+    /// A class mismatch is tallied as compared and mismatched, for each
+    /// implementation, twice over two lines: an exact tangent answered with
+    /// two roots by both columns.
     #[cfg(feature = "sphere")]
     #[test]
     fn summary_tallies_class_mismatches() {
-        let line = r#"{"kind":"sphere","origin":[-9,-8,-72],"dir":[312,-387,4],"center":[0,0,0],"radius":73}"#;
+        let column = |implementation| Column {
+            implementation,
+            outcome: Outcome::Hit {
+                class: "two",
+                roots: Roots::two(4.0, 6.0),
+            },
+            comparison: Comparison::ClassMismatch,
+        };
+        let r = LineReport::Evaluated(Evaluation {
+            line: 1,
+            kind: "sphere",
+            family: None,
+            exact: Outcome::Hit {
+                class: "tangent",
+                roots: Roots::one(5.0),
+            },
+            columns: vec![
+                column(Implementation::Reference),
+                column(Implementation::X4),
+            ],
+        });
         let mut s = Summary::default();
-        s.add(&evaluate(1, line).unwrap());
-        s.add(&evaluate(2, line).unwrap());
-        for t in &s.kind("sphere").unwrap().impls {
+        s.add(&r);
+        s.add(&r);
+        let impls = &s.kind("sphere").unwrap().impls;
+        assert_eq!(impls.len(), 2);
+        for t in impls {
             assert_eq!((t.compared, t.class_mismatches, t.values), (2, 2, 0));
         }
     }

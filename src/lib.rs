@@ -22,6 +22,7 @@ pub mod report;
 pub mod scene;
 #[cfg(feature = "sphere")]
 pub mod sphere;
+pub mod stage;
 pub mod ulp;
 pub mod x4_column;
 

@@ -158,9 +158,9 @@ fn digest_quadrics(d: &mut Digest, rays: &[Ray; 4], quadrics: [quadric::Quadric;
 fn outputs_are_the_same_bits_on_every_build() {
     let got = digest_all();
     let pinned: [u64; 4] = [
-        15653110373939544661,
-        845456662206226893,
-        12071707664359204229,
+        10553959330667295637,
+        13667940467011394293,
+        2537997569441458989,
         1486946723411266596,
     ];
     // A kind that is compiled out digests nothing.

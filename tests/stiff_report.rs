@@ -1,12 +1,12 @@
 //! The stiff catalogue (`fixtures/stiff/`) as a correctness gate:
 //!
 //! * every case of every family, through the reference and through x4, is
-//!   judged by `rayoracle::check` against the exact oracle: the class must
-//!   match outside the documented band, and each root must be within its
-//!   condition-aware bound `ROOT_ULPS(κ)` (camera: `COMPONENT_ULPS` of the
-//!   component scale). This is how the ill-conditioned families are judged;
-//! * every well-conditioned family meets the targets for reference
-//!   and x4: mean ≤ 1 bit, max ≤ 2 bits, no class mismatch;
+//!   judged by `rayoracle::check` against the exact oracle: the exact class
+//!   and every root correctly rounded, bit for bit, however ill-conditioned
+//!   (camera: `COMPONENT_ULPS` of the component scale);
+//! * so every plane, sphere and quadric family shows 0 bits of error and no
+//!   class mismatch for reference and x4, and every well-conditioned
+//!   camera family at most 1 bit on average and 2 at worst;
 //! * the catalogue bites: the textbook variant fails the far-tiny-sphere and
 //!   the α ≈ 0 quadric families by a wide margin.
 #![cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
@@ -69,8 +69,12 @@ fn every_case_of_every_family_is_within_its_documented_bound_on_both_paths() {
                 ("x4", x4_status(case)),
             ] {
                 match status {
-                    Ok(Status::Checked | Status::ClassInBand) => checked += 1,
-                    Ok(Status::OutOfDomain) if !family.well_conditioned => checked += 1,
+                    Ok(Status::Checked) => checked += 1,
+                    Ok(Status::OutOfDomain)
+                        if !family.well_conditioned && matches!(case, Case::Camera(..)) =>
+                    {
+                        checked += 1
+                    }
                     Ok(other) => failures.push(format!("{} #{i} {path}: {other:?}", family.name)),
                     Err(v) => failures.push(format!("{} #{i} {path}: {v}", family.name)),
                 }
@@ -87,13 +91,18 @@ fn every_case_of_every_family_is_within_its_documented_bound_on_both_paths() {
 }
 
 #[test]
-fn well_conditioned_families_meet_the_targets_for_reference_and_x4() {
+fn every_family_meets_the_targets_for_reference_and_x4() {
     let c = catalogue();
     let mut misses = Vec::new();
-    for family in c.families.iter().filter(|f| f.well_conditioned) {
+    for family in &c.families {
+        let camera = family.name.starts_with("camera/");
+        if camera && !family.well_conditioned {
+            continue;
+        }
+        let (mean, max) = if camera { (1.0, 2.0) } else { (0.0, 0.0) };
         for variant in [Variant::Reference, Variant::X4] {
             let r = accuracy(family, variant);
-            if r.mean_bits > 1.0 || r.max_bits > 2.0 || r.class_mismatches > 0 {
+            if r.mean_bits > mean || r.max_bits > max || r.class_mismatches > 0 {
                 misses.push(format!(
                     "{} {}: mean {:.3}, max {:.2} bits, {} class mismatches",
                     r.family, r.variant, r.mean_bits, r.max_bits, r.class_mismatches

@@ -24,3 +24,5 @@ pub mod scale;
 
 pub use ff::Ff;
 pub use lane::Lane;
+pub mod certify;
+pub mod real;

@@ -1,50 +1,81 @@
-//! The plane's arithmetic, written once over [`Lane`] and instantiated at
-//! `f32` by [`super::reference`](mod@super::reference) and at `f32x4` by [`super::x4`] (see
-//! [`crate::sphere::kernel`] for why).
+//! The filter: the plane's first stage, written once over [`Real`] and run
+//! at `f64` by [`super::reference`](mod@super::reference) and at
+//! [`F64x4`](crate::num::real::F64x4) by [`super::x4`].
+//!
+//! # The bound
+//!
+//! In the notation of [`crate::sphere::kernel`] (`u = 2⁻⁵³`, `γₙ`, hats for
+//! computed values, `E` for error bounds), with f32 inputs exact in f64:
+//!
+//! * `ŵᵢ = fl(aᵢ − oᵢ)`, one rounding; `num = Σ ŵᵢnᵢ`: a rounded product
+//!   and two additions, `E_num = γ₄ m_num` with `m_num = Σ|ŵᵢnᵢ|`;
+//! * `den = Σ dᵢnᵢ`: products of f32 values are exact, two additions:
+//!   `E_den = γ₂ m_den`, `m_den = Σ|dᵢnᵢ|`;
+//! * `t = num/den`: `|n̂/d̂ − n/d| ≤ (|n̂| E_den + |d̂| E_num) / (|d̂|(|d̂| −
+//!   E_den))`, plus the quotient's own rounding `2u|t̂|`.
+//!
+//! The filter uses `E_num = 8u m_num` and `E_den = 4u m_den`, twice the
+//! proof's constants. `|d̂en| > E_den` certifies a hit. A magnitude sum of
+//! exactly 0 means every term is 0 (a nonzero product of f32 values, or of
+//! `ŵᵢ` and `nᵢ`, is at least `2⁻²⁹⁸`), so the sum is exactly 0: `m_den = 0`
+//! with `|n̂um| > E_num` certifies a parallel line, and `m_den = m_num = 0` a
+//! line in the plane. A root exactly 0 (`m_num = 0`) is `+0`, as the oracle
+//! rounds it. The rest, such as a line parallel in exact arithmetic but not
+//! term by term, goes to the next stage.
 
-use crate::num::ff::{dot3, dot3_ff};
-use crate::num::scale::{Scale, normalized3};
-use crate::num::{Ff, Lane};
+use crate::num::certify::U;
+use crate::num::real::Real;
 
-/// What the classification needs: the leading parts of `d·n` and
-/// `(a − o)·n` (only their zero-ness is used) and the root.
+/// The filter's result: the certified classes and the root with its bound.
 #[derive(Clone, Copy, Debug)]
-pub struct Parts<L> {
-    /// `d·n`, prescaled.
-    pub den: L,
-    /// `(a − o)·n`, prescaled.
-    pub num: L,
-    /// `t = ((a − o)·n)/(d·n)` in the caller's units.
+pub struct Filtered<L: Real> {
+    /// Certified: one hit (`d·n ≠ 0`); `t` still needs
+    /// [`certify`](crate::num::certify::certify).
+    pub hit: L::Mask,
+    /// Certified: parallel and off the plane.
+    pub parallel: L::Mask,
+    /// Certified: the line lies in the plane.
+    pub in_plane: L::Mask,
+    /// `num/den`.
     pub t: L,
+    /// A bound on `t`'s error.
+    pub e: L,
 }
 
-/// Computes [`Parts`] for a line `o + t d` and the plane through `a` with
-/// normal `n`.
+/// Runs the filter on a line `o + t d` and the plane through `a` with
+/// normal `n`, every bound multiplied by `shrink` (1 in the kernels).
 ///
 /// ```
-/// use rayoracle::plane::kernel::solve;
-/// let p = solve([0.0f32, 2.0, 0.0], [1.0, -4.0, 0.0], [0.0; 3], [0.0, 1.0, 0.0]);
-/// assert_eq!(p.t, 0.5);
+/// use rayoracle::plane::kernel::filter;
+/// let f = filter::<f64>([0.0; 3], [0.0, 0.0, 2.0], [0.0, 0.0, 3.0], [0.0, 0.0, 1.0], 1.0);
+/// assert!(f.hit && f.t == 1.5);
+/// let f = filter::<f64>([0.0; 3], [1.0, 0.0, 0.0], [0.0, 0.0, 3.0], [0.0, 0.0, 1.0], 1.0);
+/// assert!(f.parallel && !f.hit && !f.in_plane);
 /// ```
 #[inline(always)]
-pub fn solve<L: Lane>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Parts<L> {
-    // Exact prescaling: t does not depend on |n|; t ∝ 1/|d|; t ∝ |a − o|.
-    let (n, _) = normalized3(n);
-    let (d, sd) = normalized3(d);
-    let sa = Scale::of_max(&[a[0], a[1], a[2], o[0], o[1], o[2]]);
-    let (a, o) = (sa.apply3(a), sa.apply3(o));
-
-    // a − o exactly, then (a − o)·n and d·n in double-word arithmetic.
-    let w = [
-        Ff::sum(a[0], -o[0]),
-        Ff::sum(a[1], -o[1]),
-        Ff::sum(a[2], -o[2]),
-    ];
-    let num = dot3_ff(w, n);
-    let den = dot3(d, n);
-    Parts {
-        den: den.hi,
-        num: num.hi,
-        t: (num / den).round().ldexp(sa.k - sd.k),
+pub fn filter<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) -> Filtered<L> {
+    let k = |x: f64| L::splat(x * U * shrink);
+    let zero = L::splat(0.0);
+    let w = [a[0] - o[0], a[1] - o[1], a[2] - o[2]];
+    let wn = [w[0] * n[0], w[1] * n[1], w[2] * n[2]];
+    let dn = [d[0] * n[0], d[1] * n[1], d[2] * n[2]];
+    let num = wn[0] + wn[1] + wn[2];
+    let den = dn[0] + dn[1] + dn[2];
+    let m_num = wn[0].abs() + wn[1].abs() + wn[2].abs();
+    let m_den = dn[0].abs() + dn[1].abs() + dn[2].abs();
+    let (e_num, e_den) = (k(8.0) * m_num, k(4.0) * m_den);
+    let den_zero = m_den.eq(zero);
+    let parallel = den_zero & num.abs().gt(e_num);
+    let in_plane = den_zero & m_num.eq(zero);
+    let da = den.abs();
+    // + 0 makes an exactly zero root +0 whatever the sign of den.
+    let t = num / den + zero;
+    let e = (num.abs() * e_den + da * e_num) / (da * (da - e_den)) + k(2.0) * t.abs();
+    Filtered {
+        hit: da.gt(e_den),
+        parallel,
+        in_plane,
+        t,
+        e,
     }
 }

@@ -1,33 +1,71 @@
-//! The scalar reference: [`super::kernel::solve`] at `f32` — the seed's
-//! `t = ((a − o)·n)/(d·n)` with exact differences, double-word dot products
-//! and one final rounding — classified with plain branches.
+//! The scalar reference: the [filter](super::kernel) at `f64`, then the
+//! exact oracle for whatever it leaves undecided.
 
-use super::{Plane, PlaneHit, kernel};
+use super::{Plane, PlaneHit, exact, kernel};
 use crate::Ray;
+use crate::num::certify::certify;
+use crate::stage::Stage;
 
-/// Intersects a ray (as a whole line) with a plane.
+/// Intersects a line with a plane: the exact class over `t ∈ ℝ`, and the
+/// root correctly rounded to `f32`. A NaN or infinite input gives
+/// [`PlaneHit::Parallel`], no point.
 ///
 /// ```
 /// use rayoracle::{Ray, plane::{Plane, PlaneHit, reference::intersect}};
 /// use glam::Vec3;
-/// let ground = Plane::new(Vec3::ZERO, Vec3::Y);
-/// let ray = Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::new(1.0, -4.0, 0.0));
-/// assert_eq!(intersect(&ray, &ground), PlaneHit::Hit(0.5));
-/// let flat = Ray::new(Vec3::Y, Vec3::X);
-/// assert_eq!(intersect(&flat, &ground), PlaneHit::Parallel);
+/// let p = Plane::new(Vec3::new(0.0, 0.0, 3.0), Vec3::Z);
+/// assert_eq!(intersect(&Ray::new(Vec3::ZERO, Vec3::Z), &p), PlaneHit::Hit(3.0));
+/// assert_eq!(intersect(&Ray::new(Vec3::ZERO, Vec3::X), &p), PlaneHit::Parallel);
+/// assert_eq!(intersect(&Ray::new(Vec3::new(0.0, 0.0, 3.0), Vec3::X), &p), PlaneHit::InPlane);
+/// // Parallel in exact arithmetic only: d·n = 1 − 1 + 0.
+/// let tilted = Plane::new(Vec3::ZERO, Vec3::new(1.0, -1.0, 0.0));
+/// assert_eq!(intersect(&Ray::new(Vec3::Z, Vec3::new(1.0, 1.0, 0.0)), &tilted), PlaneHit::InPlane);
 /// ```
+#[inline]
 pub fn intersect(ray: &Ray, plane: &Plane) -> PlaneHit {
-    let p = kernel::solve(
-        ray.origin.to_array(),
-        ray.dir.to_array(),
-        plane.point.to_array(),
-        plane.normal.to_array(),
+    intersect_staged(ray, plane).0
+}
+
+/// [`intersect`], and the [`Stage`] that decided it.
+///
+/// ```
+/// use rayoracle::{Ray, stage::Stage, plane::{Plane, PlaneHit, reference::intersect_staged}};
+/// use glam::Vec3;
+/// let p = Plane::new(Vec3::new(0.0, 0.0, 3.0), Vec3::Z);
+/// assert_eq!(intersect_staged(&Ray::new(Vec3::ZERO, Vec3::Z), &p), (PlaneHit::Hit(3.0), Stage::Filter));
+/// ```
+#[inline]
+pub fn intersect_staged(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
+    intersect_shrunk(ray, plane, 1.0)
+}
+
+/// [`intersect_staged`] with the filter's bounds multiplied by `shrink`:
+/// for the tests that show a bound too small gives wrong answers.
+#[doc(hidden)]
+#[inline(always)]
+pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
+    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    let f = kernel::filter(
+        w(ray.origin),
+        w(ray.dir),
+        w(plane.point),
+        w(plane.normal),
+        shrink,
     );
-    if p.den != 0.0 {
-        PlaneHit::Hit(p.t)
-    } else if p.num == 0.0 {
-        PlaneHit::InPlane
+    if f.hit && certify(f.t, f.e) {
+        (PlaneHit::Hit(f.t as f32), Stage::Filter)
+    } else if f.parallel {
+        (PlaneHit::Parallel, Stage::Filter)
+    } else if f.in_plane {
+        (PlaneHit::InPlane, Stage::Filter)
     } else {
-        PlaneHit::Parallel
+        (escalate(ray, plane), Stage::Exact)
     }
+}
+
+/// The last stage: the exact oracle; [`PlaneHit::Parallel`] for a
+/// non-finite input.
+#[cold]
+pub(crate) fn escalate(ray: &Ray, plane: &Plane) -> PlaneHit {
+    exact::intersect(ray, plane).unwrap_or(PlaneHit::Parallel)
 }

@@ -1,9 +1,11 @@
-//! Four rays against four planes at once (`wide::f32x4`), bit-identical to
-//! [`super::reference`](mod@super::reference): both run [`super::kernel::solve`], this one at
-//! `f32x4`, classified with masks and selects.
+//! Four rays against four planes at once. The filter runs on four f64
+//! lanes; both paths return the exact answer, correctly rounded, so they
+//! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
-use super::{Plane, PlaneHit, kernel};
-use crate::ray4::{Ray4, gather3};
+use super::{Plane, PlaneHit, kernel, reference};
+use crate::num::certify::certify;
+use crate::num::real::{F64x4, M4};
+use crate::ray4::{Ray4, gather3, scatter3};
 use wide::{f32x4, i32x4};
 
 /// Four planes, structure-of-arrays.
@@ -66,32 +68,72 @@ pub struct PlaneHit4 {
     pub t: f32x4,
 }
 
-/// Intersects four lines with four planes, lane by lane.
+/// Intersects four lines with four planes, lane by lane: the
+/// [filter](super::kernel) on four f64 lanes, and the scalar stages for any
+/// lane it leaves undecided, so every lane equals
+/// [`super::reference::intersect`] bit for bit.
 ///
 /// ```
-/// use rayoracle::{Ray, ray4::Ray4, plane::{Plane, reference, x4}};
+/// use rayoracle::{Ray, ray4::Ray4, plane::{Plane, PlaneHit, reference, x4}};
 /// use glam::Vec3;
-/// let p = Plane::new(Vec3::ZERO, Vec3::Y);
-/// let rays = [Vec3::Y, Vec3::X, -Vec3::Y, Vec3::new(1.0, 1.0, 0.0)].map(|d| Ray::new(Vec3::Y, d));
+/// let p = Plane::new(Vec3::new(0.0, 0.0, 3.0), Vec3::Z);
+/// let rays = [Vec3::Z, Vec3::X, -Vec3::Z, Vec3::new(0.0, 1.0, 1e-30)].map(|d| Ray::new(Vec3::ZERO, d));
 /// let h = x4::intersect(&Ray4::from_rays(rays), &x4::Plane4::splat(&p));
 /// assert_eq!(h.lanes(), rays.map(|r| reference::intersect(&r, &p)));
+/// assert_eq!(h.lanes()[1], PlaneHit::Parallel);
 /// ```
 #[inline]
 pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
-    let k = kernel::solve(ray.origin, ray.dir, p.point, p.normal);
-    let zero = f32x4::ZERO;
-    let hit = k.den.simd_ne(zero);
-    let in_plane = !hit & k.num.simd_eq(zero);
-    let as_int = |m: f32x4| -> i32x4 { wide::bytemuck::cast(m) };
-    // class = 1 − (hit ? 1 : 0) + (in_plane ? 1 : 0), masks being −1.
-    let class = i32x4::splat(1) + as_int(hit) - as_int(in_plane);
-    PlaneHit4 {
-        class,
-        t: hit.select(k.t, f32x4::splat(f32::NAN)),
+    let w = |v: f32x4| F64x4::from_f32(v.to_array());
+    let f = kernel::filter(
+        ray.origin.map(w),
+        ray.dir.map(w),
+        p.point.map(w),
+        p.normal.map(w),
+        1.0,
+    );
+    let hit = f.hit & certify(f.t, f.e);
+    let t = f.t.to_f32();
+    let class = |i: usize| {
+        if hit.0[i] {
+            0
+        } else if f.parallel.0[i] {
+            1
+        } else {
+            2
+        }
+    };
+    let mut out = PlaneHit4 {
+        class: i32x4::from([0, 1, 2, 3].map(class)),
+        t: f32x4::from([0, 1, 2, 3].map(|i| if hit.0[i] { t[i] } else { f32::NAN })),
+    };
+    let done = hit | f.parallel | f.in_plane;
+    if !done.all() {
+        out.settle(done, ray, p);
     }
+    out
 }
 
 impl PlaneHit4 {
+    /// Replaces every lane not `done` with the scalar stages' answer.
+    #[cold]
+    fn settle(&mut self, done: M4, ray: &Ray4, p: &Plane4) {
+        let rays = ray.to_rays();
+        let (a, n) = (scatter3(p.point), scatter3(p.normal));
+        let (mut class, mut t) = (self.class.to_array(), self.t.to_array());
+        for i in (0..4).filter(|&i| !done.0[i]) {
+            (class[i], t[i]) = match reference::escalate(&rays[i], &Plane::new(a[i], n[i])) {
+                PlaneHit::Hit(x) => (0, x),
+                PlaneHit::Parallel => (1, f32::NAN),
+                PlaneHit::InPlane => (2, f32::NAN),
+            };
+        }
+        *self = PlaneHit4 {
+            class: i32x4::from(class),
+            t: f32x4::from(t),
+        };
+    }
+
     /// The four results as scalar values.
     ///
     /// ```

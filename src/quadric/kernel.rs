@@ -1,115 +1,189 @@
-//! The quadric's arithmetic, written once over [`Lane`] and instantiated at
-//! `f32` by [`super::reference`](mod@super::reference) and at `f32x4` by [`super::x4`] (see
-//! [`crate::sphere::kernel`] for why).
+//! The filter: the quadric's first stage, written once over [`Real`] and
+//! run at `f64` by [`super::reference`](mod@super::reference) and at
+//! [`F64x4`](crate::num::real::F64x4) by [`super::x4`].
+//!
+//! # The bound
+//!
+//! In the notation of [`crate::sphere::kernel`] (`u = 2⁻⁵³`, `γₙ`, hats for
+//! computed values, `E` for error bounds), with f32 inputs exact in f64.
+//! Every term of α, β and γ is a coefficient times one or two inputs: `k·x`
+//! is exact (two f32 values), `k·x·y` rounds once, and the factor 2 of β's
+//! square terms is exact. Summed left to right:
+//!
+//! * α, 6 terms: `E_α = γ₆ m_α`;
+//! * β, 12 terms: `E_β = γ₁₂ m_β`;
+//! * γ, 10 terms: `E_γ = γ₁₀ m_γ`;
+//!
+//! with `m` the sum of the terms' magnitudes. The filter uses twice these:
+//! `E_α = 12u m_α`, `E_β = 24u m_β`, `E_γ = 20u m_γ`.
+//!
+//! * `Δ = β² − 4αγ`: `|β̂² − β²| ≤ E_β(2|β̂| + E_β)`, `|α̂γ̂ − αγ| ≤ |α̂|E_γ
+//!   + (|γ̂| + E_γ)E_α`, and three roundings of at most `u(β̂² + 4|α̂γ̂|)`.
+//!   With `|β̂| ≤ m_β`, `|α̂| ≤ m_α`, `|γ̂| ≤ m_γ`, that is at most
+//!   `u(50 m_β² + 136 m_α m_γ)` to first order; the filter uses
+//!   **`E_Δ = u(100 m_β² + 300 m_α m_γ)`**.
+//! * `|α̂| > E_α` certifies a quadratic, then `Δ̂ > E_Δ` two roots and
+//!   `Δ̂ < −E_Δ` none. A double root is never certified here.
+//! * `m_α = 0` means α is exactly 0 (a nonzero term is at least `2⁻⁴⁴⁷`):
+//!   then `|β̂| > E_β` certifies the linear root `−γ/β`; `m_β = 0` with
+//!   `|γ̂| > E_γ` certifies no root, and `m_β = m_γ = 0` the whole line.
+//!
+//! The roots after pbrt-v4's `Quadratic`: `s = √Δ`, `q = −½(β +
+//! sign(β̂)s)`, roots `q/α` and `γ/q`, with `E_s = E_Δ/ŝ + 2u ŝ`,
+//! `E_q = ½(E_β + E_s) + 2u|q̂|`, and each quotient bounded as in
+//! [`crate::sphere::kernel`]: `|x̂/ŷ − x/y| ≤ (|x̂|E_y + |ŷ|E_x) / (|ŷ|(|ŷ| −
+//! E_y))` plus `2u|t̂|`. A root exactly 0 (`γ = 0` term by term) is `+0`.
+//!
+//! # Range
+//!
+//! `β²` and `αγ` are products of six f32 values at most: between `2⁻⁸⁹⁴`
+//! and `2⁷⁶⁸` in magnitude, so no overflow and no underflow into f64's
+//! subnormals for any finite input. A non-finite input certifies nothing.
 
-use crate::num::scale::{Scale, normalized3};
-use crate::num::{Ff, Lane};
+use crate::num::certify::U;
+use crate::num::real::Real;
 
-/// `k · x · y` to double-word accuracy: the exact `x·y`, scaled by `k`.
-#[inline(always)]
-fn term<L: Lane>(k: L, x: L, y: L) -> Ff<L> {
-    Ff::product(x, y).scale(k)
+/// The filter's result: the certified classes and the roots with their
+/// bounds.
+#[derive(Clone, Copy, Debug)]
+pub struct Filtered<L: Real> {
+    /// Certified: two roots `t0`, `t1` (unsorted; each still needs
+    /// [`certify`](crate::num::certify::certify)).
+    pub two: L::Mask,
+    /// Certified: one linear root `t0` (α = 0).
+    pub linear: L::Mask,
+    /// Certified: no root.
+    pub none: L::Mask,
+    /// Certified: the line lies on the surface.
+    pub all: L::Mask,
+    /// `q/α`, or the linear root.
+    pub t0: L,
+    /// A bound on `t0`'s error.
+    pub e0: L,
+    /// `γ/q`.
+    pub t1: L,
+    /// A bound on `t1`'s error.
+    pub e1: L,
 }
 
-/// α, β, γ of the ray against the coefficients `k`, in double-word
-/// arithmetic (the seed's expansion, with its `o t d_z → i t d_z` typo
-/// fixed).
+/// A sum of terms and of their magnitudes.
+#[inline(always)]
+fn sum<L: Real, const N: usize>(t: [L; N]) -> (L, L) {
+    let mut s = t[0];
+    let mut m = t[0].abs();
+    for x in &t[1..] {
+        s = s + *x;
+        m = m + x.abs();
+    }
+    (s, m)
+}
+
+/// α, β and γ of the line `o + t d` on the quadric `k`, each with the sum
+/// of its terms' magnitudes.
 ///
 /// ```
 /// use rayoracle::quadric::kernel::coefficients;
-/// let cyl = [1.0f32, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
-/// let (a, b, c) = coefficients(&cyl, [-5.0, 0.0, 0.0], [1.0, 0.0, 0.0]);
-/// assert_eq!((a.hi, b.hi, c.hi), (1.0, -10.0, 24.0));
+/// // The unit sphere from (0, 0, −5) along z: t² − 10t + 24.
+/// let k = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+/// let [a, b, c] = coefficients::<f64>(&k, [0.0, 0.0, -5.0], [0.0, 0.0, 1.0]);
+/// assert_eq!((a, b, c), ((1.0, 1.0), (-10.0, 10.0), (24.0, 26.0)));
 /// ```
 #[inline(always)]
-pub fn coefficients<L: Lane>(k: &[L; 10], o: [L; 3], d: [L; 3]) -> (Ff<L>, Ff<L>, Ff<L>) {
+pub fn coefficients<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3]) -> [(L, L); 3] {
     let two = L::splat(2.0);
-    let alpha = term(k[0], d[0], d[0])
-        + term(k[1], d[1], d[1])
-        + term(k[2], d[2], d[2])
-        + term(k[3], d[0], d[1])
-        + term(k[4], d[0], d[2])
-        + term(k[5], d[1], d[2]);
-    let beta = (term(k[0], o[0], d[0]) + term(k[1], o[1], d[1]) + term(k[2], o[2], d[2]))
-        .scale(two)
-        + term(k[3], o[0], d[1])
-        + term(k[3], d[0], o[1])
-        + term(k[4], o[0], d[2])
-        + term(k[4], d[0], o[2])
-        + term(k[5], o[1], d[2])
-        + term(k[5], d[1], o[2])
-        + Ff::product(k[6], d[0])
-        + Ff::product(k[7], d[1])
-        + Ff::product(k[8], d[2]);
-    let gamma = term(k[0], o[0], o[0])
-        + term(k[1], o[1], o[1])
-        + term(k[2], o[2], o[2])
-        + term(k[3], o[0], o[1])
-        + term(k[4], o[0], o[2])
-        + term(k[5], o[1], o[2])
-        + Ff::product(k[6], o[0])
-        + Ff::product(k[7], o[1])
-        + Ff::product(k[8], o[2])
-        + Ff::from(k[9]);
-    (alpha, beta, gamma)
+    let t = |c: L, x: L, y: L| c * x * y;
+    let alpha = sum([
+        t(k[0], d[0], d[0]),
+        t(k[1], d[1], d[1]),
+        t(k[2], d[2], d[2]),
+        t(k[3], d[0], d[1]),
+        t(k[4], d[0], d[2]),
+        t(k[5], d[1], d[2]),
+    ]);
+    let beta = sum([
+        t(k[0], o[0], d[0]) * two,
+        t(k[1], o[1], d[1]) * two,
+        t(k[2], o[2], d[2]) * two,
+        t(k[3], o[0], d[1]),
+        t(k[3], d[0], o[1]),
+        t(k[4], o[0], d[2]),
+        t(k[4], d[0], o[2]),
+        t(k[5], o[1], d[2]),
+        t(k[5], d[1], o[2]),
+        k[6] * d[0],
+        k[7] * d[1],
+        k[8] * d[2],
+    ]);
+    let gamma = sum([
+        t(k[0], o[0], o[0]),
+        t(k[1], o[1], o[1]),
+        t(k[2], o[2], o[2]),
+        t(k[3], o[0], o[1]),
+        t(k[4], o[0], o[2]),
+        t(k[5], o[1], o[2]),
+        k[6] * o[0],
+        k[7] * o[1],
+        k[8] * o[2],
+        k[9],
+    ]);
+    [alpha, beta, gamma]
 }
 
-/// What the classification needs (leading parts of α, β, γ and the
-/// discriminant; only signs and zero-ness are used) and every candidate
-/// root, in the caller's units.
-#[derive(Clone, Copy, Debug)]
-pub struct Parts<L> {
-    /// α.
-    pub alpha: L,
-    /// β.
-    pub beta: L,
-    /// γ.
-    pub gamma: L,
-    /// β² − 4αγ.
-    pub disc: L,
-    /// `−γ/β`, the root when α = 0.
-    pub linear: L,
-    /// `−β/2α`, the double root.
-    pub double: L,
-    /// The smaller root.
-    pub t0: L,
-    /// The larger root.
-    pub t1: L,
-}
-
-/// Computes [`Parts`]: pbrt-v4's `Quadratic` in double-word arithmetic after
-/// exact prescaling of the coefficients (the surface is unchanged) and of
-/// `d` (roots scale back by `2^−kd`).
+/// Runs the filter on a line `o + t d` and the quadric `k`, every bound
+/// multiplied by `shrink` (1 in the kernels).
 ///
 /// ```
-/// use rayoracle::quadric::kernel::solve;
-/// let cyl = [1.0f32, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
-/// let p = solve(&cyl, [-5.0, 0.0, 0.0], [1.0, 0.0, 0.0]);
-/// assert_eq!((p.t0, p.t1), (4.0, 6.0));
+/// use rayoracle::quadric::kernel::filter;
+/// let cyl = [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+/// let f = filter::<f64>(&cyl, [-5.0, 0.0, 0.0], [1.0, 0.0, 0.0], 1.0);
+/// assert!(f.two && (f.t0, f.t1) == (6.0, 4.0));
+/// // Along the axis α = β = 0, and γ = −1: no root, certain.
+/// let f = filter::<f64>(&cyl, [0.0; 3], [0.0, 0.0, 1.0], 1.0);
+/// assert!(f.none && !f.two && !f.linear && !f.all);
 /// ```
 #[inline(always)]
-pub fn solve<L: Lane>(coeffs: &[L; 10], o: [L; 3], d: [L; 3]) -> Parts<L> {
-    let sq = Scale::of_max(coeffs);
-    let k = coeffs.map(|x| sq.apply(x));
-    let (d, sd) = normalized3(d);
-    let (alpha, beta, gamma) = coefficients(&k, o, d);
-    let e = -sd.k;
+pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filtered<L> {
+    let c = |x: f64| L::splat(x * U * shrink);
+    let (zero, half, inf) = (L::splat(0.0), L::splat(0.5), L::splat(f64::INFINITY));
+    let [(alpha, ma), (beta, mb), (gamma, mg)] = coefficients(k, o, d);
+    let (ea, eb, eg) = (c(12.0) * ma, c(24.0) * mb, c(20.0) * mg);
+    let four = L::splat(4.0);
+    let disc = beta * beta - four * alpha * gamma;
+    let ed = c(100.0) * mb * mb + c(300.0) * ma * mg;
 
-    // pbrt-v4: DifferenceOfProducts(b, b, 4a, c), here exact products and a
-    // double-word difference.
-    let disc = beta * beta - (alpha * gamma).scale(L::splat(4.0));
-    // pbrt-v4: q = −½(b + sign(b)√Δ), t₀ = q/a, t₁ = c/q.
-    let q = -(beta + disc.sqrt().with_sign_of(beta.hi)).scale(L::splat(0.5));
-    let u0 = (q / alpha).round().ldexp(e);
-    let u1 = (gamma / q).round().ldexp(e);
-    Parts {
-        alpha: alpha.hi,
-        beta: beta.hi,
-        gamma: gamma.hi,
-        disc: disc.hi,
-        linear: (-(gamma / beta)).round().ldexp(e),
-        double: (-(beta / alpha.scale(L::splat(2.0)))).round().ldexp(e),
-        t0: L::select_gt(u0, u1, u1, u0),
-        t1: L::select_gt(u0, u1, u0, u1),
+    let quad = alpha.abs().gt(ea);
+    let lin = ma.eq(zero);
+    let beta_clear = beta.abs().gt(eb);
+    let beta_zero = mb.eq(zero);
+    let two = quad & disc.gt(ed);
+    let linear = lin & beta_clear;
+    let none = (quad & (-ed).gt(disc)) | (lin & beta_zero & gamma.abs().gt(eg));
+    let all = lin & beta_zero & mg.eq(zero);
+
+    // Two roots.
+    let s = disc.sqrt();
+    let es = ed / s + c(2.0) * s;
+    let q = -(beta + s.copysign(beta)) * half;
+    let qa = q.abs();
+    let eq = (eb + es) * half + c(2.0) * qa;
+    let aa = alpha.abs();
+    let r0 = q / alpha;
+    let e0 = (qa * ea + aa * eq) / (aa * (aa - ea)) + c(2.0) * r0.abs();
+    let r1 = gamma / q + zero;
+    let e1 = (gamma.abs() * eq + qa * eg) / (qa * (qa - eq)) + c(2.0) * r1.abs();
+    let e1 = L::select(qa.gt(eq), e1, inf);
+    // One linear root.
+    let ba = beta.abs();
+    let rl = -gamma / beta + zero;
+    let el = (gamma.abs() * eb + ba * eg) / (ba * (ba - eb)) + c(2.0) * rl.abs();
+    Filtered {
+        two,
+        linear,
+        none,
+        all,
+        t0: L::select(linear, rl, r0),
+        e0: L::select(linear, el, e0),
+        t1: r1,
+        e1,
     }
 }

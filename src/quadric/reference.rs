@@ -1,37 +1,81 @@
-//! The scalar reference: [`super::kernel::solve`] at `f32` — α, β, γ in
-//! double-word arithmetic, then pbrt-v4's `Quadratic` with its α = 0 branch —
-//! classified with plain branches.
+//! The scalar reference: the [filter](super::kernel) at `f64`, then the
+//! exact oracle for whatever it leaves undecided.
 
-use super::{Quadric, QuadricHit, kernel};
+use super::{Quadric, QuadricHit, exact, kernel};
 use crate::Ray;
+use crate::num::certify::certify;
+use crate::stage::Stage;
 
-/// Intersects a line with a quadric: class and roots over `t ∈ ℝ`.
+/// Intersects a line with a quadric: the exact class over `t ∈ ℝ`, and the
+/// roots correctly rounded to `f32`. A NaN or infinite input gives
+/// [`QuadricHit::None`].
 ///
 /// ```
 /// use rayoracle::{Ray, quadric::{Quadric, QuadricHit, reference::intersect}};
 /// use glam::Vec3;
+/// // The unit cylinder x² + y² = 1.
 /// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
-/// let across = Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X);
-/// assert_eq!(intersect(&across, &cyl), QuadricHit::Two(4.0, 6.0));
-/// // Parallel to the axis, on the surface: α = β = γ = 0.
-/// let along = Ray::new(Vec3::new(1.0, 0.0, 0.0), Vec3::Z);
-/// assert_eq!(intersect(&along, &cyl), QuadricHit::All);
+/// assert_eq!(intersect(&Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), &cyl), QuadricHit::Two(4.0, 6.0));
+/// // Parallel to the axis, on the surface: every t.
+/// assert_eq!(intersect(&Ray::new(Vec3::X, Vec3::Z), &cyl), QuadricHit::All);
+/// // The paraboloid z = x² + y² along its axis: α = 0, one root.
+/// let bowl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0]);
+/// assert_eq!(intersect(&Ray::new(Vec3::new(0.0, 0.0, -2.0), Vec3::Z), &bowl), QuadricHit::One(2.0));
 /// ```
+#[inline]
 pub fn intersect(ray: &Ray, quadric: &Quadric) -> QuadricHit {
-    let p = kernel::solve(&quadric.coeffs, ray.origin.to_array(), ray.dir.to_array());
-    if p.alpha == 0.0 {
-        if p.beta != 0.0 {
-            QuadricHit::One(p.linear)
-        } else if p.gamma == 0.0 {
-            QuadricHit::All
+    intersect_staged(ray, quadric).0
+}
+
+/// [`intersect`], and the [`Stage`] that decided it.
+///
+/// ```
+/// use rayoracle::{Ray, stage::Stage, quadric::{Quadric, QuadricHit, reference::intersect_staged}};
+/// use glam::Vec3;
+/// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+/// let r = Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X);
+/// assert_eq!(intersect_staged(&r, &cyl), (QuadricHit::Two(4.0, 6.0), Stage::Filter));
+/// ```
+#[inline]
+pub fn intersect_staged(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
+    intersect_shrunk(ray, quadric, 1.0)
+}
+
+/// [`intersect_staged`] with the filter's bounds multiplied by `shrink`:
+/// for the tests that show a bound too small gives wrong answers.
+#[doc(hidden)]
+#[inline(always)]
+pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
+    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    let f = kernel::filter(
+        &quadric.coeffs.map(f64::from),
+        w(ray.origin),
+        w(ray.dir),
+        shrink,
+    );
+    if f.two && certify(f.t0, f.e0) && certify(f.t1, f.e1) {
+        // Disjoint enclosures are in the exact order; overlapping ones
+        // round to the same f32.
+        let (t0, t1) = if f.t0 <= f.t1 {
+            (f.t0, f.t1)
         } else {
-            QuadricHit::None
-        }
-    } else if !(p.disc >= 0.0) {
-        QuadricHit::None
-    } else if p.disc == 0.0 {
-        QuadricHit::One(p.double)
+            (f.t1, f.t0)
+        };
+        (QuadricHit::Two(t0 as f32, t1 as f32), Stage::Filter)
+    } else if f.linear && certify(f.t0, f.e0) {
+        (QuadricHit::One(f.t0 as f32), Stage::Filter)
+    } else if f.none {
+        (QuadricHit::None, Stage::Filter)
+    } else if f.all {
+        (QuadricHit::All, Stage::Filter)
     } else {
-        QuadricHit::Two(p.t0, p.t1)
+        (escalate(ray, quadric), Stage::Exact)
     }
+}
+
+/// The last stage: the exact oracle; [`QuadricHit::None`] for a non-finite
+/// input.
+#[cold]
+pub(crate) fn escalate(ray: &Ray, quadric: &Quadric) -> QuadricHit {
+    exact::intersect(ray, quadric).unwrap_or(QuadricHit::None)
 }

@@ -1,8 +1,10 @@
-//! Four rays against four quadrics at once (`wide::f32x4`), bit-identical
-//! to [`super::reference`](mod@super::reference): both run [`super::kernel::solve`], this one at
-//! `f32x4`, classified with masks and selects.
+//! Four rays against four quadrics at once. The filter runs on four f64
+//! lanes; both paths return the exact answer, correctly rounded, so they
+//! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
-use super::{Quadric, QuadricHit, kernel};
+use super::{Quadric, QuadricHit, kernel, reference};
+use crate::num::certify::certify;
+use crate::num::real::{F64x4, M4, Real};
 use crate::ray4::Ray4;
 use wide::{f32x4, i32x4};
 
@@ -63,38 +65,88 @@ pub struct QuadricHit4 {
     pub t1: f32x4,
 }
 
-/// Intersects four lines with four quadrics, lane by lane.
+/// Intersects four lines with four quadrics, lane by lane: the
+/// [filter](super::kernel) on four f64 lanes, and the scalar stages for any
+/// lane it leaves undecided, so every lane equals
+/// [`super::reference::intersect`] bit for bit.
 ///
 /// ```
-/// use rayoracle::{Ray, ray4::Ray4, quadric::{Quadric, reference, x4}};
+/// use rayoracle::{Ray, ray4::Ray4, quadric::{Quadric, QuadricHit, reference, x4}};
 /// use glam::Vec3;
 /// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
-/// let rays = [Vec3::X, Vec3::Z, Vec3::new(1.0, 1.0, 0.0), Vec3::Y]
-///     .map(|d| Ray::new(Vec3::new(1.0, 0.0, 0.0), d));
+/// let rays = [
+///     Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X),
+///     Ray::new(Vec3::X, Vec3::Z),
+///     Ray::new(Vec3::new(-5.0, 1.0, 0.0), Vec3::X),
+///     Ray::new(Vec3::new(-5.0, 2.0, 0.0), Vec3::X),
+/// ];
 /// let h = x4::intersect(&Ray4::from_rays(rays), &x4::Quadric4::splat(&cyl));
 /// assert_eq!(h.lanes(), rays.map(|r| reference::intersect(&r, &cyl)));
+/// assert_eq!(h.lanes()[2], QuadricHit::One(5.0));
 /// ```
 #[inline]
 pub fn intersect(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
-    let p = kernel::solve(&q.coeffs, ray.origin, ray.dir);
-    let zero = f32x4::ZERO;
-    let linear = p.alpha.simd_eq(zero);
-    let lin_one = linear & p.beta.simd_ne(zero);
-    let all = linear & !lin_one & p.gamma.simd_eq(zero);
-    let quad = !linear & p.disc.simd_ge(zero);
-    let double = quad & p.disc.simd_eq(zero);
-    let two = quad & !double;
-    let one = lin_one | double;
-    let nan = f32x4::splat(f32::NAN);
-    let single = lin_one.select(p.linear, p.double);
-    let t0 = two.select(p.t0, one.select(single, nan));
-    let t1 = two.select(p.t1, one.select(single, nan));
-    let as_int = |m: f32x4| wide::bytemuck::cast::<f32x4, i32x4>(m) & i32x4::splat(1);
-    let class = as_int(one) + (as_int(two) << 1) + as_int(all) * i32x4::splat(3);
-    QuadricHit4 { class, t0, t1 }
+    let w = |v: f32x4| F64x4::from_f32(v.to_array());
+    let f = kernel::filter(&q.coeffs.map(w), ray.origin.map(w), ray.dir.map(w), 1.0);
+    let ok0 = certify(f.t0, f.e0);
+    let two = f.two & ok0 & certify(f.t1, f.e1);
+    let one = f.linear & ok0;
+    // Disjoint enclosures are in the exact order; overlapping ones round
+    // to the same f32.
+    let swap = two & f.t0.gt(f.t1);
+    let lo = F64x4::select(swap, f.t1, f.t0).to_f32();
+    let hi = F64x4::select(swap, f.t0, f.t1).to_f32();
+    let class = |i: usize| {
+        if two.0[i] {
+            2
+        } else if one.0[i] {
+            1
+        } else if f.all.0[i] {
+            3
+        } else {
+            0
+        }
+    };
+    let root = |i: usize, t: &[f32; 4]| if (two | one).0[i] { t[i] } else { f32::NAN };
+    let mut out = QuadricHit4 {
+        class: i32x4::from([0, 1, 2, 3].map(class)),
+        t0: f32x4::from([0, 1, 2, 3].map(|i| root(i, &lo))),
+        t1: f32x4::from([0, 1, 2, 3].map(|i| if one.0[i] { lo[i] } else { root(i, &hi) })),
+    };
+    let done = two | one | f.none | f.all;
+    if !done.all() {
+        out.settle(done, ray, q);
+    }
+    out
 }
 
 impl QuadricHit4 {
+    /// Replaces every lane not `done` with the scalar stages' answer.
+    #[cold]
+    fn settle(&mut self, done: M4, ray: &Ray4, q: &Quadric4) {
+        let rays = ray.to_rays();
+        let k = q.coeffs.map(|c| c.to_array());
+        let (mut class, mut t0, mut t1) = (
+            self.class.to_array(),
+            self.t0.to_array(),
+            self.t1.to_array(),
+        );
+        for i in (0..4).filter(|&i| !done.0[i]) {
+            let quadric = Quadric::new(k.map(|c| c[i]));
+            (class[i], t0[i], t1[i]) = match reference::escalate(&rays[i], &quadric) {
+                QuadricHit::None => (0, f32::NAN, f32::NAN),
+                QuadricHit::One(t) => (1, t, t),
+                QuadricHit::Two(a, b) => (2, a, b),
+                QuadricHit::All => (3, f32::NAN, f32::NAN),
+            };
+        }
+        *self = QuadricHit4 {
+            class: i32x4::from(class),
+            t0: f32x4::from(t0),
+            t1: f32x4::from(t1),
+        };
+    }
+
     /// The four results as scalar values.
     ///
     /// ```

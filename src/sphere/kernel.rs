@@ -1,84 +1,133 @@
-//! The sphere's arithmetic, written once over [`Lane`] and instantiated at
-//! `f32` by [`super::reference`](mod@super::reference) and at `f32x4` by [`super::x4`]: the two
-//! paths run the same IEEE operations in the same order, so they agree bit
-//! for bit on every input (see [`crate::num`]). Only the classification —
-//! branches on one path, masks on the other — is written twice.
+//! The filter: the sphere's first stage, written once over [`Real`] and
+//! run at `f64` by [`super::reference`](mod@super::reference) and at
+//! [`F64x4`](crate::num::real::F64x4) by [`super::x4`]. It evaluates the
+//! textbook quadratic in f64 with a bound on every error, and certifies only
+//! what the bound decides; the rest goes to the later stages.
+//!
+//! # The bound
+//!
+//! The inputs are f32, so exact in f64. Write `u = 2⁻⁵³` and `γₙ = nu/(1 −
+//! nu)`; a value that went through `n` roundings from exact data is within
+//! `γₙ` of it, relatively, and a computed sum of such terms is within `γₙ`
+//! times the sum of their magnitudes, `n` counting the roundings on the
+//! longest path (Higham, *Accuracy and Stability of Numerical Algorithms*,
+//! §3.1). Hats are computed values, `E` a bound on a computed value's error.
+//!
+//! * `f̂ᵢ = fl(oᵢ − Cᵢ)`, one rounding.
+//! * `a = Σdᵢ²`: the squares of f32 values are exact, two additions:
+//!   `E_a = γ₂ a`. And `a = 0` exactly when `d = 0`, since `dᵢ² ≥ 2⁻²⁹⁸`.
+//! * `b = Σfᵢdᵢ`: one rounding in `f̂ᵢ`, one in the product, two additions:
+//!   `E_b = γ₄ m_b` with `m_b = Σ|f̂ᵢdᵢ|`.
+//! * `c = Σfᵢ² − R²`: `f̂ᵢ²` carries three roundings, then three additions
+//!   (`R²` is exact): `E_c = γ₆ m_c` with `m_c = Σf̂ᵢ² + R²`.
+//! * `Δ = b² − ac`: `|b̂² − b²| ≤ E_b(2|b̂| + E_b)`, `|âĉ − ac| ≤ â E_c +
+//!   (|ĉ| + E_c) E_a`, and the two products and the difference round once
+//!   each, by at most `u(b̂² + |âĉ|)` together with the difference's own.
+//!   With `|b̂| ≤ m_b` and `|ĉ| ≤ m_c` this is at most `18u(m_b² + â m_c)`
+//!   to first order, and the filter uses **`E_Δ = 40u(m_b² + â m_c)`**:
+//!   over twice the proof's constant, so that the second-order terms and the
+//!   roundings of the magnitudes themselves are covered.
+//!
+//! `Δ̂ > E_Δ` certifies two roots and `Δ̂ < −E_Δ` none. A tangent (`Δ = 0`)
+//! is never certified here.
+//!
+//! For the roots (after Ray Tracing Gems ch. 7 and pbrt-v4), `s = √Δ`,
+//! `q = −(b + sign(b̂)s)`, and the roots are `q/a` and `c/q`, sorted; the
+//! sign is taken from `b̂` even where `b`'s own is uncertain, which only
+//! costs accuracy, never validity, since both signs give the same roots.
+//!
+//! * `ŝ = fl(√Δ̂)`: `|√Δ − √Δ̂| ≤ E_Δ/√Δ̂` (from `√x − √(x − e) ≤ e/√x`),
+//!   so `E_s = E_Δ/ŝ + 2u ŝ`.
+//! * `|q̂| = fl(|b̂| + ŝ)` (no cancellation): `E_q = E_b + E_s + 2u|q̂|`.
+//! * `q/a`: `|q̂/â − q/a| ≤ (|q̂| E_a + â E_q) / (â(â − E_a))`.
+//! * `c/q`: `|ĉ/q̂ − c/q| ≤ (|ĉ| E_q + |q̂| E_c) / (|q̂|(|q̂| − E_q))`,
+//!   meaningful only where `|q̂| > E_q`.
+//!
+//! and each quotient's own rounding, `2u|t̂|`. [`certify`] then decides
+//! each root. Every constant above is at least twice what the proof needs:
+//! `E_a = 4u â`, `E_b = 8u m_b`, `E_c = 12u m_c`.
+//!
+//! # Range
+//!
+//! No quantity here is a product of more than four inputs (`b²`, `ac`), and
+//! a product of up to six f32 values lies between `2⁻⁸⁹⁴` and `2⁷⁶⁸` in
+//! magnitude: no overflow, and no underflow into f64's subnormals, so the
+//! relative error model holds for every finite input. An infinite input
+//! makes a magnitude sum infinite, and a NaN makes `Δ̂` NaN; neither
+//! certifies anything.
 
-use crate::num::ff::{dot3, dot3_ff, norm2_ff};
-use crate::num::scale::{Scale, normalized3};
-use crate::num::{Ff, Lane};
+use crate::num::certify::U;
+use crate::num::real::Real;
 
-/// Everything the classification needs, already unscaled to the caller's
-/// units: `a = d·d` (only its zero-ness is used), `disc = aΔ` (only its
-/// sign), the tangent root `−b/a`, and the two roots sorted `t0 ≤ t1`
-/// (NaN roots are left in computation order).
+/// The filter's result: the classes it certified, and both roots (in
+/// computation order) with their error bounds.
 #[derive(Clone, Copy, Debug)]
-pub struct Parts<L> {
-    /// The leading part of `a = d·d` after prescaling.
-    pub a: L,
-    /// The leading part of `aΔ = (aR)² − |a f − b d|²` after prescaling.
-    pub disc: L,
-    /// `−b/a`, the double root.
-    pub tangent: L,
-    /// The smaller root.
+pub struct Filtered<L: Real> {
+    /// Certified: no root (no line, or `Δ < 0`).
+    pub none: L::Mask,
+    /// Certified: two roots (`Δ > 0`); the roots still need [`certify`].
+    pub two: L::Mask,
+    /// `q/a`.
     pub t0: L,
-    /// The larger root.
+    /// A bound on `t0`'s error.
+    pub e0: L,
+    /// `c/q`.
     pub t1: L,
+    /// A bound on `t1`'s error.
+    pub e1: L,
 }
 
-/// Computes [`Parts`] for a line `o + t d` and a sphere `(c, r)`.
+/// Runs the filter on a line `o + t d` and a sphere `(c, r)`, with every
+/// bound multiplied by `shrink` (1 in the kernels; the tests pass less to
+/// show that a bound too small is caught).
 ///
 /// ```
-/// use rayoracle::sphere::kernel::solve;
-/// let p = solve([0.0f32, 0.0, -5.0], [0.0, 0.0, 1.0], [0.0; 3], 1.0);
-/// assert_eq!((p.t0, p.t1), (4.0, 6.0));
+/// use rayoracle::sphere::kernel::filter;
+/// let f = filter::<f64>([0.0, 0.0, -5.0], [0.0, 0.0, 1.0], [0.0; 3], 1.0, 1.0);
+/// assert!(f.two && !f.none);
+/// assert_eq!((f.t0, f.t1), (6.0, 4.0)); // q/a and c/q
+/// assert!(f.e0 > 0.0 && f.e0 < 1e-12);
 /// ```
+///
+/// [`certify`]: crate::num::certify::certify
 #[inline(always)]
-pub fn solve<L: Lane>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Parts<L> {
-    // Prescale d into [1, 2) (roots scale by 2^-kd) and the positions so that
-    // o − C cannot overflow (roots scale by 2^ks).
-    let (d, sd) = normalized3(d);
-    let ss = Scale::of_max(&[o[0], o[1], o[2], c[0], c[1], c[2], r]);
-    let (o, c, r) = (ss.apply3(o), ss.apply3(c), ss.apply(r));
+pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Filtered<L> {
+    let k = |x: f64| L::splat(x * U * shrink);
+    let u2 = L::splat(2.0 * U * shrink);
+    let f = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
+    let a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    let fd = [f[0] * d[0], f[1] * d[1], f[2] * d[2]];
+    let b = fd[0] + fd[1] + fd[2];
+    let mb = fd[0].abs() + fd[1].abs() + fd[2].abs();
+    let ff = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+    let rr = r * r;
+    let cq = ff - rr;
+    let mc = ff + rr;
+    let disc = b * b - a * cq;
+    let ed = k(40.0) * (mb * mb + a * mc);
 
-    // f = o − C exactly, then rescale f and R together into [1, 2).
-    let f = [
-        Ff::sum(o[0], -c[0]),
-        Ff::sum(o[1], -c[1]),
-        Ff::sum(o[2], -c[2]),
-    ];
-    let sf = Scale::of_max(&[f[0].hi, f[1].hi, f[2].hi, r]);
-    let f = f.map(|x| Ff {
-        hi: sf.apply(x.hi),
-        lo: sf.apply(x.lo),
-    });
-    let r = sf.apply(r);
+    let zero = L::splat(0.0);
+    let line = a.gt(zero);
+    let none = !line | (-ed).gt(disc);
+    let two = line & disc.gt(ed);
 
-    let a = dot3(d, d);
-    let b = dot3_ff(f, d);
-    // Compensated c = |f|² − R² (exact f, exact squares, double-word sum).
-    let cq = norm2_ff(f) - Ff::square(r);
-
-    // RTG ch. 7, division-free: aΔ = (aR)² − |a f − b d|².
-    let l = [
-        a * f[0] - b.scale(d[0]),
-        a * f[1] - b.scale(d[1]),
-        a * f[2] - b.scale(d[2]),
-    ];
-    let ar = a.scale(r);
-    let disc = ar * ar - norm2_ff(l);
-
-    let e = ss.k + sf.k - sd.k;
-    let tangent = (-(b / a)).round().ldexp(e);
-    // RTG ch. 7: q = −(b + sign(b)·√Δ), t₀ = c/q, t₁ = q/a.
-    let q = -(b + (disc / a).sqrt().with_sign_of(b.hi));
-    let u0 = (cq / q).round().ldexp(e);
-    let u1 = (q / a).round().ldexp(e);
-    Parts {
-        a: a.hi,
-        disc: disc.hi,
-        tangent,
-        t0: L::select_gt(u0, u1, u1, u0),
-        t1: L::select_gt(u0, u1, u0, u1),
+    let (ea, eb, ec) = (k(4.0) * a, k(8.0) * mb, k(12.0) * mc);
+    let s = disc.sqrt();
+    let es = ed / s + u2 * s;
+    let q = -(b + s.copysign(b));
+    let qa = q.abs();
+    let eq = eb + es + u2 * qa;
+    let t0 = q / a;
+    let e0 = (qa * ea + a * eq) / (a * (a - ea)) + u2 * t0.abs();
+    let t1 = cq / q;
+    let e1 = (cq.abs() * eq + qa * ec) / (qa * (qa - eq)) + u2 * t1.abs();
+    let e1 = L::select(qa.gt(eq), e1, L::splat(f64::INFINITY));
+    Filtered {
+        none,
+        two,
+        t0,
+        e0,
+        t1,
+        e1,
     }
 }

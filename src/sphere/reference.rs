@@ -1,10 +1,14 @@
-//! The scalar reference: [`super::kernel::solve`] at `f32`, classified with
-//! plain branches.
+//! The scalar reference: the [filter](super::kernel) at `f64`, then the
+//! exact oracle for whatever it leaves undecided.
 
-use super::{Sphere, SphereHit, kernel};
+use super::{Sphere, SphereHit, exact, kernel};
 use crate::Ray;
+use crate::num::certify::certify;
+use crate::stage::Stage;
 
-/// Intersects a line with a sphere: the class and both roots over `t ∈ ℝ`.
+/// Intersects a line with a sphere: the exact class and both roots over
+/// `t ∈ ℝ`, each correctly rounded to `f32`. A NaN or infinite input gives
+/// [`SphereHit::None`].
 ///
 /// ```
 /// use rayoracle::{Ray, sphere::{Sphere, SphereHit, reference::intersect}};
@@ -16,19 +20,61 @@ use crate::Ray;
 /// // Origin inside: one root behind the origin.
 /// let inside = Ray::new(Vec3::ZERO, Vec3::Z);
 /// assert_eq!(intersect(&inside, &s), SphereHit::Two(-1.0, 1.0));
+/// // Grazing the top: an exact tangent.
+/// let graze = Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z);
+/// assert_eq!(intersect(&graze, &s), SphereHit::Tangent(5.0));
 /// ```
+#[inline]
 pub fn intersect(ray: &Ray, sphere: &Sphere) -> SphereHit {
-    let p = kernel::solve(
-        ray.origin.to_array(),
-        ray.dir.to_array(),
-        sphere.center.to_array(),
-        sphere.radius,
+    intersect_staged(ray, sphere).0
+}
+
+/// [`intersect`], and the [`Stage`] that decided it.
+///
+/// ```
+/// use rayoracle::{Ray, stage::Stage, sphere::{Sphere, SphereHit, reference::intersect_staged}};
+/// use glam::Vec3;
+/// let r = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
+/// let s = Sphere::new(Vec3::ZERO, 1.0);
+/// assert_eq!(intersect_staged(&r, &s), (SphereHit::Two(4.0, 6.0), Stage::Filter));
+/// ```
+#[inline]
+pub fn intersect_staged(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
+    intersect_shrunk(ray, sphere, 1.0)
+}
+
+/// [`intersect_staged`] with the filter's bounds multiplied by `shrink`:
+/// for the tests that show a bound too small gives wrong answers.
+#[doc(hidden)]
+#[inline(always)]
+pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage) {
+    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    let f = kernel::filter(
+        w(ray.origin),
+        w(ray.dir),
+        w(sphere.center),
+        f64::from(sphere.radius),
+        shrink,
     );
-    if p.a == 0.0 || !(p.disc >= 0.0) {
-        SphereHit::None // no line (d = 0), or no real root (NaN included)
-    } else if p.disc == 0.0 {
-        SphereHit::Tangent(p.tangent)
-    } else {
-        SphereHit::Two(p.t0, p.t1)
+    if f.none {
+        return (SphereHit::None, Stage::Filter);
     }
+    if f.two && certify(f.t0, f.e0) && certify(f.t1, f.e1) {
+        // Disjoint enclosures are in the exact order; overlapping ones
+        // round to the same f32.
+        let (t0, t1) = if f.t0 <= f.t1 {
+            (f.t0, f.t1)
+        } else {
+            (f.t1, f.t0)
+        };
+        return (SphereHit::Two(t0 as f32, t1 as f32), Stage::Filter);
+    }
+    (escalate(ray, sphere), Stage::Exact)
+}
+
+/// The last stage: the exact oracle; [`SphereHit::None`] for a non-finite
+/// input.
+#[cold]
+pub(crate) fn escalate(ray: &Ray, sphere: &Sphere) -> SphereHit {
+    exact::intersect(ray, sphere).unwrap_or(SphereHit::None)
 }

@@ -1,9 +1,11 @@
-//! Four rays against four spheres at once (`wide::f32x4`), bit-identical
-//! to [`super::reference`](mod@super::reference): both run [`super::kernel::solve`], this one at
-//! `f32x4`, and the classification uses masks and selects, no branches.
+//! Four rays against four spheres at once. The filter runs on four f64
+//! lanes; both paths return the exact answer, correctly rounded, so they
+//! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
-use super::{Sphere, SphereHit, kernel};
-use crate::ray4::{Ray4, gather3};
+use super::{Sphere, SphereHit, kernel, reference};
+use crate::num::certify::certify;
+use crate::num::real::{F64x4, M4, Real};
+use crate::ray4::{Ray4, gather3, scatter3};
 use wide::{f32x4, i32x4};
 
 /// Four spheres, structure-of-arrays (often the same sphere four times).
@@ -69,7 +71,10 @@ pub struct SphereHit4 {
     pub t1: f32x4,
 }
 
-/// Intersects four lines with four spheres, lane by lane.
+/// Intersects four lines with four spheres, lane by lane: the
+/// [filter](super::kernel) on four f64 lanes, and the scalar stages for any
+/// lane it leaves undecided. Every lane is the exact answer, correctly
+/// rounded, so it equals [`super::reference::intersect`] bit for bit.
 ///
 /// ```
 /// use rayoracle::{Ray, ray4::Ray4, sphere::{Sphere, SphereHit, reference, x4}};
@@ -81,17 +86,57 @@ pub struct SphereHit4 {
 /// ```
 #[inline]
 pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-    let p = kernel::solve(ray.origin, ray.dir, s.center, s.radius);
-    let zero = f32x4::ZERO;
-    let none = p.a.simd_eq(zero) | !p.disc.simd_ge(zero);
-    let tangent = !none & p.disc.simd_eq(zero);
-    let nan = f32x4::splat(f32::NAN);
-    let t0 = none.select(nan, tangent.select(p.tangent, p.t0));
-    let t1 = none.select(nan, tangent.select(p.tangent, p.t1));
-    let as_int = |m: f32x4| -> i32x4 { wide::bytemuck::cast(m) };
-    // Masks are all ones (−1 as i32): class = 2 − (none ? 2 : 0) − (tangent ? 1 : 0).
-    let class = i32x4::splat(2) + as_int(none) + as_int(none) + as_int(tangent);
-    SphereHit4 { class, t0, t1 }
+    let w = |v: f32x4| F64x4::from_f32(v.to_array());
+    let f = kernel::filter(
+        ray.origin.map(w),
+        ray.dir.map(w),
+        s.center.map(w),
+        w(s.radius),
+        1.0,
+    );
+    let two = f.two & certify(f.t0, f.e0) & certify(f.t1, f.e1);
+    // Disjoint enclosures are in the exact order; overlapping ones round
+    // to the same f32.
+    let swap = f.t0.gt(f.t1);
+    let lo = F64x4::select(swap, f.t1, f.t0).to_f32();
+    let hi = F64x4::select(swap, f.t0, f.t1).to_f32();
+    let mut out = SphereHit4 {
+        class: i32x4::from(two.0.map(|m| if m { 2 } else { 0 })),
+        t0: f32x4::from([0, 1, 2, 3].map(|i| if two.0[i] { lo[i] } else { f32::NAN })),
+        t1: f32x4::from([0, 1, 2, 3].map(|i| if two.0[i] { hi[i] } else { f32::NAN })),
+    };
+    let done = f.none | two;
+    if !done.all() {
+        out.settle(done, ray, s);
+    }
+    out
+}
+
+impl SphereHit4 {
+    /// Replaces every lane not `done` with the scalar stages' answer.
+    #[cold]
+    fn settle(&mut self, done: M4, ray: &Ray4, s: &Sphere4) {
+        let rays = ray.to_rays();
+        let (c, r) = (scatter3(s.center), s.radius.to_array());
+        let (mut class, mut t0, mut t1) = (
+            self.class.to_array(),
+            self.t0.to_array(),
+            self.t1.to_array(),
+        );
+        for i in (0..4).filter(|&i| !done.0[i]) {
+            let (k, a, b) = match reference::escalate(&rays[i], &Sphere::new(c[i], r[i])) {
+                SphereHit::None => (0, f32::NAN, f32::NAN),
+                SphereHit::Tangent(t) => (1, t, t),
+                SphereHit::Two(a, b) => (2, a, b),
+            };
+            (class[i], t0[i], t1[i]) = (k, a, b);
+        }
+        *self = SphereHit4 {
+            class: i32x4::from(class),
+            t0: f32x4::from(t0),
+            t1: f32x4::from(t1),
+        };
+    }
 }
 
 impl SphereHit4 {
