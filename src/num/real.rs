@@ -8,11 +8,12 @@
 //! ```
 //! use rayoracle::num::real::{F64x4, Real};
 //! let x = F64x4::from([1.0, 4.0, 9.0, 16.0]);
-//! assert_eq!(x.sqrt().0, [1.0, 2.0, 3.0, 4.0]);
+//! assert_eq!(x.sqrt().to_array(), [1.0, 2.0, 3.0, 4.0]);
 //! assert_eq!(Real::sqrt(9.0f64), 3.0);
 //! ```
 
 use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
+use wide::f64x4;
 
 /// A lane type of f64 values: `f64` or [`F64x4`].
 pub trait Real:
@@ -83,32 +84,31 @@ impl Real for f64 {
     }
 }
 
-/// Four `f64` lanes. Plain arrays, operated on lane by lane: LLVM turns each
-/// operation into SSE2 pairs in a default build and into one AVX register
-/// where the caller is compiled (or dispatched) for it.
+/// Four `f64` lanes (`wide::f64x4`: one AVX register where the build
+/// enables AVX, two SSE2 registers otherwise).
 ///
 /// ```
 /// use rayoracle::num::real::F64x4;
 /// let x = F64x4::from([1.0, 2.0, 3.0, 4.0]);
-/// assert_eq!((x + x).0, [2.0, 4.0, 6.0, 8.0]);
+/// assert_eq!((x + x).to_array(), [2.0, 4.0, 6.0, 8.0]);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct F64x4(pub [f64; 4]);
+pub struct F64x4(pub f64x4);
 
-/// Four lane masks.
+/// Four lane masks (all ones or all zeros per lane).
 ///
 /// ```
-/// use rayoracle::num::real::{F64x4, M4, Real};
+/// use rayoracle::num::real::{F64x4, Real};
 /// let m = F64x4::from([1.0, 2.0, 3.0, 4.0]).gt(F64x4::splat(2.5));
-/// assert_eq!(m, M4([false, false, true, true]));
+/// assert_eq!(m.lanes(), [false, false, true, true]);
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct M4(pub [bool; 4]);
+#[derive(Clone, Copy, Debug)]
+pub struct M4(pub f64x4);
 
 impl From<[f64; 4]> for F64x4 {
     #[inline(always)]
     fn from(x: [f64; 4]) -> F64x4 {
-        F64x4(x)
+        F64x4(f64x4::from(x))
     }
 }
 
@@ -117,11 +117,16 @@ impl F64x4 {
     ///
     /// ```
     /// use rayoracle::num::real::F64x4;
-    /// assert_eq!(F64x4::from_f32([0.1; 4]).0, [0.1f32 as f64; 4]);
+    /// assert_eq!(F64x4::from_f32([0.1; 4]).to_array(), [0.1f32 as f64; 4]);
     /// ```
     #[inline(always)]
     pub fn from_f32(x: [f32; 4]) -> F64x4 {
-        F64x4(x.map(f64::from))
+        F64x4::from(x.map(f64::from))
+    }
+    /// The four lanes.
+    #[inline(always)]
+    pub fn to_array(self) -> [f64; 4] {
+        self.0.to_array()
     }
     /// Each lane rounded to `f32`.
     ///
@@ -131,7 +136,12 @@ impl F64x4 {
     /// ```
     #[inline(always)]
     pub fn to_f32(self) -> [f32; 4] {
-        self.0.map(|x| x as f32)
+        self.to_array().map(|x| x as f32)
+    }
+    /// Each lane rounded to `f32` and widened back.
+    #[inline(always)]
+    fn round_f32(self) -> F64x4 {
+        F64x4::from(self.to_array().map(|x| x as f32 as f64))
     }
 }
 
@@ -141,8 +151,7 @@ macro_rules! lanewise {
             type Output = F64x4;
             #[inline(always)]
             fn $f(self, o: F64x4) -> F64x4 {
-                let (a, b) = (self.0, o.0);
-                F64x4([a[0] $op b[0], a[1] $op b[1], a[2] $op b[2], a[3] $op b[3]])
+                F64x4(self.0 $op o.0)
             }
         }
     };
@@ -156,7 +165,7 @@ impl Neg for F64x4 {
     type Output = F64x4;
     #[inline(always)]
     fn neg(self) -> F64x4 {
-        F64x4(self.0.map(|x| -x))
+        F64x4(-self.0)
     }
 }
 
@@ -166,8 +175,7 @@ macro_rules! maskwise {
             type Output = M4;
             #[inline(always)]
             fn $f(self, o: M4) -> M4 {
-                let (a, b) = (self.0, o.0);
-                M4([a[0] $op b[0], a[1] $op b[1], a[2] $op b[2], a[3] $op b[3]])
+                M4(self.0 $op o.0)
             }
         }
     };
@@ -179,7 +187,7 @@ impl Not for M4 {
     type Output = M4;
     #[inline(always)]
     fn not(self) -> M4 {
-        M4(self.0.map(|x| !x))
+        M4(!self.0)
     }
 }
 
@@ -187,58 +195,81 @@ impl M4 {
     /// Whether every lane is set.
     ///
     /// ```
-    /// use rayoracle::num::real::M4;
-    /// assert!(M4([true; 4]).all() && !M4([true, false, true, true]).all());
+    /// use rayoracle::num::real::{F64x4, Real};
+    /// let x = F64x4::from([1.0, 2.0, 3.0, 4.0]);
+    /// assert!(x.gt(F64x4::splat(0.0)).all() && !x.gt(F64x4::splat(1.0)).all());
     /// ```
     #[inline(always)]
     pub fn all(self) -> bool {
-        self.0[0] & self.0[1] & self.0[2] & self.0[3]
+        self.0.to_bitmask() == 0b1111
     }
-}
-
-#[inline(always)]
-fn zip<T>(a: F64x4, b: F64x4, f: impl Fn(f64, f64) -> T) -> [T; 4] {
-    [
-        f(a.0[0], b.0[0]),
-        f(a.0[1], b.0[1]),
-        f(a.0[2], b.0[2]),
-        f(a.0[3], b.0[3]),
-    ]
+    /// The lanes as booleans.
+    #[inline(always)]
+    pub fn lanes(self) -> [bool; 4] {
+        let m = self.0.to_bitmask();
+        [0, 1, 2, 3].map(|i| m >> i & 1 == 1)
+    }
 }
 
 impl Real for F64x4 {
     type Mask = M4;
     #[inline(always)]
     fn splat(x: f64) -> F64x4 {
-        F64x4([x; 4])
+        F64x4(f64x4::splat(x))
     }
     #[inline(always)]
     fn sqrt(self) -> F64x4 {
-        F64x4(self.0.map(f64::sqrt))
+        F64x4(self.0.sqrt())
     }
     #[inline(always)]
     fn abs(self) -> F64x4 {
-        F64x4(self.0.map(f64::abs))
+        F64x4(self.0.abs())
     }
     #[inline(always)]
     fn copysign(self, sign: F64x4) -> F64x4 {
-        F64x4(zip(self, sign, f64::copysign))
+        let s = f64x4::splat(-0.0);
+        F64x4((self.0 & !s) | (sign.0 & s))
     }
     #[inline(always)]
     fn gt(self, other: F64x4) -> M4 {
-        M4(zip(self, other, |a, b| a > b))
+        M4(self.0.simd_gt(other.0))
     }
     #[inline(always)]
     fn eq(self, other: F64x4) -> M4 {
-        M4(zip(self, other, |a, b| a == b))
+        M4(self.0.simd_eq(other.0))
     }
     #[inline(always)]
     fn select(m: M4, a: F64x4, b: F64x4) -> F64x4 {
-        let s = |i: usize| if m.0[i] { a.0[i] } else { b.0[i] };
-        F64x4([s(0), s(1), s(2), s(3)])
+        F64x4(m.0.bitselect(a.0, b.0))
     }
     #[inline(always)]
     fn same_f32(lo: F64x4, hi: F64x4) -> M4 {
-        M4(zip(lo, hi, <f64 as Real>::same_f32))
+        // Equal as floats (so no NaN), and with the same sign bit (so not
+        // −0 against +0).
+        let (a, b) = (lo.round_f32().0, hi.round_f32().0);
+        M4(a.simd_eq(b) & (a ^ b).is_sign_positive())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The four-lane mask ops give, lane by lane, what `f64` gives; the
+    /// zeros and NaN are the cases a float comparison gets wrong.
+    #[test]
+    fn lanes_agree_with_the_scalar_rules() {
+        let xs = [0.0, -0.0, 1.0, -1.0, f64::NAN, 1e-40, -1e-40, 3.0];
+        for &a in &xs {
+            for &b in &xs {
+                let (va, vb) = (F64x4::splat(a), F64x4::splat(b));
+                let want = <f64 as Real>::same_f32(a, b);
+                assert_eq!(F64x4::same_f32(va, vb).lanes(), [want; 4], "{a} {b}");
+                assert_eq!(va.gt(vb).lanes(), [a > b; 4], "{a} {b}");
+                assert_eq!(va.eq(vb).lanes(), [a == b; 4], "{a} {b}");
+                let c = F64x4::copysign(va, vb).to_array()[0];
+                assert_eq!(c.to_bits(), a.copysign(b).to_bits(), "{a} {b}");
+            }
+        }
     }
 }

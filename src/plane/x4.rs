@@ -4,7 +4,7 @@
 
 use super::{Plane, PlaneHit, kernel, reference};
 use crate::num::certify::certify;
-use crate::num::real::{F64x4, M4};
+use crate::num::real::{F64x4, M4, Real};
 use crate::ray4::{Ray4, gather3, scatter3};
 use wide::{f32x4, i32x4};
 
@@ -93,11 +93,11 @@ pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
         1.0,
     );
     let hit = f.hit & certify(f.t, f.e);
-    let t = f.t.to_f32();
+    let (h, par) = (hit.lanes(), f.parallel.lanes());
     let class = |i: usize| {
-        if hit.0[i] {
+        if h[i] {
             0
-        } else if f.parallel.0[i] {
+        } else if par[i] {
             1
         } else {
             2
@@ -105,7 +105,7 @@ pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
     };
     let mut out = PlaneHit4 {
         class: i32x4::from([0, 1, 2, 3].map(class)),
-        t: f32x4::from([0, 1, 2, 3].map(|i| if hit.0[i] { t[i] } else { f32::NAN })),
+        t: f32x4::from(F64x4::select(hit, f.t, F64x4::splat(f64::NAN)).to_f32()),
     };
     let done = hit | f.parallel | f.in_plane;
     if !done.all() {
@@ -121,7 +121,7 @@ impl PlaneHit4 {
         let rays = ray.to_rays();
         let (a, n) = (scatter3(p.point), scatter3(p.normal));
         let (mut class, mut t) = (self.class.to_array(), self.t.to_array());
-        for i in (0..4).filter(|&i| !done.0[i]) {
+        for i in (0..4).filter(|&i| !done.lanes()[i]) {
             (class[i], t[i]) = match reference::escalate(&rays[i], &Plane::new(a[i], n[i])) {
                 PlaneHit::Hit(x) => (0, x),
                 PlaneHit::Parallel => (1, f32::NAN),

@@ -29,10 +29,21 @@
 //!   `|γ̂| > E_γ` certifies no root, and `m_β = m_γ = 0` the whole line.
 //!
 //! The roots after pbrt-v4's `Quadratic`: `s = √Δ`, `q = −½(β +
-//! sign(β̂)s)`, roots `q/α` and `γ/q`, with `E_s = E_Δ/ŝ + 2u ŝ`,
-//! `E_q = ½(E_β + E_s) + 2u|q̂|`, and each quotient bounded as in
-//! [`crate::sphere::kernel`]: `|x̂/ŷ − x/y| ≤ (|x̂|E_y + |ŷ|E_x) / (|ŷ|(|ŷ| −
-//! E_y))` plus `2u|t̂|`. A root exactly 0 (`γ = 0` term by term) is `+0`.
+//! sign(β̂)s)`, roots `q/α` and `γ/q`. Where α = 0 exactly, `Δ̂ = β̂²`, so
+//! `ŝ = |β̂|` (the square root of a rounded square is exact) and `q̂ = −β̂`:
+//! `γ/q` is then the linear root `−γ/β`, with `E_q = E_β`. Otherwise
+//! `E_s = E_Δ/ŝ + 2u ŝ` and `E_q = ½(E_β + E_s) + 2u|q̂|`.
+//!
+//! Division is the slowest operation here, so there is one: `ρ = 1/(q̂ α̂
+//! ŝ)` (α̂ taken as 1 where α = 0), from which `1/α̂ = q̂ŝρ`, `1/q̂ = α̂ŝρ`
+//! and `1/ŝ = q̂α̂ρ`, each within `4u` relatively. That product is of degree
+//! nine in the inputs and may leave f64's range, so the filter certifies
+//! roots only where `2⁻¹⁰⁰⁰ < |q̂α̂ŝ| < 2¹⁰⁰⁰`. The quotients, computed as
+//! products with the reciprocals, are each within `6u|t̂|` of `x̂/ŷ`, and
+//! `|x̂/ŷ − x/y| ≤ (|x̂/ŷ| E_y + E_x) / (|ŷ| − E_y)`; the filter certifies a
+//! root only where `E_y/|ŷ| ≤ 1/4`, and bounds `1/(1 − x)` by `1 + 2x`. A
+//! root exactly 0 (`γ = 0` term by term) is `+0`. The evaluation of the
+//! bounds themselves is covered by a factor `1 + 2⁻⁴⁰`.
 //!
 //! # Range
 //!
@@ -50,17 +61,17 @@ pub struct Filtered<L: Real> {
     /// Certified: two roots `t0`, `t1` (unsorted; each still needs
     /// [`certify`](crate::num::certify::certify)).
     pub two: L::Mask,
-    /// Certified: one linear root `t0` (α = 0).
+    /// Certified: one linear root `t1` (α = 0).
     pub linear: L::Mask,
     /// Certified: no root.
     pub none: L::Mask,
     /// Certified: the line lies on the surface.
     pub all: L::Mask,
-    /// `q/α`, or the linear root.
+    /// `q/α`.
     pub t0: L,
     /// A bound on `t0`'s error.
     pub e0: L,
-    /// `γ/q`.
+    /// `γ/q`, which is the linear root `−γ/β` where α = 0.
     pub t1: L,
     /// A bound on `t1`'s error.
     pub e1: L,
@@ -137,6 +148,10 @@ pub fn coefficients<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3]) -> [(L, L); 3] {
 /// let cyl = [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
 /// let f = filter::<f64>(&cyl, [-5.0, 0.0, 0.0], [1.0, 0.0, 0.0], 1.0);
 /// assert!(f.two && (f.t0, f.t1) == (6.0, 4.0));
+/// // The paraboloid z = x² + y² along its axis: α = 0, the root t1.
+/// let bowl = [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0];
+/// let f = filter::<f64>(&bowl, [0.0, 0.0, -2.0], [0.0, 0.0, 1.0], 1.0);
+/// assert!(f.linear && f.t1 == 2.0);
 /// // Along the axis α = β = 0, and γ = −1: no root, certain.
 /// let f = filter::<f64>(&cyl, [0.0; 3], [0.0, 0.0, 1.0], 1.0);
 /// assert!(f.none && !f.two && !f.linear && !f.all);
@@ -160,30 +175,32 @@ pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filter
     let none = (quad & (-ed).gt(disc)) | (lin & beta_zero & gamma.abs().gt(eg));
     let all = lin & beta_zero & mg.eq(zero);
 
-    // Two roots.
+    let one = L::splat(1.0);
+    let alpha = L::select(lin, one, alpha);
     let s = disc.sqrt();
-    let es = ed / s + c(2.0) * s;
     let q = -(beta + s.copysign(beta)) * half;
-    let qa = q.abs();
-    let eq = (eb + es) * half + c(2.0) * qa;
-    let aa = alpha.abs();
-    let r0 = q / alpha;
-    let e0 = (qa * ea + aa * eq) / (aa * (aa - ea)) + c(2.0) * r0.abs();
-    let r1 = gamma / q + zero;
-    let e1 = (gamma.abs() * eq + qa * eg) / (qa * (qa - eq)) + c(2.0) * r1.abs();
-    let e1 = L::select(qa.gt(eq), e1, inf);
-    // One linear root.
-    let ba = beta.abs();
-    let rl = -gamma / beta + zero;
-    let el = (gamma.abs() * eb + ba * eg) / (ba * (ba - eb)) + c(2.0) * rl.abs();
+    let p = q * alpha * s;
+    let in_range = p.abs().gt(L::splat(2f64.powi(-1000))) & L::splat(2f64.powi(1000)).gt(p.abs());
+    let rho = one / p;
+    let (ia, iq, is) = (q * s * rho, alpha * s * rho, q * alpha * rho);
+    let slack = L::splat(1.0 + 2f64.powi(-40));
+    let es = ed * is * slack + c(2.0) * s;
+    let eq = L::select(lin, eb, (eb + es) * half + c(2.0) * q.abs());
+    let bound = |t: L, ey: L, ex: L, iy: L| {
+        let x = ey * iy.abs();
+        let e = (t.abs() * ey + ex) * iy.abs() * (one + x + x) * slack + c(6.0) * t.abs();
+        L::select(in_range & L::splat(0.25).gt(x), e, inf)
+    };
+    let t0 = q * ia;
+    let t1 = gamma * iq + zero;
     Filtered {
         two,
         linear,
         none,
         all,
-        t0: L::select(linear, rl, r0),
-        e0: L::select(linear, el, e0),
-        t1: r1,
-        e1,
+        t0,
+        e0: bound(t0, ea, eq, ia),
+        t1,
+        e1: bound(t1, eq, eg, iq),
     }
 }

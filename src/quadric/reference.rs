@@ -62,8 +62,8 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
             (f.t1, f.t0)
         };
         (QuadricHit::Two(t0 as f32, t1 as f32), Stage::Filter)
-    } else if f.linear && certify(f.t0, f.e0) {
-        (QuadricHit::One(f.t0 as f32), Stage::Filter)
+    } else if f.linear && certify(f.t1, f.e1) {
+        (QuadricHit::One(f.t1 as f32), Stage::Filter)
     } else if f.none {
         (QuadricHit::None, Stage::Filter)
     } else if f.all {

@@ -88,30 +88,31 @@ pub struct QuadricHit4 {
 pub fn intersect(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
     let w = |v: f32x4| F64x4::from_f32(v.to_array());
     let f = kernel::filter(&q.coeffs.map(w), ray.origin.map(w), ray.dir.map(w), 1.0);
-    let ok0 = certify(f.t0, f.e0);
-    let two = f.two & ok0 & certify(f.t1, f.e1);
-    let one = f.linear & ok0;
+    let ok1 = certify(f.t1, f.e1);
+    let two = f.two & certify(f.t0, f.e0) & ok1;
+    let one = f.linear & ok1;
     // Disjoint enclosures are in the exact order; overlapping ones round
-    // to the same f32.
-    let swap = two & f.t0.gt(f.t1);
-    let lo = F64x4::select(swap, f.t1, f.t0).to_f32();
-    let hi = F64x4::select(swap, f.t0, f.t1).to_f32();
+    // to the same f32. The linear root is t1.
+    let swap = (two & f.t0.gt(f.t1)) | one;
+    let nan = F64x4::splat(f64::NAN);
+    let lo = F64x4::select(two | one, F64x4::select(swap, f.t1, f.t0), nan);
+    let hi = F64x4::select(two, F64x4::select(swap, f.t0, f.t1), lo);
+    let (t, o, a) = (two.lanes(), one.lanes(), f.all.lanes());
     let class = |i: usize| {
-        if two.0[i] {
+        if t[i] {
             2
-        } else if one.0[i] {
+        } else if o[i] {
             1
-        } else if f.all.0[i] {
+        } else if a[i] {
             3
         } else {
             0
         }
     };
-    let root = |i: usize, t: &[f32; 4]| if (two | one).0[i] { t[i] } else { f32::NAN };
     let mut out = QuadricHit4 {
         class: i32x4::from([0, 1, 2, 3].map(class)),
-        t0: f32x4::from([0, 1, 2, 3].map(|i| root(i, &lo))),
-        t1: f32x4::from([0, 1, 2, 3].map(|i| if one.0[i] { lo[i] } else { root(i, &hi) })),
+        t0: f32x4::from(lo.to_f32()),
+        t1: f32x4::from(hi.to_f32()),
     };
     let done = two | one | f.none | f.all;
     if !done.all() {
@@ -131,7 +132,7 @@ impl QuadricHit4 {
             self.t0.to_array(),
             self.t1.to_array(),
         );
-        for i in (0..4).filter(|&i| !done.0[i]) {
+        for i in (0..4).filter(|&i| !done.lanes()[i]) {
             let quadric = Quadric::new(k.map(|c| c[i]));
             (class[i], t0[i], t1[i]) = match reference::escalate(&rays[i], &quadric) {
                 QuadricHit::None => (0, f32::NAN, f32::NAN),

@@ -35,17 +35,24 @@
 //! `q = −(b + sign(b̂)s)`, and the roots are `q/a` and `c/q`, sorted; the
 //! sign is taken from `b̂` even where `b`'s own is uncertain, which only
 //! costs accuracy, never validity, since both signs give the same roots.
+//! Division is the slowest operation here, so there is one: `ρ = 1/(q̂ â
+//! ŝ)`, from which `1/â = q̂ŝρ`, `1/q̂ = âŝρ` and `1/ŝ = q̂âρ`, each within
+//! `4u` relatively.
 //!
 //! * `ŝ = fl(√Δ̂)`: `|√Δ − √Δ̂| ≤ E_Δ/√Δ̂` (from `√x − √(x − e) ≤ e/√x`),
 //!   so `E_s = E_Δ/ŝ + 2u ŝ`.
 //! * `|q̂| = fl(|b̂| + ŝ)` (no cancellation): `E_q = E_b + E_s + 2u|q̂|`.
-//! * `q/a`: `|q̂/â − q/a| ≤ (|q̂| E_a + â E_q) / (â(â − E_a))`.
-//! * `c/q`: `|ĉ/q̂ − c/q| ≤ (|ĉ| E_q + |q̂| E_c) / (|q̂|(|q̂| − E_q))`,
-//!   meaningful only where `|q̂| > E_q`.
+//! * `t₀ = q/a`, computed as `q̂·(1/â)` within `6u|t̂₀|` of `q̂/â`:
+//!   `|q̂/â − q/a| ≤ (|q̂/â| E_a + E_q) / (â − E_a)`.
+//! * `t₁ = c/q`, computed as `ĉ·(1/q̂)`: `|ĉ/q̂ − c/q| ≤ (|ĉ/q̂| E_q +
+//!   E_c) / (|q̂| − E_q)`. The filter certifies a root only where
+//!   `x = E_q/|q̂| ≤ 1/4`, and bounds `1/(1 − x)` by `1 + 2x`.
 //!
-//! and each quotient's own rounding, `2u|t̂|`. [`certify`] then decides
-//! each root. Every constant above is at least twice what the proof needs:
-//! `E_a = 4u â`, `E_b = 8u m_b`, `E_c = 12u m_c`.
+//! The relative errors of the reciprocals, of `t̂` against the exact
+//! quotient and of the evaluation of the bounds themselves are a few `u`
+//! each; they are covered by a factor `1 + 2⁻⁴⁰` and by the `2⁻⁵¹|t̂|`
+//! that [`certify`] adds. Every constant above is at least twice what the
+//! proof needs: `E_a = 4u â`, `E_b = 8u m_b`, `E_c = 12u m_c`.
 //!
 //! # Range
 //!
@@ -112,16 +119,21 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Fi
     let two = line & disc.gt(ed);
 
     let (ea, eb, ec) = (k(4.0) * a, k(8.0) * mb, k(12.0) * mc);
+    let slack = L::splat(1.0 + 2f64.powi(-40));
     let s = disc.sqrt();
-    let es = ed / s + u2 * s;
     let q = -(b + s.copysign(b));
     let qa = q.abs();
+    let rho = L::splat(1.0) / (q * a * s);
+    let (ia, iq, is) = (q * s * rho, a * s * rho, q * a * rho);
+    let es = ed * is * slack + u2 * s;
     let eq = eb + es + u2 * qa;
-    let t0 = q / a;
-    let e0 = (qa * ea + a * eq) / (a * (a - ea)) + u2 * t0.abs();
-    let t1 = cq / q;
-    let e1 = (cq.abs() * eq + qa * ec) / (qa * (qa - eq)) + u2 * t1.abs();
-    let e1 = L::select(qa.gt(eq), e1, L::splat(f64::INFINITY));
+    let t0 = q * ia;
+    let e0 = (t0.abs() * ea + eq) * ia * L::splat(1.0 + 2f64.powi(-20)) + k(6.0) * t0.abs();
+    let t1 = cq * iq;
+    let iqa = iq.abs();
+    let x = eq * iqa;
+    let e1 = (t1.abs() * eq + ec) * iqa * (L::splat(1.0) + x + x) * slack + k(6.0) * t1.abs();
+    let e1 = L::select(L::splat(0.25).gt(x), e1, L::splat(f64::INFINITY));
     Filtered {
         none,
         two,

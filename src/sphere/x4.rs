@@ -98,12 +98,13 @@ pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
     // Disjoint enclosures are in the exact order; overlapping ones round
     // to the same f32.
     let swap = f.t0.gt(f.t1);
-    let lo = F64x4::select(swap, f.t1, f.t0).to_f32();
-    let hi = F64x4::select(swap, f.t0, f.t1).to_f32();
+    let nan = F64x4::splat(f64::NAN);
+    let lo = F64x4::select(two, F64x4::select(swap, f.t1, f.t0), nan);
+    let hi = F64x4::select(two, F64x4::select(swap, f.t0, f.t1), nan);
     let mut out = SphereHit4 {
-        class: i32x4::from(two.0.map(|m| if m { 2 } else { 0 })),
-        t0: f32x4::from([0, 1, 2, 3].map(|i| if two.0[i] { lo[i] } else { f32::NAN })),
-        t1: f32x4::from([0, 1, 2, 3].map(|i| if two.0[i] { hi[i] } else { f32::NAN })),
+        class: i32x4::from(two.lanes().map(|m| if m { 2 } else { 0 })),
+        t0: f32x4::from(lo.to_f32()),
+        t1: f32x4::from(hi.to_f32()),
     };
     let done = f.none | two;
     if !done.all() {
@@ -123,7 +124,7 @@ impl SphereHit4 {
             self.t0.to_array(),
             self.t1.to_array(),
         );
-        for i in (0..4).filter(|&i| !done.0[i]) {
+        for i in (0..4).filter(|&i| !done.lanes()[i]) {
             let (k, a, b) = match reference::escalate(&rays[i], &Sphere::new(c[i], r[i])) {
                 SphereHit::None => (0, f32::NAN, f32::NAN),
                 SphereHit::Tangent(t) => (1, t, t),
