@@ -106,12 +106,12 @@ fn self_report(case: &Case) -> CaseReport {
     r.expect("the exact answer passes its own check")
 }
 
+/// Only the camera has a stated domain; the other kernels are correctly
+/// rounded on every finite input.
 fn in_domain(case: &Case) -> bool {
     match case {
-        Case::Sphere(ray, s) => sphere::in_domain(ray, s),
-        Case::Plane(ray, p) => plane::in_domain(ray, p),
-        Case::Quadric(ray, q) => quadric::in_domain(ray, q),
         Case::Camera(p, _) => camera::in_domain(p),
+        _ => true,
     }
 }
 

@@ -135,18 +135,19 @@ mod sphere {
     use super::*;
     use glam::Vec3;
     use rayoracle::Ray;
-    use rayoracle::sphere::{
-        Sphere, SphereHit, band, condition_at, double, exact, scaled_discriminant, textbook,
-    };
+    use rayoracle::sphere::{Sphere, SphereHit, condition_at, double, exact, textbook};
 
     fn exact_of(c: &(Ray, Sphere)) -> SphereHit {
         exact::intersect(&c.0, &c.1).unwrap()
     }
 
-    /// Far outside the reference's band, and each exact root with
-    /// `κ < 10⁴`.
+    /// The exact discriminant clear of its terms (`|b² − ac| > 2⁻³⁰(b² +
+    /// |ac|)`, so any careful kernel gets the class), and each exact root
+    /// with `κ < 10⁴`.
     fn well_conditioned((ray, s): &(Ray, Sphere), e: &SphereHit) -> bool {
-        scaled_discriminant(ray, s).abs() > 16.0 * band(ray, s)
+        let q = exact::quadratic(ray, s).unwrap();
+        let (a, b2, c) = (q.alpha.to_f64(), q.beta.to_f64(), q.gamma.to_f64());
+        q.discriminant().to_f64().abs() > 2f64.powi(-30) * (b2 * b2 + 4.0 * (a * c).abs())
             && roots(e)
                 .iter()
                 .all(|&t| condition_at(ray, s, t as f64) < 1e4)
@@ -271,20 +272,20 @@ mod quadric {
     use super::*;
     use glam::Vec3;
     use rayoracle::Ray;
-    use rayoracle::quadric::{Quadric, QuadricHit, band, condition, double, exact, textbook};
+    use rayoracle::quadric::{Quadric, QuadricHit, condition, double, exact, textbook};
 
     fn exact_of(c: &(Ray, Quadric)) -> QuadricHit {
         exact::intersect(&c.0, &c.1).unwrap()
     }
 
-    /// Far outside the band (the exact α, β, γ, with `β² − 4αγ` in f64:
-    /// its error is far below the band), and every root with `κ < 10⁴`
+    /// The discriminant clear of its terms (the exact α, β, γ, with
+    /// `|β² − 4αγ| > 2⁻³⁰(β² + 4|αγ|)` in f64), and every root with `κ < 10⁴`
     /// (which also keeps α away from 0 unless it is 0: the far root's κ
     /// grows as `Σ|α terms| / |α|`).
     fn well_conditioned((ray, q): &(Ray, Quadric), _: &QuadricHit) -> bool {
         let e = exact::quadratic(ray, q).unwrap();
         let (a, b, c) = (e.alpha.to_f64(), e.beta.to_f64(), e.gamma.to_f64());
-        (b * b - 4.0 * a * c).abs() > 16.0 * band(ray, q)
+        (b * b - 4.0 * a * c).abs() > 2f64.powi(-30) * (b * b + 4.0 * (a * c).abs())
             && condition(ray, q).iter().all(|&k| k < 1e4)
     }
 

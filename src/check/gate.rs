@@ -121,8 +121,8 @@ pub enum Semantics {
 /// root, plus what the kernel's working precision (relative, `2⁻²⁴` for
 /// one f32 rounding) makes unavoidable. A class may differ from the exact
 /// one when the exact classification margin is within `band_scale` times
-/// rayoracle's own band (which is for double-word arithmetic, about
-/// `2⁻⁴⁴`: a plain f32 kernel needs about `2²⁰`), with one exception: when
+/// the unit band, `2⁻⁴⁴` of the terms the margin is made of (a plain f32
+/// kernel needs about `2²⁰` of it), with one exception: when
 /// every input is an integer of magnitude at most 16, an exactly degenerate
 /// case (a ray in the plane, an exact tangent, α = 0) must be classified
 /// exactly, since any kernel computes its margin exactly there.
@@ -141,7 +141,7 @@ pub struct Declared {
     pub bits: f64,
     /// The kernel's relative working precision.
     pub precision: f64,
-    /// Class tolerance, as a multiple of rayoracle's band.
+    /// Class tolerance, as a multiple of the unit band.
     pub band_scale: f64,
     /// Feed only unit-length directions (normalised in f32 first).
     pub unit_dirs_only: bool,
@@ -149,7 +149,7 @@ pub struct Declared {
 
 impl Declared {
     /// A careful f32 kernel: 2 bits, a few f32 roundings of working
-    /// precision (`2⁻²²`), a band of `2²⁰` times rayoracle's.
+    /// precision (`2⁻²²`), a band of `2²⁰` units.
     pub fn f32(semantics: Semantics) -> Declared {
         Declared {
             semantics,
@@ -160,8 +160,8 @@ impl Declared {
         }
     }
 
-    /// rayoracle's own promise for its reference: correctly rounded up to
-    /// one ulp, double-word precision, its own band.
+    /// A kernel correctly rounded up to one ulp, with about `2⁻⁴²` of
+    /// working precision and the unit band.
     pub fn exact(semantics: Semantics) -> Declared {
         Declared {
             semantics,
@@ -981,15 +981,30 @@ fn in_band(margin: f64, band: f64, c: &Case) -> bool {
 /// `aΔ = (aR)² − |af − bd|²`: `a²(R² + R|f|)·2⁻⁴⁴` before `band_scale`.
 /// Near a tangent `|af − bd| ≈ aR`, and a careful kernel forms it with an
 /// error of about `a|f|` times its precision, so its square errs by about
-/// `2a²R|f|` times that. rayoracle's own [`sphere::band`] is wider (it
-/// bounds the error by `(a|f|)²`, which its double-word reference can
-/// afford); used here it would forgive a plain f32 kernel every class of a
-/// far sphere.
+/// `2a²R|f|` times that. A band from `(a|f|)²` instead would forgive a
+/// plain f32 kernel every class of a far sphere.
 fn sphere_band(ray: &Ray, s: &Sphere) -> f64 {
     let d = ray.dir.as_dvec3();
     let f = ray.origin.as_dvec3() - s.center.as_dvec3();
     let (a, r) = (d.length_squared(), f64::from(s.radius).abs());
     a * a * (r * r + r * f.length()) * 2f64.powi(-44)
+}
+
+/// The plane's unit band on the margin `d·n`: `2⁻⁴⁴ Σ|dᵢnᵢ|`.
+fn plane_band(ray: &Ray, p: &Plane) -> f64 {
+    let s: f64 = (0..3)
+        .map(|i| (f64::from(ray.dir[i]) * f64::from(p.normal[i])).abs())
+        .sum();
+    s * 2f64.powi(-44)
+}
+
+/// The quadric's unit band on the discriminant `β² − 4αγ`: `2⁻⁴⁰((Σ|β
+/// terms|)² + 4 Σ|α terms| Σ|γ terms|)`.
+fn quadric_band(ray: &Ray, q: &Quadric) -> f64 {
+    let (a, b, g) = quadric::terms(ray, q);
+    let sum = |x: &[f64]| x.iter().map(|x| x.abs()).sum::<f64>();
+    let (sa, sb, sg) = (sum(&a), sum(&b), sum(&g));
+    (sb * sb + 4.0 * sa * sg) * 2f64.powi(-40)
 }
 
 /// `Σ |kᵢ dⱼ dₖ|` over α's six terms: the scale α's rounding error is
@@ -1059,7 +1074,7 @@ fn exact_plane(d: &Declared, ray: &Ray, p: &Plane) -> Option<Exact> {
         roots: (!matches!(exact, PlaneHit::InPlane)).then(|| exact.roots().as_slice().to_vec()),
         in_band: in_band(
             margin,
-            plane::band(ray, p) * d.band_scale,
+            plane_band(ray, p) * d.band_scale,
             &Case::Plane(*ray, *p),
         ),
         alpha_small: false,
@@ -1087,7 +1102,7 @@ fn exact_quadric(d: &Declared, ray: &Ray, q: &Quadric) -> Option<Exact> {
         roots: (!matches!(exact, QuadricHit::All)).then(|| exact.roots().as_slice().to_vec()),
         in_band: in_band(
             margin,
-            quadric::band(ray, q) * d.band_scale,
+            quadric_band(ray, q) * d.band_scale,
             &Case::Quadric(*ray, *q),
         ),
         alpha_small: alpha_small && !small_integers(&Case::Quadric(*ray, *q)),

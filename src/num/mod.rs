@@ -1,13 +1,17 @@
-//! Numerical building blocks shared, operation for operation, by the scalar
-//! reference kernels and the four-lane SIMD kernels.
+//! Numerical building blocks.
 //!
-//! Bit-identity between the two paths is by construction: every helper here is
-//! generic over [`Lane`] (implemented for `f32` and `wide::f32x4`) and uses only
-//! IEEE-754 operations that are correctly rounded on both paths: `+`, `−`, `×`,
-//! `÷` and `√`. Nothing here calls `mul_add` (fused on one build, unfused on
-//! another), `recip` or `recip_sqrt` (approximations), and rustc never contracts
-//! `a * b + c` into an FMA, so a scalar and a SIMD evaluation of the same
-//! expression tree give the same bits whatever target features are enabled.
+//! The plane, sphere and quadric kernels evaluate in f64 with a proven error
+//! bound ([`real`], [`certify`]): the [`Real`] trait runs the same
+//! expression on one lane (`f64`) or four ([`real::F64x4`]), and every
+//! operation is one correctly rounded IEEE-754 operation (`+`, `−`, `×`,
+//! `÷`, `√`). Nothing here calls `mul_add` (fused on one build, unfused on
+//! another), `recip` or `recip_sqrt` (approximations), and rustc never
+//! contracts `a * b + c` into an FMA, so every build computes the same
+//! bits; and since what a kernel returns is correctly rounded, scalar and
+//! SIMD agree by construction.
+//!
+//! The camera still evaluates in double-word f32 arithmetic, written once
+//! over [`Lane`] (implemented for `f32` and `wide::f32x4`):
 //!
 //! * [`lane`]: the [`Lane`] trait and its two implementations.
 //! * [`eft`]: error-free transformations (Knuth's TwoSum, Dekker's
@@ -24,5 +28,6 @@ pub mod scale;
 
 pub use ff::Ff;
 pub use lane::Lane;
+pub use real::Real;
 pub mod certify;
 pub mod real;

@@ -89,8 +89,8 @@ pub fn normalized3<L: Lane>(v: [L; 3]) -> ([L; 3], Scale<L>) {
     (s.apply3(v), s)
 }
 
-/// Whether a magnitude is zero or within `[2^lo, 2^hi]`: the kernels'
-/// domains ([`crate::plane::in_domain`] and the others) are stated with it.
+/// Whether a magnitude is zero or within `[2^lo, 2^hi]`: the camera's
+/// domain ([`crate::camera::in_domain`]) is stated with it.
 /// A product of f32 values is formed exactly by Dekker's TwoProduct only
 /// while it is above about `2⁻¹⁰³` (its error term must not underflow).
 ///

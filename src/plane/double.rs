@@ -1,14 +1,12 @@
 //! The plane in `f64`: seed Ex. 1.2a, `t = ((a − o)·n)/(d·n)`, with every
 //! operation in plain `f64` and the root rounded once to `f32`.
 //!
-//! **A variant for `rayoracle report`, not an oracle and not for
-//! production.** It answers "what if the reference had simply been written
-//! in double precision?": the same formulation as
-//! [`super::reference`](mod@super::reference) (the difference `a − o`, the
-//! two dot products, one quotient), but each quantity is a plain `f64`
-//! instead of a double-word `f32`, and there is no prescaling; none is
-//! needed, since a product of two `f32`s (`10⁻⁹⁰` to `10⁷⁷`) is always in
-//! `f64`'s range.
+//! **A baseline for `rayoracle report`, not an oracle and not for
+//! production.** It answers "what does the reference's certification
+//! cost?": the same arithmetic as the reference's
+//! [filter](super::kernel) (the difference `a − o`, the two dot products,
+//! one quotient), without the error bound. A product of two `f32`s
+//! (`10⁻⁹⁰` to `10⁷⁷`) is always in `f64`'s range.
 //!
 //! Each product `dᵢnᵢ` is exact in `f64` (24 + 24 bits), so `d·n` carries
 //! two roundings of about `2⁻⁵³` relative to `Σ|dᵢnᵢ|`; `a − o` is exact

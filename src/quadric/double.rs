@@ -1,11 +1,10 @@
-//! The quadric in `f64`: the reference's formulation (seed Ex. 1.4a,
-//! corrected, solved by pbrt-v4's `Quadratic`) with every operation in
-//! plain `f64` and each root rounded once to `f32`.
+//! The quadric in plain `f64`: the corrected formulation (seed Ex. 1.4a,
+//! solved by pbrt-v4's `Quadratic`) with every operation in `f64`, each
+//! root rounded once to `f32`, and no error bound.
 //!
-//! **A variant for `rayoracle report`, not an oracle and not for
-//! production.** It answers "what if the reference had simply been written
-//! in double precision?". The steps are those of
-//! [`super::reference`](mod@super::reference) (see the [module docs](super)):
+//! **A baseline for `rayoracle report`, not an oracle and not for
+//! production.** It answers "what does the reference's certification
+//! cost?". The steps (see the [module docs](super)):
 //!
 //! * α, β, γ of the corrected expansion, term by term (the same evaluation
 //!   as [`super::textbook`], at `f64`);
@@ -14,10 +13,9 @@
 //! * otherwise `Δ = β² − 4αγ`, `q = −½(β + sign(β)√Δ)`, `t₀ = q/α`,
 //!   `t₁ = γ/q`, sorted; `Δ = 0` gives `One(−β/2α)`.
 //!
-//! Each quantity is one plain `f64` instead of a double-word `f32`, the
-//! discriminant is a plain `β·β − 4α·γ` (no exact products, no fused
-//! multiply-add as pbrt's `DifferenceOfProducts` uses), and nothing is
-//! prescaled: a term of γ is at most a product of three `f32`s and `β²` of
+//! The discriminant is a plain `β·β − 4α·γ` (no fused multiply-add as
+//! pbrt's `DifferenceOfProducts` uses), and nothing is prescaled: a term of
+//! γ is at most a product of three `f32`s and `β²` of
 //! degree 6, so every quantity stays in `f64`'s normal range for finite
 //! `f32` inputs.
 //!

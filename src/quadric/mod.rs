@@ -25,29 +25,23 @@
 //!   - `α = 0, β ≠ 0`: the linear root `−γ/β`, [`QuadricHit::One`];
 //!   - `α = β = 0`: `γ = 0` means the line lies on the surface,
 //!     [`QuadricHit::All`]; otherwise [`QuadricHit::None`];
-//!   - otherwise the discriminant `β² − 4αγ` as pbrt's
-//!     `DifferenceOfProducts` (here exact products and a double-word
-//!     difference), `q = −½(β + sign(β)√Δ)`, `t₀ = q/α`, `t₁ = γ/q`;
+//!   - otherwise the discriminant `β² − 4αγ` (with a proven bound on its
+//!     error, [`kernel`]), `q = −½(β + sign(β)√Δ)`, `t₀ = q/α`,
+//!     `t₁ = γ/q`;
 //! * in 1.4b the root is written `((o−C)·d ± √…)/d²`; the sign of `(o−C)·d`
 //!   is wrong (it must be `−(o−C)·d`), and `R²` is again missing its `d·d`
 //!   factor. [`Quadric::from_sphere`] builds the sphere's coefficients, and
 //!   the tests check that the quadric path classifies it like the sphere.
 //!
-//! # Accuracy ([`reference`](mod@reference))
+//! # Accuracy
 //!
-//! The coefficients are prescaled by a common power of two (the surface does
-//! not change) and `d` into `[1, 2)` (roots scale back exactly). α, β and γ
-//! are sums of exact two-factor products scaled by a coefficient in
-//! double-word arithmetic, so each is accurate to about `2⁻⁴⁶` of the sum of
-//! its terms' magnitudes; the solve is double-word and rounded once. The
-//! classification band and root bound follow ([`band`], [`ROOT_ULPS`]).
-//! The origin is not prescaled, so the bounds hold on a stated domain
-//! ([`in_domain`]; and each non-zero root's hit point must lie at a
-//! displacement `|t|·max|dᵢ|` in `[2⁻¹⁰⁰, 2¹²⁷)` from the origin, since the
-//! kernel works in units where a root is that displacement):
-//! `|o| < 2⁴⁰`, and the products `β²` and `αγ`, measured
-//! by the sums of their terms' magnitudes after the prescaling, must be 0 or
-//! within `[2⁻¹⁰⁰, 2¹⁰⁰]`.
+//! [`reference::intersect`](mod@reference) and [`x4`] return the exact class
+//! and every root correctly rounded to `f32`, for every finite input. The
+//! [filter](kernel) evaluates α, β, γ and the discriminant in f64 with the
+//! error bound derived there and certifies what it decides; a double root,
+//! an α that is 0 in exact arithmetic but not term by term, a line on the
+//! surface or a root too close to a rounding boundary goes to the exact
+//! oracle ([`exact`]).
 
 pub mod double;
 pub mod exact;
@@ -181,16 +175,6 @@ impl Intersection for QuadricHit {
     }
 }
 
-/// The documented root error bound, in ulps, for condition number `kappa`.
-///
-/// ```
-/// assert_eq!(rayoracle::quadric::ROOT_ULPS(1.0).floor(), 1.0);
-/// ```
-#[allow(non_snake_case)]
-pub fn ROOT_ULPS(kappa: f64) -> f64 {
-    1.0 + kappa * 2f64.powi(-16)
-}
-
 /// The terms of α, β, γ in f64 (each product of f32 inputs is exact in f64
 /// only approximately; these are for bounds, not decisions).
 pub(crate) fn terms(ray: &Ray, q: &Quadric) -> ([f64; 6], [f64; 12], [f64; 10]) {
@@ -237,76 +221,6 @@ fn terms64(k: &[f64; 10], o: &[f64; 3], d: &[f64; 3]) -> ([f64; 6], [f64; 12], [
         k[9],
     ];
     (alpha, beta, gamma)
-}
-
-/// The accuracy domain of [`reference::intersect`](mod@reference): `|oᵢ| <
-/// 2⁴⁰`, and, with the coefficients and `d` prescaled as the kernel does,
-/// `Σ|α terms|`, `Σ|β terms|`, `Σ|γ terms|` each 0 or within `[2⁻¹⁰⁰,
-/// 2⁵⁰]` and `(Σ|β terms|)²` and `Σ|α terms| · Σ|γ terms|` each 0 or within
-/// `[2⁻¹⁰⁰, 2¹⁰⁰]` ([`crate::num::scale::in_range`]), so that the
-/// discriminant `β² − 4αγ` is formed from exact products; and what the
-/// prescaling of the coefficients rounds away must be negligible against
-/// each of those sums ([`crate::num::scale::crush_loss`]).
-///
-/// ```
-/// use rayoracle::{Ray, quadric::{Quadric, in_domain}};
-/// use glam::Vec3;
-/// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
-/// assert!(in_domain(&Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), &cyl));
-/// let unit = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
-/// assert!(!in_domain(&Ray::new(Vec3::new(1e-40, 0.0, 0.0), Vec3::Z), &unit));
-/// ```
-pub fn in_domain(ray: &Ray, q: &Quadric) -> bool {
-    use crate::num::scale::{Scale, in_range, negligible};
-    if ray
-        .origin
-        .to_array()
-        .iter()
-        .any(|x| x.abs() >= 2f32.powi(40))
-    {
-        return false;
-    }
-    let sq = Scale::of_max(&q.coeffs);
-    let d = ray.dir.to_array();
-    let sd = Scale::of_max(&d);
-    let o = ray.origin.to_array().map(|x| x as f64);
-    // The terms with the prescaled inputs exactly (f64) and as the kernel
-    // rounds them (f32): their difference is what prescaling loses.
-    let exact_k = q.coeffs.map(|x| x as f64 * 2f64.powi(-sq.k));
-    let exact_d = d.map(|x| x as f64 * 2f64.powi(-sd.k));
-    let (a, b, g) = terms64(&exact_k, &o, &exact_d);
-    let (ra, rb, rg) = terms64(
-        &q.coeffs.map(|x| sq.apply(x) as f64),
-        &o,
-        &sd.apply3(d).map(|x| x as f64),
-    );
-    let sum = |t: &[f64]| t.iter().map(|x| x.abs()).sum::<f64>();
-    let loss = |t: &[f64], r: &[f64]| t.iter().zip(r).map(|(x, y)| (x - y).abs()).sum::<f64>();
-    let (sa, sb, sg) = (sum(&a), sum(&b), sum(&g));
-    let lossless = negligible(loss(&a, &ra), sa)
-        && negligible(loss(&b, &rb), sb)
-        && negligible(loss(&g, &rg), sg);
-    let each = [sa, sb, sg].iter().all(|&s| in_range(s, -100, 50));
-    lossless && each && in_range(sb * sb, -100, 100) && in_range(sa * sg, -100, 100)
-}
-
-/// The classification band on the discriminant `β² − 4αγ`: the reference's
-/// class is only promised to match the exact one when the exact `|β² − 4αγ|`
-/// exceeds it, and `α = 0` is only recognised when the exact `|α|` is 0 or
-/// above `2⁻⁴⁴ Σ|α terms|`.
-///
-/// ```
-/// use rayoracle::{Ray, quadric::{Quadric, band}};
-/// use glam::Vec3;
-/// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
-/// assert!(band(&Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), &cyl) < 1e-9);
-/// ```
-pub fn band(ray: &Ray, q: &Quadric) -> f64 {
-    let (a, b, g) = terms(ray, q);
-    let sa: f64 = a.iter().map(|x| x.abs()).sum();
-    let sb: f64 = b.iter().map(|x| x.abs()).sum();
-    let sg: f64 = g.iter().map(|x| x.abs()).sum();
-    (sb * sb + 4.0 * sa * sg) * 2f64.powi(-40)
 }
 
 /// The condition number of each root with respect to the *terms* of α, β
@@ -363,7 +277,7 @@ pub fn condition(ray: &Ray, q: &Quadric) -> [f64; 2] {
 
 #[cfg(test)]
 mod tests {
-    use super::{Quadric, band, condition, terms};
+    use super::{Quadric, condition, terms};
     use crate::Ray;
     use glam::Vec3;
 
@@ -396,34 +310,6 @@ mod tests {
         }
     }
 
-    /// Each of the domain's conditions alone puts a case outside it.
-    #[test]
-    fn each_domain_condition_alone_excludes() {
-        use super::in_domain;
-        let p = |e: i32| 2f32.powi(e);
-        let at = |o: [f32; 3], d: [f32; 3], k: [f32; 10]| {
-            in_domain(&Ray::new(Vec3::from(o), Vec3::from(d)), &Quadric::new(k))
-        };
-        // In: α = 1, β = 2⁻⁴⁰, γ = −1.
-        let base = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, p(-40), 0.0, 0.0, -1.0];
-        assert!(at([0.0; 3], [1.0, 0.0, 0.0], base));
-        // (Σ|β terms|)² = 2⁻¹²⁰, below 2⁻¹⁰⁰, though Σ|β terms| is in range.
-        let mut k = base;
-        k[6] = p(-60);
-        assert!(!at([0.0; 3], [1.0, 0.0, 0.0], k));
-        // Σ|α terms| · Σ|γ terms| = 2⁻¹²⁰, though each is in range.
-        let k = [p(-60), 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, p(-60)];
-        assert!(!at([0.0; 3], [1.0, 0.0, 0.0], k));
-        // Only γ loses to the prescaling: 1.5·2⁻⁵⁰ beside 2⁹⁹ becomes the
-        // subnormal 1.5·2⁻¹⁴⁹, rounded to 2·2⁻¹⁴⁹, and x = 2³⁹ makes the
-        // loss 2⁻¹¹¹, against Σ|γ terms| ≈ 2⁻⁶⁰ (α = 1 and β = 0 are exact).
-        let mut k = [0.0; 10];
-        (k[1], k[6], k[9]) = (p(99), 1.5 * p(-50), p(39));
-        assert!(!at([p(39), 0.0, 0.0], [0.0, 1.0, 0.0], k));
-        k[6] = p(-50);
-        assert!(at([p(39), 0.0, 0.0], [0.0, 1.0, 0.0], k));
-    }
-
     /// A unit cylinder seen from x = −5 along 3x: α = 9, β = −30, γ = 25 − 1
     /// (Σ|γ terms| = 26), so the roots are 4/3 and 2.
     fn cylinder() -> (Ray, Quadric) {
@@ -431,15 +317,6 @@ mod tests {
             Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::new(3.0, 0.0, 0.0)),
             Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]),
         )
-    }
-
-    #[test]
-    fn the_band_by_hand() {
-        let (r, q) = cylinder();
-        assert_eq!(
-            band(&r, &q),
-            (30.0 * 30.0 + 4.0 * 9.0 * 26.0) * 2f64.powi(-40)
-        );
     }
 
     /// κ(t) = 3(Σ|α|t² + Σ|β||t| + Σ|γ|) / (|2αt + β| |t|): at t = 4/3,

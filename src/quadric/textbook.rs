@@ -15,8 +15,8 @@
 //! root `−γ/β`, or, when `β = 0` too, [`QuadricHit::All`] for `γ = 0` and
 //! [`QuadricHit::None`] otherwise. There is deliberately no guard for
 //! `α ≈ 0`. It exists so that the report can show what pbrt-v4's `Quadratic`
-//! in double-word arithmetic ([`super::reference`](mod@super::reference))
-//! buys, measured against [`super::exact`]. Where it goes wrong:
+//! with a proven bound ([`super::reference`](mod@super::reference)) buys,
+//! measured against [`super::exact`]. Where it goes wrong:
 //!
 //! * **α ≈ 0** (a ray nearly parallel to a cylinder's axis, nearly along a
 //!   paraboloid's): `β²/4α²` and `γ/α` are huge and nearly equal, and the

@@ -1,12 +1,10 @@
-//! The sphere in `f64`: the reference's formulation (seed Ex. 1.2b,
-//! corrected, solved after Ray Tracing Gems ch. 7) with every operation in
-//! plain `f64` and each root rounded once to `f32`.
+//! The sphere in plain `f64`: the corrected formulation (seed Ex. 1.2b,
+//! solved after Ray Tracing Gems ch. 7) with every operation in `f64` and
+//! each root rounded once to `f32`, and no error bound.
 //!
-//! **A variant for `rayoracle report`, not an oracle and not for
-//! production.** It answers "what if the reference had simply been written
-//! in double precision?". The steps are those of
-//! [`super::reference`](mod@super::reference) (see the [module docs](super)),
-//! with `f = o − C` and the quadratic `a t² + 2b t + c = 0`:
+//! **A baseline for `rayoracle report`, not an oracle and not for
+//! production.** It answers "what does the reference's certification
+//! cost?": with `f = o − C` and the quadratic `a t² + 2b t + c = 0`,
 //!
 //! ```text
 //! a = d·d,  b = f·d,  c = f·f − R²
@@ -14,20 +12,17 @@
 //! q = −(b + sign(b)·√(aΔ/a)),  t₀ = c/q,  t₁ = q/a
 //! ```
 //!
-//! but each quantity is one plain `f64` instead of a double-word `f32`, `c`
-//! is not compensated, and nothing is prescaled. None of the range care is
-//! needed here: the largest quantity, `(aR)²`, is of degree 6 in the
-//! inputs, and for any finite `f32` inputs it stays between `10⁻²⁷⁰` and
-//! `10²³²`, inside `f64`'s normal range.
+//! The largest quantity, `(aR)²`, is of degree 6 in the inputs, and for any
+//! finite `f32` inputs it stays between `10⁻²⁷⁰` and `10²³²`, inside
+//! `f64`'s normal range.
 //!
 //! The class is read from the `f64` signs: `a = 0` or `aΔ < 0` (or NaN)
 //! none, `aΔ = 0` tangent (`−b/a`), otherwise two roots, sorted. It matches
 //! the exact class outside a near-tangent band of a few `2⁻⁵³` of the
-//! magnitudes `aΔ` is made of (the reference documents `2⁻⁴⁰`,
-//! [`super::band`]); a well-conditioned root is within 1 ulp (the `f64`
-//! error is far below an `f32` ulp, and the final rounding can land on
-//! either side of a midpoint). An exact tangent stays exact only while the
-//! two squares of `aΔ` are exact in `f64`.
+//! magnitudes `aΔ` is made of; a well-conditioned root is within 1 ulp (the
+//! `f64` error is far below an `f32` ulp, but the final rounding can land
+//! on either side of a midpoint). An exact tangent stays exact only while
+//! the two squares of `aΔ` are exact in `f64`.
 
 use super::{Sphere, SphereHit};
 use crate::Ray;

@@ -51,17 +51,21 @@
 //! The relative errors of the reciprocals, of `t̂` against the exact
 //! quotient and of the evaluation of the bounds themselves are a few `u`
 //! each; they are covered by a factor `1 + 2⁻⁴⁰` and by the `2⁻⁵¹|t̂|`
-//! that [`certify`] adds. Every constant above is at least twice what the
+//! that [`certify`](crate::num::certify::certify) adds. Every constant above is at least twice what the
 //! proof needs: `E_a = 4u â`, `E_b = 8u m_b`, `E_c = 12u m_c`.
 //!
 //! # Range
 //!
-//! No quantity here is a product of more than four inputs (`b²`, `ac`), and
-//! a product of up to six f32 values lies between `2⁻⁸⁹⁴` and `2⁷⁶⁸` in
+//! The quantities of `Δ` are products of at most four inputs (`b²`, `ac`),
+//! and a product of up to six f32 values lies between `2⁻⁸⁹⁴` and `2⁷⁶⁸` in
 //! magnitude: no overflow, and no underflow into f64's subnormals, so the
-//! relative error model holds for every finite input. An infinite input
-//! makes a magnitude sum infinite, and a NaN makes `Δ̂` NaN; neither
-//! certifies anything.
+//! relative error model holds for every finite input. The one product of
+//! degree six, `q̂âŝ`, is used only where two roots are certified, and
+//! there `Δ̂ ≥ 2⁻⁶⁵⁰` (a nonzero difference of two f64 values of at least
+//! `2⁻⁵⁹⁶`), so `ŝ ≥ 2⁻³²⁵`, `|q̂| ≥ ŝ` and `â ≥ 2⁻²⁹⁸` keep it above
+//! `2⁻⁹⁴⁸`; `|q̂| ≤ 2²⁶⁰`, `ŝ ≤ 2²⁶⁰` and `â ≤ 2²⁵⁸` keep it below `2⁷⁷⁸`.
+//! An infinite input makes a magnitude sum infinite, and a NaN makes `Δ̂`
+//! NaN; neither certifies anything.
 
 use crate::num::certify::U;
 use crate::num::real::Real;
@@ -72,7 +76,8 @@ use crate::num::real::Real;
 pub struct Filtered<L: Real> {
     /// Certified: no root (no line, or `Δ < 0`).
     pub none: L::Mask,
-    /// Certified: two roots (`Δ > 0`); the roots still need [`certify`].
+    /// Certified: two roots (`Δ > 0`); the roots still need
+    /// [`certify`](crate::num::certify::certify).
     pub two: L::Mask,
     /// `q/a`.
     pub t0: L,

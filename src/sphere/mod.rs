@@ -25,36 +25,20 @@
 //! A zero direction is not a line: [`SphereHit::None`]. The radius enters
 //! only as `R²`, so `−R` is the same sphere.
 //!
-//! # The numerically careful form ([`reference`](mod@reference))
-//!
-//! * **Ray Tracing Gems ch. 7** (Haines, Günther & Akenine-Möller, *Precision
-//!   improvements for ray/sphere intersection*): compute the discriminant from
-//!   the closest-approach vector `l = f − (b/a) d` as `Δ = a (R² − |l|²)`,
-//!   which does not cancel for a far sphere as `b² − ac` does; then
-//!   `q = −(b + sign(b)√Δ)`, `t₀ = c/q`, `t₁ = q/a`. Here it is used in a
-//!   division-free form, `a Δ = (aR)² − |a f − b d|²`, so that an exactly
-//!   tangent input gives exactly 0 whenever both squares are exact in
-//!   double-word arithmetic, i.e. while `a·R` (after prescaling) needs at
-//!   most 24 bits: true for small-integer data (the property tests use
-//!   Pythagorean quadruples up to 64); beyond that a tangent may come out as
-//!   a near-miss or a near-double root, inside the documented band.
-//! * **Compensated `c = |f|² − R²`** for origins close to the surface: `f` is
-//!   formed exactly (TwoSum of `o` and `−C`), and `|f|² − R²` in double-word
-//!   arithmetic from exact squares.
-//! * Everything is double-word (see [`crate::num::ff`]), after exact
-//!   power-of-two prescaling of `d` and of the positions, so `R = 10⁷` at a
-//!   distance of `10⁷`, `|d|` from `10⁻¹⁰` to `10¹⁰`, and subnormal inputs
-//!   stay in range.
-//!
 //! # Accuracy
 //!
-//! * **Classification** matches the exact one wherever the exact
-//!   `|aΔ| > band` ([`band`]): `2⁻⁴⁰` times the magnitudes the two terms
-//!   `(aR)²` and `|af − bd|²` are made of.
-//! * **Roots**: within `1 + κ·2⁻¹⁸` ulps of the correctly rounded root
-//!   ([`ROOT_ULPS`]), where `κ` is the root's condition number
-//!   ([`condition`]); for every well-conditioned root that is 1 ulp, and the
-//!   tests find 0 in almost all cases.
+//! [`reference::intersect`](mod@reference) and [`x4`] return the exact class
+//! and both roots correctly rounded to `f32`, for every finite input. The
+//! [filter](kernel) evaluates the quadratic in f64 with the error bound
+//! derived there and certifies what it decides; an exact tangent, a root
+//! exactly 0 or one too close to a rounding boundary goes to the exact
+//! oracle ([`exact`]). The root formulas avoid cancellation as in Ray
+//! Tracing Gems ch. 7 (Haines, Günther & Akenine-Möller, *Precision
+//! improvements for ray/sphere intersection*): `q = −(b + sign(b)√Δ)`,
+//! `t₀ = q/a`, `t₁ = c/q`.
+//!
+//! [`condition`] and [`condition_at`] give each root's condition number,
+//! which the gate uses to judge outside kernels and the reports show.
 
 pub mod double;
 pub mod exact;
@@ -131,114 +115,11 @@ impl Intersection for SphereHit {
     }
 }
 
-/// The documented root error bound, in ulps, for condition number `kappa`.
-///
-/// ```
-/// assert_eq!(rayoracle::sphere::ROOT_ULPS(2.0).floor(), 1.0);
-/// ```
-#[allow(non_snake_case)]
-pub fn ROOT_ULPS(kappa: f64) -> f64 {
-    1.0 + kappa * 2f64.powi(-18)
-}
-
-/// Exact-valued helpers in f64 for the bounds: `(a, b, c, aΔ)` and the band.
+/// The inputs in f64, for the condition numbers: `f = o − C`, `d` and `R`.
 fn f64_terms(ray: &Ray, s: &Sphere) -> ([f64; 3], [f64; 3], f64) {
     let f = [0, 1, 2].map(|i| ray.origin[i] as f64 - s.center[i] as f64);
     let d = [0, 1, 2].map(|i| ray.dir[i] as f64);
     (f, d, s.radius as f64)
-}
-
-/// The accuracy domain of [`reference::intersect`](mod@reference): with the
-/// kernel's prescaling (`d` and `(f, R)` by the power of two of their
-/// largest magnitudes), `Σ|fᵢdᵢ|` is 0 or within `[2⁻⁵⁰, 2⁵⁰]`
-/// ([`crate::num::scale::in_range`]); `a = d·d` and `|f|² + R²` are in range
-/// by construction. What the prescaling of `(o, C, R)` rounds away must be
-/// negligible against `max(|f|, R)` ([`crate::num::scale::crush_loss`]). Outside it `b = f·d` and its square lose the exactness
-/// of their products to underflow, and the bounds are not promised.
-///
-/// ```
-/// use rayoracle::{Ray, sphere::{Sphere, in_domain}};
-/// use glam::Vec3;
-/// let s = Sphere::new(Vec3::ZERO, 1.0);
-/// assert!(in_domain(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), &s));
-/// assert!(!in_domain(&Ray::new(Vec3::new(1.0, 0.0, 1e-20), Vec3::Z), &s));
-/// // Far but not too far: f/|f| is what must be in range.
-/// assert!(in_domain(&Ray::new(Vec3::new(0.0, 0.0, -1e20), Vec3::Z), &s));
-/// // f·d/|f| = 3e-20 < 2⁻⁵⁰: b underflows its exactness.
-/// assert!(!in_domain(&Ray::new(Vec3::new(1e20, 3.0, 0.0), Vec3::Y), &s));
-/// // Beside 1e30, the prescaling rounds 1e-20 to 0. Whether it is the
-/// // origin's, the centre's or the radius's, that is all of max(|f|, R):
-/// let big = Vec3::new(1e30, 0.0, 0.0);
-/// let tiny = Vec3::new(1e30, 0.0, 1e-20);
-/// assert!(!in_domain(&Ray::new(big, Vec3::Z), &Sphere::new(tiny, 1e-20)));
-/// assert!(!in_domain(&Ray::new(tiny, Vec3::Z), &Sphere::new(big, 0.0)));
-/// assert!(!in_domain(&Ray::new(big, Vec3::Z), &Sphere::new(big, 1e-20)));
-/// ```
-pub fn in_domain(ray: &Ray, s: &Sphere) -> bool {
-    use crate::num::scale::{Scale, crush_loss, in_range, negligible};
-    // What prescaling (o, C, R) rounds away must be negligible against
-    // max(|f|, R), the scale of everything computed from f = o − C.
-    let (o, c) = (ray.origin.to_array(), s.center.to_array());
-    let ss = Scale::of_max(&[o[0], o[1], o[2], c[0], c[1], c[2], s.radius]);
-    let loss: f64 = (0..3)
-        .map(|i| crush_loss(o[i], ss) + crush_loss(c[i], ss))
-        .sum::<f64>()
-        + crush_loss(s.radius, ss);
-    let (f, d, r) = f64_terms(ray, s);
-    let m = f.iter().fold(r.abs(), |m, x| m.max(x.abs()));
-    if m == 0.0 {
-        return true;
-    }
-    if !negligible(loss, m * 2f64.powi(-ss.k)) {
-        return false;
-    }
-    let d = d.map(|x| x * 2f64.powi(-Scale::of_max(&ray.dir.to_array()).k));
-    let f = f.map(|x| x / m);
-    in_range((0..3).map(|i| (f[i] * d[i]).abs()).sum(), -50, 50)
-}
-
-/// The classification band: the reference's class is only promised to match
-/// the exact one when the exact `|aΔ|` exceeds this.
-///
-/// ```
-/// use rayoracle::{Ray, sphere::{Sphere, band}};
-/// use glam::Vec3;
-/// let b = band(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), &Sphere::new(Vec3::ZERO, 1.0));
-/// assert!(b < 1e-10);
-/// // By hand, for f = (0, 0, −5), d = (0, 0, 2), R = 2: a = 4, Σ|fᵢdᵢ| = 10,
-/// // ((aR)² + (4·5 + 10·2)²)·2⁻⁴⁰.
-/// let b = band(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::new(0.0, 0.0, 2.0)), &Sphere::new(Vec3::ZERO, 2.0));
-/// assert_eq!(b, (64.0 + 1600.0) * 2f64.powi(-40));
-/// ```
-pub fn band(ray: &Ray, s: &Sphere) -> f64 {
-    let (f, d, r) = f64_terms(ray, s);
-    let a: f64 = d.iter().map(|x| x * x).sum();
-    let babs: f64 = (0..3).map(|i| (f[i] * d[i]).abs()).sum();
-    let l: f64 = (0..3)
-        .map(|i| (a * f[i]).abs() + (babs * d[i]).abs())
-        .map(|x| x * x)
-        .sum();
-    ((a * r).powi(2) + l) * 2f64.powi(-40)
-}
-
-/// `aΔ = (aR)² − |a f − b d|²` in f64 (a sign-faithful approximation where it
-/// is far from the band; the tests use the exact value).
-///
-/// ```
-/// use rayoracle::{Ray, sphere::{Sphere, scaled_discriminant}};
-/// use glam::Vec3;
-/// let r = Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z);
-/// assert_eq!(scaled_discriminant(&r, &Sphere::new(Vec3::ZERO, 1.0)), 0.0);
-/// // Through the centre with |d| = 2, R = 2: a = 4, a f − b d = 0, aΔ = (aR)².
-/// let r = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::new(0.0, 0.0, 2.0));
-/// assert_eq!(scaled_discriminant(&r, &Sphere::new(Vec3::ZERO, 2.0)), 64.0);
-/// ```
-pub fn scaled_discriminant(ray: &Ray, s: &Sphere) -> f64 {
-    let (f, d, r) = f64_terms(ray, s);
-    let a: f64 = d.iter().map(|x| x * x).sum();
-    let b: f64 = (0..3).map(|i| f[i] * d[i]).sum();
-    let l: f64 = (0..3).map(|i| a * f[i] - b * d[i]).map(|x| x * x).sum();
-    (a * r).powi(2) - l
 }
 
 /// The componentwise relative condition number of each root (`κ = Σ|xᵢ

@@ -419,7 +419,7 @@ fn alpha_small_at_its_bound() {
 fn the_quadric_margin_against_its_band() {
     let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
     let r = Ray::new(Vec3::new(0.0, 0.875, -5.0), Vec3::Z);
-    let b = quadric::band(&r, &ball);
+    let b = quadric_band(&r, &ball);
     let with_band = |band: f64| Declared {
         band_scale: band / b,
         ..Declared::f32(Semantics::WholeLine)
