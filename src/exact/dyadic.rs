@@ -244,7 +244,11 @@ impl Dyadic {
                 return 0.0;
             }
             let drop = (128 - m.unsigned_abs().leading_zeros()).saturating_sub(64);
-            return ldexp_f64((m >> drop) as f64, self.exp as i64 + drop as i64);
+            let top = m >> drop;
+            // i64 → f64 rounds as i128 → f64 does (to nearest, ties to
+            // even), and is one instruction.
+            let top = i64::try_from(top).map_or(top as f64, |t| t as f64);
+            return ldexp_f64(top, self.exp as i64 + drop as i64);
         }
         let m = self.ibig();
         if m.is_zero() {
@@ -330,14 +334,10 @@ fn shl_fixed(m: i128, s: i64) -> Option<i128> {
     (r >> s == m).then_some(r)
 }
 
-/// `op(a·2^ea, b·2^eb)` for `op` = `+` or `−` on `i128` mantissas, if the
+/// `a·2^ea − b·2^eb` if `SUB`, else the sum, on `i128` mantissas, if the
 /// aligned operands and the result fit. A zero operand takes the other's
 /// exponent, so it never needs a shift.
-fn add_fixed(
-    (a, ea): (i128, i32),
-    (b, eb): (i128, i32),
-    op: fn(i128, i128) -> Option<i128>,
-) -> Option<Dyadic> {
+fn add_fixed<const SUB: bool>((a, ea): (i128, i32), (b, eb): (i128, i32)) -> Option<Dyadic> {
     let (ea, eb) = match (a, b) {
         (0, _) => (eb, eb),
         (_, 0) => (ea, ea),
@@ -349,14 +349,19 @@ fn add_fixed(
         Ordering::Greater => (shl_fixed(a, d)?, b, eb),
         Ordering::Less => (a, shl_fixed(b, -d)?, ea),
     };
-    Some(Dyadic::small(op(a, b)?, e))
+    let r = if SUB {
+        a.checked_sub(b)
+    } else {
+        a.checked_add(b)
+    };
+    Some(Dyadic::small(r?, e))
 }
 
-/// `op(x, y)` for `op` = `+` or `−`: on `i128` mantissas when they fit,
+/// `x − y` if `SUB`, else `x + y`: on `i128` mantissas when they fit,
 /// else on big integers, shifting only the operand with the larger exponent.
-fn add_or_sub(x: &Dyadic, y: &Dyadic, op: fn(i128, i128) -> Option<i128>, neg: bool) -> Dyadic {
+fn add_or_sub<const SUB: bool>(x: &Dyadic, y: &Dyadic) -> Dyadic {
     if let (Some(a), Some(b)) = (x.fixed(), y.fixed())
-        && let Some(r) = add_fixed((a, x.exp), (b, y.exp), op)
+        && let Some(r) = add_fixed::<SUB>((a, x.exp), (b, y.exp))
     {
         return r;
     }
@@ -374,7 +379,7 @@ fn add_or_sub(x: &Dyadic, y: &Dyadic, op: fn(i128, i128) -> Option<i128>, neg: b
             x.exp,
         ),
     };
-    let m = if neg {
+    let m = if SUB {
         a.as_ref() - b.as_ref()
     } else {
         a.as_ref() + b.as_ref()
@@ -385,14 +390,14 @@ fn add_or_sub(x: &Dyadic, y: &Dyadic, op: fn(i128, i128) -> Option<i128>, neg: b
 impl Add for &Dyadic {
     type Output = Dyadic;
     fn add(self, o: &Dyadic) -> Dyadic {
-        add_or_sub(self, o, i128::checked_add, false)
+        add_or_sub::<false>(self, o)
     }
 }
 
 impl Sub for &Dyadic {
     type Output = Dyadic;
     fn sub(self, o: &Dyadic) -> Dyadic {
-        add_or_sub(self, o, i128::checked_sub, true)
+        add_or_sub::<true>(self, o)
     }
 }
 
