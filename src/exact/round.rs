@@ -22,9 +22,16 @@ fn value_of(k: i64) -> Dyadic {
     Dyadic::from_f32(float_of(k))
 }
 
-/// The midpoint between the floats with keys `k` and `k + 1`, exactly.
+/// The midpoint between the floats with keys `k` and `k + 1`, exactly:
+/// `(2M + 1)·2^(e−1)` for the float `M·2^e` of a key `k ≥ 0` (its
+/// successor is `(M + 1)·2^e`, across a binade too), mirrored below zero.
 fn midpoint(k: i64) -> Dyadic {
-    (&value_of(k) + &value_of(k + 1)).mul_pow2(-1)
+    if k < 0 {
+        return -midpoint(-k - 1);
+    }
+    let biased = (k >> 23) as i32;
+    let hidden = if biased > 0 { 0x80_0000 } else { 0 };
+    Dyadic::new(2 * ((k & 0x7f_ffff) + hidden) + 1, biased.max(1) - 151)
 }
 
 /// `f32::MAX + ulp(f32::MAX)/2 = 2^128 − 2^103`: from here on, round to ∞.
@@ -195,6 +202,34 @@ mod tests {
     /// x = p/q with q > 0 (both dyadic).
     fn ratio(p: Dyadic, q: Dyadic, guess: f64) -> f32 {
         round_to_f32(|m| p.cmp(&(m * &q)), guess)
+    }
+
+    /// Midpoints are the mean of their two floats, across binades, the
+    /// subnormal boundary and zero.
+    #[test]
+    fn midpoints_are_means() {
+        use rand::rngs::SmallRng;
+        use rand::{Rng, SeedableRng};
+        let mut r = SmallRng::seed_from_u64(3);
+        let edges = [
+            0,
+            1,
+            0x7f_fffe,
+            0x7f_ffff,
+            0x80_0000,
+            0xff_ffff,
+            MAX_KEY - 1,
+        ];
+        let keys = edges
+            .into_iter()
+            .flat_map(|k| [k, -k - 1])
+            .chain((0..2_000).map(|_| r.random_range(-MAX_KEY..MAX_KEY)));
+        for k in keys {
+            let mean = (&value_of(k) + &value_of(k + 1)).mul_pow2(-1);
+            assert_eq!(midpoint(k), mean, "{k:#x}");
+        }
+        assert_eq!(midpoint(-1), Dyadic::new(-1, -150));
+        assert_eq!(midpoint(0x7f_ffff), Dyadic::new(0xff_ffff, -150));
     }
 
     /// The two comparisons at the guess give what the full search gives,
