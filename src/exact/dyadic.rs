@@ -264,20 +264,27 @@ impl Dyadic {
 /// `x · 2^e` in f64 without intermediate overflow or underflow.
 fn ldexp_f64(mut x: f64, mut e: i64) -> f64 {
     while e > 1000 {
-        x *= 2f64.powi(1000);
+        x *= pow2(1000);
         e -= 1000;
         if x.is_infinite() {
             return x;
         }
     }
     while e < -1000 {
-        x *= 2f64.powi(-1000);
+        x *= pow2(-1000);
         e += 1000;
         if x == 0.0 {
             return x;
         }
     }
-    x * 2f64.powi(e as i32)
+    x * pow2(e as i32)
+}
+
+/// `2^e` for `|e| ≤ 1000`, from its bits (the value `2f64.powi(e)` has,
+/// without its library call).
+fn pow2(e: i32) -> f64 {
+    debug_assert!((-1000..=1000).contains(&e));
+    f64::from_bits(((e + 1023) as u64) << 52)
 }
 
 impl PartialEq for Dyadic {
@@ -299,7 +306,18 @@ impl Ord for Dyadic {
         if let (Some(a), Some(b)) = (self.fixed(), other.fixed()) {
             return cmp_fixed(a, self.exp, b, other.exp);
         }
+        // By sign and the place of the leading bit first, which spares the
+        // long shifts of far-apart exponents.
+        let (sa, sb) = (self.signum(), other.signum());
+        if sa != sb || sa == 0 {
+            return sa.cmp(&sb);
+        }
         let (a, b) = (self.ibig(), other.ibig());
+        let top = |m: &IBig, e: i32| e as i64 + m.bit_len() as i64;
+        let mag = top(&a, self.exp).cmp(&top(&b, other.exp));
+        if mag != Ordering::Equal {
+            return if sa > 0 { mag } else { mag.reverse() };
+        }
         match self.exp.cmp(&other.exp) {
             Ordering::Equal => a.cmp(&b),
             Ordering::Greater => (a.as_ref() << (self.exp - other.exp) as usize).cmp(&b),
@@ -575,6 +593,9 @@ pub(crate) mod tests {
                 )
             });
             assert_eq!(fast.1, slow.1, "{x:?} {y:?}");
+            // The ordering is the sign of the difference.
+            let diff = big_only(|| (&x - &y).signum());
+            assert_eq!(fast.1.0, diff.cmp(&0), "{x:?} {y:?}");
             assert_eq!(fast.2, slow.2, "{x:?} {y:?}");
             for (a, b) in fast.0.iter().zip(&slow.0) {
                 assert_eq!(parts(a), parts(b), "{x:?} {y:?}");
@@ -645,6 +666,13 @@ pub(crate) mod tests {
         // top 64 bits no longer fits in an i32.
         let big = &Dyadic::new(i64::MAX, i32::MAX) * &Dyadic::new(i64::MAX, 0);
         assert_eq!(big.to_f64(), f64::INFINITY);
+    }
+
+    #[test]
+    fn pow2_is_powi() {
+        for e in -1000..=1000 {
+            assert_eq!(pow2(e), 2f64.powi(e), "{e}");
+        }
     }
 
     #[test]
