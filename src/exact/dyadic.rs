@@ -1,7 +1,8 @@
-//! Exact dyadic rationals `m · 2^e`: the mantissa is an `i128` on the stack
-//! while it fits and a `dashu_int::IBig` beyond that.
+//! Exact dyadic rationals `m · 2^e`: the mantissa is an `i128` or a 256-bit
+//! integer on the stack while it fits and a `dashu_int::IBig` beyond that.
 
 use super::NonFinite;
+use super::wide::{self, Wide};
 use core::cmp::Ordering;
 use core::ops::{Add, Mul, Neg, Sub};
 use dashu_int::IBig;
@@ -9,9 +10,9 @@ use dashu_int::ops::{BitTest, UnsignedAbs};
 
 /// An exact dyadic rational `mant · 2^exp`.
 ///
-/// The representation is not canonical (an `i128` mantissa has its trailing
-/// zero bits moved into the exponent, a big one need not): the value is what
-/// matters, and equality and ordering compare values.
+/// The representation is not canonical (a mantissa on the stack has its
+/// trailing zero bits moved into the exponent, a big one need not): the
+/// value is what matters, and equality and ordering compare values.
 ///
 /// ```
 /// use rayoracle::exact::Dyadic;
@@ -27,11 +28,12 @@ pub struct Dyadic {
     exp: i32,
 }
 
-/// A mantissa: `Small` whenever the value fits in an `i128` (every result
-/// that fits is stored so), `Big` only beyond that.
+/// A mantissa in the narrowest of three widths that holds its odd part
+/// (every result is stored so): `i128`, 256 bits, or a big integer.
 #[derive(Clone)]
 enum Mant {
     Small(i128),
+    Wide(Wide),
     Big(IBig),
 }
 
@@ -40,6 +42,7 @@ impl core::fmt::Debug for Dyadic {
         let mut d = f.debug_struct("Dyadic");
         match &self.mant {
             Mant::Small(m) => d.field("mant", m),
+            Mant::Wide(m) => d.field("mant", &format_args!("{}", m.to_ibig())),
             Mant::Big(m) => d.field("mant", &format_args!("{m}")),
         };
         d.field("exp", &self.exp).finish()
@@ -142,20 +145,34 @@ impl Dyadic {
         }
     }
 
-    /// `m · 2^e`, held in an `i128` if its odd part fits.
+    /// `m · 2^e` with the trailing zero bits of `m` moved into the exponent
+    /// (as far as an `i32` allows), in an `i128` if it then fits.
+    fn wide(m: Wide, e: i32) -> Dyadic {
+        let tz = m.trailing_zeros();
+        let (m, e) = match e.checked_add(tz as i32) {
+            Some(exp) => (m.shr_exact(tz), exp),
+            None => (m, e),
+        };
+        match m.to_i128() {
+            Some(s) => Dyadic::small(s, e),
+            None => Dyadic {
+                mant: Mant::Wide(m),
+                exp: e,
+            },
+        }
+    }
+
+    /// `m · 2^e`, on the stack if its odd part fits in 255 bits.
     fn big(m: IBig, e: i32) -> Dyadic {
         if let Ok(s) = i128::try_from(&m) {
             return Dyadic::small(s, e);
         }
         let tz = m.trailing_zeros().unwrap_or(0);
-        if m.bit_len() - tz <= 127
+        if m.bit_len() - tz <= Wide::BITS as usize
             && let Some(exp) = e.checked_add(tz as i32)
         {
-            let odd = i128::try_from(&m >> tz).expect("127 bits fit");
-            return Dyadic {
-                mant: Mant::Small(odd),
-                exp,
-            };
+            let odd = Wide::from_ibig(&(&m >> tz)).expect("255 bits fit");
+            return Dyadic::wide(odd, exp);
         }
         Dyadic {
             mant: Mant::Big(m),
@@ -173,6 +190,20 @@ impl Dyadic {
         }
         match self.mant {
             Mant::Small(m) => Some(m),
+            _ => None,
+        }
+    }
+
+    /// The mantissa as a 256-bit integer, if it is one or an `i128` (with
+    /// the same exception as [`Dyadic::fixed`]).
+    fn wide_mant(&self) -> Option<Wide> {
+        #[cfg(test)]
+        if tests::BIG_ONLY.with(core::cell::Cell::get) {
+            return None;
+        }
+        match self.mant {
+            Mant::Small(m) => Some(Wide::from_i128(m)),
+            Mant::Wide(m) => Some(m),
             Mant::Big(_) => None,
         }
     }
@@ -181,6 +212,7 @@ impl Dyadic {
     fn ibig(&self) -> std::borrow::Cow<'_, IBig> {
         match &self.mant {
             Mant::Small(m) => std::borrow::Cow::Owned(IBig::from(*m)),
+            Mant::Wide(m) => std::borrow::Cow::Owned(m.to_ibig()),
             Mant::Big(m) => std::borrow::Cow::Borrowed(m),
         }
     }
@@ -194,6 +226,9 @@ impl Dyadic {
     pub fn signum(&self) -> i32 {
         if let Some(m) = self.fixed() {
             return m.signum() as i32;
+        }
+        if let Some(m) = self.wide_mant() {
+            return m.signum();
         }
         let m = self.ibig();
         if m.is_zero() {
@@ -239,12 +274,15 @@ impl Dyadic {
         // Keep the leading 64 bits (rounded down); dropping the rest costs
         // < 2^-63. The value alone decides the result, whatever the
         // representation: the kept bits and the scale are the same.
-        if let Some(m) = self.fixed() {
-            if m == 0 {
+        if let Some(m) = self.wide_mant() {
+            if m.signum() == 0 {
                 return 0.0;
             }
-            let drop = (128 - m.unsigned_abs().leading_zeros()).saturating_sub(64);
-            let top = m >> drop;
+            let drop = m.len().saturating_sub(64);
+            let top = match self.fixed() {
+                Some(m) => m >> drop,
+                None => m.shr_floor_i128(drop),
+            };
             // i64 → f64 rounds as i128 → f64 does (to nearest, ties to
             // even), and is one instruction.
             let top = i64::try_from(top).map_or(top as f64, |t| t as f64);
@@ -306,25 +344,36 @@ impl Ord for Dyadic {
         if let (Some(a), Some(b)) = (self.fixed(), other.fixed()) {
             return cmp_fixed(a, self.exp, b, other.exp);
         }
-        // By sign and the place of the leading bit first, which spares the
-        // long shifts of far-apart exponents.
-        let (sa, sb) = (self.signum(), other.signum());
-        if sa != sb || sa == 0 {
-            return sa.cmp(&sb);
-        }
-        let (a, b) = (self.ibig(), other.ibig());
-        let top = |m: &IBig, e: i32| e as i64 + m.bit_len() as i64;
-        let mag = top(&a, self.exp).cmp(&top(&b, other.exp));
-        if mag != Ordering::Equal {
-            return if sa > 0 { mag } else { mag.reverse() };
-        }
-        match self.exp.cmp(&other.exp) {
-            Ordering::Equal => a.cmp(&b),
-            Ordering::Greater => (a.as_ref() << (self.exp - other.exp) as usize).cmp(&b),
-            Ordering::Less => a
-                .as_ref()
-                .cmp(&(b.as_ref() << (other.exp - self.exp) as usize)),
-        }
+        cmp_wider(self, other)
+    }
+}
+
+/// [`Ord::cmp`] for a mantissa wider than an `i128`, out of line so that
+/// the `i128` path stays short.
+#[cold]
+#[inline(never)]
+fn cmp_wider(this: &Dyadic, other: &Dyadic) -> Ordering {
+    if let (Some(a), Some(b)) = (this.wide_mant(), other.wide_mant()) {
+        return wide::cmp(a, this.exp, b, other.exp);
+    }
+    // By sign and the place of the leading bit first, which spares the
+    // long shifts of far-apart exponents.
+    let (sa, sb) = (this.signum(), other.signum());
+    if sa != sb || sa == 0 {
+        return sa.cmp(&sb);
+    }
+    let (a, b) = (this.ibig(), other.ibig());
+    let top = |m: &IBig, e: i32| e as i64 + m.bit_len() as i64;
+    let mag = top(&a, this.exp).cmp(&top(&b, other.exp));
+    if mag != Ordering::Equal {
+        return if sa > 0 { mag } else { mag.reverse() };
+    }
+    match this.exp.cmp(&other.exp) {
+        Ordering::Equal => a.cmp(&b),
+        Ordering::Greater => (a.as_ref() << (this.exp - other.exp) as usize).cmp(&b),
+        Ordering::Less => a
+            .as_ref()
+            .cmp(&(b.as_ref() << (other.exp - this.exp) as usize)),
     }
 }
 
@@ -375,11 +424,41 @@ fn add_fixed<const SUB: bool>((a, ea): (i128, i32), (b, eb): (i128, i32)) -> Opt
     Some(Dyadic::small(r?, e))
 }
 
+/// `a·2^ea + b·2^eb` on 256-bit mantissas, if the aligned operands and the
+/// sum fit; a zero operand takes the other's exponent, as in [`add_fixed`].
+fn add_wide((a, ea): (Wide, i32), (b, eb): (Wide, i32)) -> Option<Dyadic> {
+    let (ea, eb) = match (a.signum(), b.signum()) {
+        (0, _) => (eb, eb),
+        (_, 0) => (ea, ea),
+        _ => (ea, eb),
+    };
+    let d = ea as i64 - eb as i64;
+    let shift = |m: Wide, d: i64| m.shl(u32::try_from(d).ok()?);
+    let (a, b, e) = match d.cmp(&0) {
+        Ordering::Equal => (a, b, ea),
+        Ordering::Greater => (shift(a, d)?, b, eb),
+        Ordering::Less => (a, shift(b, -d)?, ea),
+    };
+    Some(Dyadic::wide(a.add(b)?, e))
+}
+
 /// `x − y` if `SUB`, else `x + y`: on `i128` mantissas when they fit,
-/// else on big integers, shifting only the operand with the larger exponent.
+/// else on 256-bit ones, else on big integers, shifting only the operand with the larger exponent.
 fn add_or_sub<const SUB: bool>(x: &Dyadic, y: &Dyadic) -> Dyadic {
     if let (Some(a), Some(b)) = (x.fixed(), y.fixed())
         && let Some(r) = add_fixed::<SUB>((a, x.exp), (b, y.exp))
+    {
+        return r;
+    }
+    add_or_sub_wider::<SUB>(x, y)
+}
+
+/// [`add_or_sub`] once the `i128` mantissas do not do, out of line.
+#[cold]
+#[inline(never)]
+fn add_or_sub_wider<const SUB: bool>(x: &Dyadic, y: &Dyadic) -> Dyadic {
+    if let (Some(a), Some(b)) = (x.wide_mant(), y.wide_mant())
+        && let Some(r) = add_wide((a, x.exp), (if SUB { b.neg() } else { b }, y.exp))
     {
         return r;
     }
@@ -435,8 +514,20 @@ impl Mul for &Dyadic {
                 return Dyadic::small(p, exp);
             }
         }
-        Dyadic::big(self.ibig().as_ref() * o.ibig().as_ref(), exp)
+        mul_wider(self, o, exp)
     }
+}
+
+/// `x · y = m · 2^exp` once the `i128` mantissas do not do, out of line.
+#[cold]
+#[inline(never)]
+fn mul_wider(x: &Dyadic, y: &Dyadic, exp: i32) -> Dyadic {
+    if let (Some(a), Some(b)) = (x.wide_mant(), y.wide_mant())
+        && let Some(p) = a.mul(b)
+    {
+        return Dyadic::wide(p, exp);
+    }
+    Dyadic::big(x.ibig().as_ref() * y.ibig().as_ref(), exp)
 }
 
 impl Neg for &Dyadic {
@@ -447,6 +538,9 @@ impl Neg for &Dyadic {
                 mant: Mant::Small(m),
                 exp: self.exp,
             };
+        }
+        if let Some(m) = self.wide_mant() {
+            return Dyadic::wide(m.neg(), self.exp);
         }
         Dyadic::big(-self.ibig().as_ref(), self.exp)
     }
@@ -576,7 +670,7 @@ pub(crate) mod tests {
     #[test]
     fn fixed_width_arithmetic_matches_big_integers() {
         let mut r = SmallRng::seed_from_u64(0x0dd_a1c);
-        let (mut fixed, mut fell_back) = (0, 0);
+        let (mut fixed, mut fell_back, mut wide) = (0, 0, 0);
         for _ in 0..60_000 {
             let (x, y) = (random(&mut r), random(&mut r));
             let k = r.random_range(-200..200);
@@ -599,9 +693,17 @@ pub(crate) mod tests {
             assert_eq!(fast.2, slow.2, "{x:?} {y:?}");
             for (a, b) in fast.0.iter().zip(&slow.0) {
                 assert_eq!(parts(a), parts(b), "{x:?} {y:?}");
-                // A result whose odd part fits is held in an i128.
-                let small = matches!(a.mant, Mant::Small(_));
-                assert_eq!(small, parts(a).0.bit_len() <= 127, "{a:?}");
+                // A result is held in the narrowest width its odd part
+                // fits in.
+                let len = parts(a).0.bit_len();
+                let width = match a.mant {
+                    Mant::Small(_) => 127,
+                    Mant::Wide(_) => 255,
+                    Mant::Big(_) => usize::MAX,
+                };
+                let want = [127, 255, usize::MAX].into_iter().find(|&w| len <= w);
+                assert_eq!(Some(width), want, "{a:?}");
+                wide += usize::from(width == 255);
             }
             let both_small = |a: &Dyadic| matches!(a.mant, Mant::Small(_));
             if both_small(&x) && both_small(&y) {
@@ -611,8 +713,9 @@ pub(crate) mod tests {
                 }
             }
         }
-        // Both paths were taken, and some sums and products overflowed.
+        // Every path was taken, and some sums and products overflowed.
         assert!(fixed > 20_000 && fell_back > 2_000, "{fixed} {fell_back}");
+        assert!(wide > 20_000, "{wide}");
     }
 
     /// Ordering near the edges of the fixed-width comparison: equal leading
