@@ -362,12 +362,19 @@ fn cmp_wider(this: &Dyadic, other: &Dyadic) -> Ordering {
     if sa != sb || sa == 0 {
         return sa.cmp(&sb);
     }
-    let (a, b) = (this.ibig(), other.ibig());
-    let top = |m: &IBig, e: i32| e as i64 + m.bit_len() as i64;
-    let mag = top(&a, this.exp).cmp(&top(&b, other.exp));
+    let top = |x: &Dyadic| {
+        let len = match &x.mant {
+            Mant::Small(m) => 128 - m.unsigned_abs().leading_zeros() as usize,
+            Mant::Wide(m) => m.len() as usize,
+            Mant::Big(m) => m.bit_len(),
+        };
+        x.exp as i64 + len as i64
+    };
+    let mag = top(this).cmp(&top(other));
     if mag != Ordering::Equal {
         return if sa > 0 { mag } else { mag.reverse() };
     }
+    let (a, b) = (this.ibig(), other.ibig());
     match this.exp.cmp(&other.exp) {
         Ordering::Equal => a.cmp(&b),
         Ordering::Greater => (a.as_ref() << (this.exp - other.exp) as usize).cmp(&b),
