@@ -181,7 +181,7 @@ impl Dyadic {
     }
 
     /// The `i128` mantissa, if the value has one (never in a test run
-    /// inside [`tests::big_only`], which checks the fixed-width arithmetic
+    /// inside `tests::big_only`, which checks the fixed-width arithmetic
     /// against the big-integer one).
     fn fixed(&self) -> Option<i128> {
         #[cfg(test)]
@@ -283,9 +283,10 @@ impl Dyadic {
                 Some(m) => m >> drop,
                 None => m.shr_floor_i128(drop),
             };
-            // i64 → f64 rounds as i128 → f64 does (to nearest, ties to
-            // even), and is one instruction.
-            let top = i64::try_from(top).map_or(top as f64, |t| t as f64);
+            // u64 → f64 rounds as i128 → f64 does (to nearest, ties to
+            // even, the same for either sign), without a library call.
+            let top = u64::try_from(top.unsigned_abs())
+                .map_or(top as f64, |t| if top < 0 { -(t as f64) } else { t as f64 });
             return ldexp_f64(top, self.exp as i64 + drop as i64);
         }
         let m = self.ibig();
@@ -776,6 +777,31 @@ pub(crate) mod tests {
         // top 64 bits no longer fits in an i32.
         let big = &Dyadic::new(i64::MAX, i32::MAX) * &Dyadic::new(i64::MAX, 0);
         assert_eq!(big.to_f64(), f64::INFINITY);
+    }
+
+    /// `to_f64` at ties of the rounding to 53 bits, with the bits beyond the
+    /// leading 64 zero or not, of either sign and at every width: the same
+    /// `f64` as on big integers, which rounds a negative tail downwards.
+    #[test]
+    fn to_f64_at_ties_matches_big_integers() {
+        let tie = Dyadic::small(((1 << 52) + 1) << 11 | 1 << 10, 0);
+        for k in [0, 1, 40, 63, 64, 100, 150, 200, 300] {
+            for tail in [0, 1, -1, 3] {
+                for sign in [1, -1] {
+                    let x = &(&tie * &Dyadic::new(sign, k)) + &Dyadic::new(tail, 0);
+                    let want = big_only(|| x.to_f64());
+                    assert_eq!(x.to_f64().to_bits(), want.to_bits(), "{x:?}");
+                }
+            }
+        }
+        // The tie itself goes to even; just above it, up.
+        assert_eq!(tie.to_f64(), (((1u64 << 52) + 2) << 11) as f64);
+        let above = &tie.mul_pow2(100) + &Dyadic::new(1, 0);
+        assert_eq!(
+            above.to_f64(),
+            (((1u64 << 52) + 2) << 11) as f64 * 2f64.powi(100)
+        );
+        assert_eq!((-&above).to_f64(), -above.to_f64());
     }
 
     #[test]
