@@ -134,7 +134,7 @@ impl Wide {
         if self.signum() == 0 {
             return Some(self);
         }
-        if self.len() + s > Self::BITS {
+        if s > Self::BITS - self.len() {
             return None;
         }
         let (hi, lo) = match s {
@@ -269,6 +269,9 @@ mod tests {
                     assert!(a.len() + b.len() > 255);
                     declined[1] += 1;
                 }
+            }
+            if a.signum() != 0 {
+                assert_eq!(a.shl(u32::MAX), None);
             }
             let s = r.random_range(0..256u32);
             let shifted = &x << s as usize;
