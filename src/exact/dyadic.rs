@@ -1,6 +1,8 @@
-//! Exact dyadic rationals `m · 2^e` over `dashu_int::IBig`.
+//! Exact dyadic rationals `m · 2^e`: the mantissa is an `i128` or a 256-bit
+//! integer on the stack while it fits and a `dashu_int::IBig` beyond that.
 
 use super::NonFinite;
+use super::wide::{self, Wide};
 use core::cmp::Ordering;
 use core::ops::{Add, Mul, Neg, Sub};
 use dashu_int::IBig;
@@ -8,8 +10,9 @@ use dashu_int::ops::{BitTest, UnsignedAbs};
 
 /// An exact dyadic rational `mant · 2^exp`.
 ///
-/// No normalisation is done: the value is what matters, and equality and
-/// ordering compare values.
+/// The representation is not canonical (a mantissa on the stack has its
+/// trailing zero bits moved into the exponent, a big one need not): the
+/// value is what matters, and equality and ordering compare values.
 ///
 /// ```
 /// use rayoracle::exact::Dyadic;
@@ -19,16 +22,37 @@ use dashu_int::ops::{BitTest, UnsignedAbs};
 /// assert_ne!(&x + &y, Dyadic::from_f32(0.3));
 /// assert_eq!((&x + &y).to_f64(), 0.1f32 as f64 + 0.2f32 as f64);
 /// ```
-#[derive(Clone, Debug)]
+#[derive(Clone)]
 pub struct Dyadic {
-    mant: IBig,
+    mant: Mant,
     exp: i32,
+}
+
+/// A mantissa in the narrowest of three widths that holds its odd part
+/// (every result is stored so): `i128`, 256 bits, or a big integer.
+#[derive(Clone)]
+enum Mant {
+    Small(i128),
+    Wide(Wide),
+    Big(IBig),
+}
+
+impl core::fmt::Debug for Dyadic {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let mut d = f.debug_struct("Dyadic");
+        match &self.mant {
+            Mant::Small(m) => d.field("mant", m),
+            Mant::Wide(m) => d.field("mant", &format_args!("{}", m.to_ibig())),
+            Mant::Big(m) => d.field("mant", &format_args!("{m}")),
+        };
+        d.field("exp", &self.exp).finish()
+    }
 }
 
 impl Dyadic {
     /// Zero.
     pub const ZERO: Dyadic = Dyadic {
-        mant: IBig::ZERO,
+        mant: Mant::Small(0),
         exp: 0,
     };
 
@@ -99,9 +123,97 @@ impl Dyadic {
     /// assert_eq!(Dyadic::new(5, 2).to_f64(), 20.0);
     /// ```
     pub fn new(mant: i64, exp: i32) -> Dyadic {
+        Dyadic::small(mant.into(), exp)
+    }
+
+    /// `m · 2^e` with the trailing zero bits of `m` moved into the exponent
+    /// (as far as an `i32` allows); zero is `0 · 2^0`.
+    fn small(m: i128, e: i32) -> Dyadic {
+        if m == 0 {
+            return Dyadic::ZERO;
+        }
+        let tz = m.trailing_zeros();
+        match e.checked_add(tz as i32) {
+            Some(exp) => Dyadic {
+                mant: Mant::Small(m >> tz),
+                exp,
+            },
+            None => Dyadic {
+                mant: Mant::Small(m),
+                exp: e,
+            },
+        }
+    }
+
+    /// `m · 2^e` with the trailing zero bits of `m` moved into the exponent
+    /// (as far as an `i32` allows), in an `i128` if it then fits.
+    fn wide(m: Wide, e: i32) -> Dyadic {
+        let tz = m.trailing_zeros();
+        let (m, e) = match e.checked_add(tz as i32) {
+            Some(exp) => (m.shr_exact(tz), exp),
+            None => (m, e),
+        };
+        match m.to_i128() {
+            Some(s) => Dyadic::small(s, e),
+            None => Dyadic {
+                mant: Mant::Wide(m),
+                exp: e,
+            },
+        }
+    }
+
+    /// `m · 2^e`, on the stack if its odd part fits in 255 bits.
+    fn big(m: IBig, e: i32) -> Dyadic {
+        if let Ok(s) = i128::try_from(&m) {
+            return Dyadic::small(s, e);
+        }
+        let tz = m.trailing_zeros().unwrap_or(0);
+        if m.bit_len() - tz <= Wide::BITS as usize
+            && let Some(exp) = e.checked_add(tz as i32)
+        {
+            let odd = Wide::from_ibig(&(&m >> tz)).expect("255 bits fit");
+            return Dyadic::wide(odd, exp);
+        }
         Dyadic {
-            mant: IBig::from(mant),
-            exp,
+            mant: Mant::Big(m),
+            exp: e,
+        }
+    }
+
+    /// The `i128` mantissa, if the value has one (never in a test run
+    /// inside `tests::big_only`, which checks the fixed-width arithmetic
+    /// against the big-integer one).
+    fn fixed(&self) -> Option<i128> {
+        #[cfg(test)]
+        if tests::BIG_ONLY.with(core::cell::Cell::get) {
+            return None;
+        }
+        match self.mant {
+            Mant::Small(m) => Some(m),
+            _ => None,
+        }
+    }
+
+    /// The mantissa as a 256-bit integer, if it is one or an `i128` (with
+    /// the same exception as [`Dyadic::fixed`]).
+    fn wide_mant(&self) -> Option<Wide> {
+        #[cfg(test)]
+        if tests::BIG_ONLY.with(core::cell::Cell::get) {
+            return None;
+        }
+        match self.mant {
+            Mant::Small(m) => Some(Wide::from_i128(m)),
+            Mant::Wide(m) => Some(m),
+            Mant::Big(_) => None,
+        }
+    }
+
+    /// The mantissa as a big integer.
+    fn ibig(&self) -> std::borrow::Cow<'_, IBig> {
+        match &self.mant {
+            Mant::Small(m) => std::borrow::Cow::Owned(IBig::from(*m)),
+            Mant::Wide(m) => std::borrow::Cow::Owned(m.to_ibig()),
+            Mant::Big(m) => std::borrow::Cow::Borrowed(m),
         }
     }
 
@@ -112,9 +224,16 @@ impl Dyadic {
     /// assert_eq!(Dyadic::new(-7, 100).signum(), -1);
     /// ```
     pub fn signum(&self) -> i32 {
-        if self.mant.is_zero() {
+        if let Some(m) = self.fixed() {
+            return m.signum() as i32;
+        }
+        if let Some(m) = self.wide_mant() {
+            return m.signum();
+        }
+        let m = self.ibig();
+        if m.is_zero() {
             0
-        } else if self.mant.sign() == dashu_int::Sign::Negative {
+        } else if m.sign() == dashu_int::Sign::Negative {
             -1
         } else {
             1
@@ -128,7 +247,7 @@ impl Dyadic {
     /// assert!(Dyadic::new(0, 17).is_zero());
     /// ```
     pub fn is_zero(&self) -> bool {
-        self.mant.is_zero()
+        self.signum() == 0
     }
 
     /// `self · 2^k`, exact.
@@ -152,13 +271,31 @@ impl Dyadic {
     /// assert_eq!(Dyadic::new(1, -1).to_f64(), 0.5);
     /// ```
     pub fn to_f64(&self) -> f64 {
-        if self.mant.is_zero() {
+        // Keep the leading 64 bits (rounded down); dropping the rest costs
+        // < 2^-63. The value alone decides the result, whatever the
+        // representation: the kept bits and the scale are the same.
+        if let Some(m) = self.wide_mant() {
+            if m.signum() == 0 {
+                return 0.0;
+            }
+            let drop = m.len().saturating_sub(64);
+            let top = match self.fixed() {
+                Some(m) => m >> drop,
+                None => m.shr_floor_i128(drop),
+            };
+            // u64 → f64 rounds as i128 → f64 does (to nearest, ties to
+            // even, the same for either sign), without a library call.
+            let top = u64::try_from(top.unsigned_abs())
+                .map_or(top as f64, |t| if top < 0 { -(t as f64) } else { t as f64 });
+            return ldexp_f64(top, self.exp as i64 + drop as i64);
+        }
+        let m = self.ibig();
+        if m.is_zero() {
             return 0.0;
         }
-        // Keep the leading 64 bits; truncating the rest costs < 2^-63.
-        let len = BitTest::bit_len(&UnsignedAbs::unsigned_abs(self.mant.clone())) as i64;
+        let len = BitTest::bit_len(&UnsignedAbs::unsigned_abs(m.as_ref().clone())) as i64;
         let drop = (len - 64).max(0);
-        let top = (&self.mant >> drop as usize).to_f64().value();
+        let top = (m.as_ref() >> drop as usize).to_f64().value();
         ldexp_f64(top, self.exp as i64 + drop)
     }
 }
@@ -166,20 +303,27 @@ impl Dyadic {
 /// `x · 2^e` in f64 without intermediate overflow or underflow.
 fn ldexp_f64(mut x: f64, mut e: i64) -> f64 {
     while e > 1000 {
-        x *= 2f64.powi(1000);
+        x *= pow2(1000);
         e -= 1000;
         if x.is_infinite() {
             return x;
         }
     }
     while e < -1000 {
-        x *= 2f64.powi(-1000);
+        x *= pow2(-1000);
         e += 1000;
         if x == 0.0 {
             return x;
         }
     }
-    x * 2f64.powi(e as i32)
+    x * pow2(e as i32)
+}
+
+/// `2^e` for `|e| ≤ 1000`, from its bits (the value `2f64.powi(e)` has,
+/// without its library call).
+fn pow2(e: i32) -> f64 {
+    debug_assert!((-1000..=1000).contains(&e));
+    f64::from_bits(((e + 1023) as u64) << 52)
 }
 
 impl PartialEq for Dyadic {
@@ -198,74 +342,215 @@ impl PartialOrd for Dyadic {
 
 impl Ord for Dyadic {
     fn cmp(&self, other: &Self) -> Ordering {
-        match self.exp.cmp(&other.exp) {
-            Ordering::Equal => self.mant.cmp(&other.mant),
-            Ordering::Greater => (&self.mant << (self.exp - other.exp) as usize).cmp(&other.mant),
-            Ordering::Less => self
-                .mant
-                .cmp(&(&other.mant << (other.exp - self.exp) as usize)),
+        if let (Some(a), Some(b)) = (self.fixed(), other.fixed()) {
+            return cmp_fixed(a, self.exp, b, other.exp);
         }
+        cmp_wider(self, other)
     }
+}
+
+/// [`Ord::cmp`] for a mantissa wider than an `i128`, out of line so that
+/// the `i128` path stays short.
+#[cold]
+#[inline(never)]
+fn cmp_wider(this: &Dyadic, other: &Dyadic) -> Ordering {
+    if let (Some(a), Some(b)) = (this.wide_mant(), other.wide_mant()) {
+        return wide::cmp(a, this.exp, b, other.exp);
+    }
+    // By sign and the place of the leading bit first, which spares the
+    // long shifts of far-apart exponents.
+    let (sa, sb) = (this.signum(), other.signum());
+    if sa != sb || sa == 0 {
+        return sa.cmp(&sb);
+    }
+    let top = |x: &Dyadic| {
+        let len = match &x.mant {
+            Mant::Small(m) => 128 - m.unsigned_abs().leading_zeros() as usize,
+            Mant::Wide(m) => m.len() as usize,
+            Mant::Big(m) => m.bit_len(),
+        };
+        x.exp as i64 + len as i64
+    };
+    let mag = top(this).cmp(&top(other));
+    if mag != Ordering::Equal {
+        return if sa > 0 { mag } else { mag.reverse() };
+    }
+    let (a, b) = (this.ibig(), other.ibig());
+    match this.exp.cmp(&other.exp) {
+        Ordering::Equal => a.cmp(&b),
+        Ordering::Greater => (a.as_ref() << (this.exp - other.exp) as usize).cmp(&b),
+        Ordering::Less => a
+            .as_ref()
+            .cmp(&(b.as_ref() << (other.exp - this.exp) as usize)),
+    }
+}
+
+/// `a·2^ea` against `b·2^eb` without overflow: by sign, then by the place
+/// of the leading bit, and only for equal places (where the shift is short
+/// and cannot overflow a `u128`) by the aligned magnitudes.
+fn cmp_fixed(a: i128, ea: i32, b: i128, eb: i32) -> Ordering {
+    let (sa, sb) = (a.signum(), b.signum());
+    if sa != sb || sa == 0 {
+        return sa.cmp(&sb);
+    }
+    let (ma, mb) = (a.unsigned_abs(), b.unsigned_abs());
+    let top = |m: u128, e: i32| e as i64 + (128 - m.leading_zeros()) as i64;
+    let mag = match top(ma, ea).cmp(&top(mb, eb)) {
+        Ordering::Equal if ea >= eb => (ma << (ea - eb)).cmp(&mb),
+        Ordering::Equal => ma.cmp(&(mb << (eb - ea))),
+        unequal => unequal,
+    };
+    if sa > 0 { mag } else { mag.reverse() }
+}
+
+/// `m · 2^s` if it fits in an `i128`.
+fn shl_fixed(m: i128, s: i64) -> Option<i128> {
+    let r = m.checked_shl(u32::try_from(s).ok()?)?;
+    (r >> s == m).then_some(r)
+}
+
+/// `a·2^ea − b·2^eb` if `SUB`, else the sum, on `i128` mantissas, if the
+/// aligned operands and the result fit. A zero operand takes the other's
+/// exponent, so it never needs a shift.
+fn add_fixed<const SUB: bool>((a, ea): (i128, i32), (b, eb): (i128, i32)) -> Option<Dyadic> {
+    let (ea, eb) = match (a, b) {
+        (0, _) => (eb, eb),
+        (_, 0) => (ea, ea),
+        _ => (ea, eb),
+    };
+    let d = ea as i64 - eb as i64;
+    let (a, b, e) = match d.cmp(&0) {
+        Ordering::Equal => (a, b, ea),
+        Ordering::Greater => (shl_fixed(a, d)?, b, eb),
+        Ordering::Less => (a, shl_fixed(b, -d)?, ea),
+    };
+    let r = if SUB {
+        a.checked_sub(b)
+    } else {
+        a.checked_add(b)
+    };
+    Some(Dyadic::small(r?, e))
+}
+
+/// `a·2^ea + b·2^eb` on 256-bit mantissas, if the aligned operands and the
+/// sum fit; a zero operand takes the other's exponent, as in [`add_fixed`].
+fn add_wide((a, ea): (Wide, i32), (b, eb): (Wide, i32)) -> Option<Dyadic> {
+    let (ea, eb) = match (a.signum(), b.signum()) {
+        (0, _) => (eb, eb),
+        (_, 0) => (ea, ea),
+        _ => (ea, eb),
+    };
+    let d = ea as i64 - eb as i64;
+    let shift = |m: Wide, d: i64| m.shl(u32::try_from(d).ok()?);
+    let (a, b, e) = match d.cmp(&0) {
+        Ordering::Equal => (a, b, ea),
+        Ordering::Greater => (shift(a, d)?, b, eb),
+        Ordering::Less => (a, shift(b, -d)?, ea),
+    };
+    Some(Dyadic::wide(a.add(b)?, e))
+}
+
+/// `x − y` if `SUB`, else `x + y`: on `i128` mantissas when they fit,
+/// else on 256-bit ones, else on big integers, shifting only the operand with the larger exponent.
+fn add_or_sub<const SUB: bool>(x: &Dyadic, y: &Dyadic) -> Dyadic {
+    if let (Some(a), Some(b)) = (x.fixed(), y.fixed())
+        && let Some(r) = add_fixed::<SUB>((a, x.exp), (b, y.exp))
+    {
+        return r;
+    }
+    add_or_sub_wider::<SUB>(x, y)
+}
+
+/// [`add_or_sub`] once the `i128` mantissas do not do, out of line.
+#[cold]
+#[inline(never)]
+fn add_or_sub_wider<const SUB: bool>(x: &Dyadic, y: &Dyadic) -> Dyadic {
+    if let (Some(a), Some(b)) = (x.wide_mant(), y.wide_mant())
+        && let Some(r) = add_wide((a, x.exp), (if SUB { b.neg() } else { b }, y.exp))
+    {
+        return r;
+    }
+    let (a, b) = (x.ibig(), y.ibig());
+    let (a, b, e) = match x.exp.cmp(&y.exp) {
+        Ordering::Equal => (a, b, x.exp),
+        Ordering::Greater => (
+            std::borrow::Cow::Owned(a.as_ref() << (x.exp - y.exp) as usize),
+            b,
+            y.exp,
+        ),
+        Ordering::Less => (
+            a,
+            std::borrow::Cow::Owned(b.as_ref() << (y.exp - x.exp) as usize),
+            x.exp,
+        ),
+    };
+    let m = if SUB {
+        a.as_ref() - b.as_ref()
+    } else {
+        a.as_ref() + b.as_ref()
+    };
+    Dyadic::big(m, e)
 }
 
 impl Add for &Dyadic {
     type Output = Dyadic;
     fn add(self, o: &Dyadic) -> Dyadic {
-        // Shift only the operand with the larger exponent; borrow the other.
-        match self.exp.cmp(&o.exp) {
-            Ordering::Equal => Dyadic {
-                mant: &self.mant + &o.mant,
-                exp: self.exp,
-            },
-            Ordering::Greater => Dyadic {
-                mant: (&self.mant << (self.exp - o.exp) as usize) + &o.mant,
-                exp: o.exp,
-            },
-            Ordering::Less => Dyadic {
-                mant: &self.mant + (&o.mant << (o.exp - self.exp) as usize),
-                exp: self.exp,
-            },
-        }
+        add_or_sub::<false>(self, o)
     }
 }
 
 impl Sub for &Dyadic {
     type Output = Dyadic;
     fn sub(self, o: &Dyadic) -> Dyadic {
-        match self.exp.cmp(&o.exp) {
-            Ordering::Equal => Dyadic {
-                mant: &self.mant - &o.mant,
-                exp: self.exp,
-            },
-            Ordering::Greater => Dyadic {
-                mant: (&self.mant << (self.exp - o.exp) as usize) - &o.mant,
-                exp: o.exp,
-            },
-            Ordering::Less => Dyadic {
-                mant: &self.mant - (&o.mant << (o.exp - self.exp) as usize),
-                exp: self.exp,
-            },
-        }
+        add_or_sub::<true>(self, o)
     }
 }
 
 impl Mul for &Dyadic {
     type Output = Dyadic;
     fn mul(self, o: &Dyadic) -> Dyadic {
-        Dyadic {
-            mant: &self.mant * &o.mant,
-            exp: self.exp + o.exp,
+        let exp = self.exp + o.exp;
+        if let (Some(a), Some(b)) = (self.fixed(), o.fixed()) {
+            // Below 2^127 by the lengths alone; else the checked product.
+            let len = |m: i128| 128 - m.unsigned_abs().leading_zeros();
+            let p = if len(a) + len(b) <= 127 {
+                Some(a.wrapping_mul(b))
+            } else {
+                a.checked_mul(b)
+            };
+            if let Some(p) = p {
+                return Dyadic::small(p, exp);
+            }
         }
+        mul_wider(self, o, exp)
     }
+}
+
+/// `x · y = m · 2^exp` once the `i128` mantissas do not do, out of line.
+#[cold]
+#[inline(never)]
+fn mul_wider(x: &Dyadic, y: &Dyadic, exp: i32) -> Dyadic {
+    if let (Some(a), Some(b)) = (x.wide_mant(), y.wide_mant())
+        && let Some(p) = a.mul(b)
+    {
+        return Dyadic::wide(p, exp);
+    }
+    Dyadic::big(x.ibig().as_ref() * y.ibig().as_ref(), exp)
 }
 
 impl Neg for &Dyadic {
     type Output = Dyadic;
     fn neg(self) -> Dyadic {
-        Dyadic {
-            mant: -&self.mant,
-            exp: self.exp,
+        if let Some(m) = self.fixed().and_then(i128::checked_neg) {
+            return Dyadic {
+                mant: Mant::Small(m),
+                exp: self.exp,
+            };
         }
+        if let Some(m) = self.wide_mant() {
+            return Dyadic::wide(m.neg(), self.exp);
+        }
+        Dyadic::big(-self.ibig().as_ref(), self.exp)
     }
 }
 
@@ -286,10 +571,7 @@ owned_ops!(Add add, Sub sub, Mul mul);
 impl Neg for Dyadic {
     type Output = Dyadic;
     fn neg(self) -> Dyadic {
-        Dyadic {
-            mant: -self.mant,
-            exp: self.exp,
-        }
+        -&self
     }
 }
 
@@ -330,8 +612,152 @@ pub fn sub3(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> [Dyadic; 3] {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
+    use core::cell::Cell;
+    use rand::rngs::SmallRng;
+    use rand::{Rng, SeedableRng};
+
+    thread_local!(pub(super) static BIG_ONLY: Cell<bool> = const { Cell::new(false) });
+
+    /// `f()` with every operation done on big integers, as if no mantissa
+    /// fitted in an `i128`: the reference for the fixed-width arithmetic.
+    pub(crate) fn big_only<R>(f: impl FnOnce() -> R) -> R {
+        struct Reset;
+        impl Drop for Reset {
+            fn drop(&mut self) {
+                BIG_ONLY.with(|b| b.set(false));
+            }
+        }
+        BIG_ONLY.with(|b| b.set(true));
+        let _reset = Reset;
+        f()
+    }
+
+    /// The value as (odd mantissa, exponent), or (0, 0): equal exactly for
+    /// equal values, computed on big integers alone.
+    fn parts(x: &Dyadic) -> (IBig, i64) {
+        let m = x.ibig().into_owned();
+        match m.trailing_zeros() {
+            None => (m, 0),
+            Some(tz) => (m >> tz, x.exp as i64 + tz as i64),
+        }
+    }
+
+    /// A dyadic whose mantissa has 1 to about 250 bits (so that sums and
+    /// products land on both sides of 2^127) and whose exponent is near
+    /// zero, near another's, subnormal (f32 and f64) or huge.
+    fn random(r: &mut SmallRng) -> Dyadic {
+        let bits = [1, 8, 24, 53, 63, 64][r.random_range(0..6)];
+        let mut m = || {
+            let x = r.random::<i64>() >> (64 - bits);
+            if x == 0 { 1 } else { x }
+        };
+        let (m0, m1, m2) = (m(), m(), m());
+        let e = match r.random_range(0..6) {
+            0 => r.random_range(-4..4),
+            1 => r.random_range(-160..-140),
+            2 => r.random_range(-1100..-1060),
+            3 => r.random_range(90..110),
+            4 => r.random_range(-300..300),
+            _ => r.random_range(-60..60),
+        };
+        let mant = match r.random_range(0..5) {
+            0 => Dyadic::new(0, r.random_range(-5..5)),
+            1 => Dyadic::new(m0, 0),
+            2 => &Dyadic::new(m0, 0) * &Dyadic::new(m1, r.random_range(0..64)),
+            3 => &(&Dyadic::new(m0, 0) * &Dyadic::new(m1, 0)) * &Dyadic::new(m2, 0),
+            _ => &Dyadic::new(m0, 70) + &Dyadic::new(m1, 0),
+        };
+        mant.mul_pow2(e)
+    }
+
+    /// Every operation on random dyadics gives the same value, ordering,
+    /// sign and `f64` with `i128` mantissas as on big integers alone, on
+    /// operands and results that fit, overflow mid-way or never fit.
+    #[test]
+    fn fixed_width_arithmetic_matches_big_integers() {
+        let mut r = SmallRng::seed_from_u64(0x0dd_a1c);
+        let (mut fixed, mut fell_back, mut wide) = (0, 0, 0);
+        for _ in 0..60_000 {
+            let (x, y) = (random(&mut r), random(&mut r));
+            let k = r.random_range(-200..200);
+            let fast = (
+                [&x + &y, &x - &y, &x * &y, -&x, x.mul_pow2(k)],
+                (x.cmp(&y), x == y, x.signum(), x.is_zero()),
+                [x.to_f64(), (&x * &y).to_f64(), (&x + &y).to_f64()].map(f64::to_bits),
+            );
+            let slow = big_only(|| {
+                (
+                    [&x + &y, &x - &y, &x * &y, -&x, x.mul_pow2(k)],
+                    (x.cmp(&y), x == y, x.signum(), x.is_zero()),
+                    [x.to_f64(), (&x * &y).to_f64(), (&x + &y).to_f64()].map(f64::to_bits),
+                )
+            });
+            assert_eq!(fast.1, slow.1, "{x:?} {y:?}");
+            // The ordering is the sign of the difference.
+            let diff = big_only(|| (&x - &y).signum());
+            assert_eq!(fast.1.0, diff.cmp(&0), "{x:?} {y:?}");
+            assert_eq!(fast.2, slow.2, "{x:?} {y:?}");
+            for (a, b) in fast.0.iter().zip(&slow.0) {
+                assert_eq!(parts(a), parts(b), "{x:?} {y:?}");
+                // A result is held in the narrowest width its odd part
+                // fits in.
+                let len = parts(a).0.bit_len();
+                let width = match a.mant {
+                    Mant::Small(_) => 127,
+                    Mant::Wide(_) => 255,
+                    Mant::Big(_) => usize::MAX,
+                };
+                let want = [127, 255, usize::MAX].into_iter().find(|&w| len <= w);
+                assert_eq!(Some(width), want, "{a:?}");
+                wide += usize::from(width == 255);
+            }
+            let both_small = |a: &Dyadic| matches!(a.mant, Mant::Small(_));
+            if both_small(&x) && both_small(&y) {
+                fixed += 1;
+                if !both_small(&fast.0[0]) || !both_small(&fast.0[2]) {
+                    fell_back += 1;
+                }
+            }
+        }
+        // Every path was taken, and some sums and products overflowed.
+        assert!(fixed > 20_000 && fell_back > 2_000, "{fixed} {fell_back}");
+        assert!(wide > 20_000, "{wide}");
+    }
+
+    /// Ordering near the edges of the fixed-width comparison: equal leading
+    /// places with exponents up to 127 apart, mantissas of 127 and 128 bits
+    /// (`i128::MIN`) left unnormalised, opposite signs and zero.
+    #[test]
+    fn comparison_at_equal_leading_places() {
+        let raw = |m: i128, exp: i32| Dyadic {
+            mant: Mant::Small(m),
+            exp,
+        };
+        let top = (1i128 << 126) + 1;
+        let cases = [
+            (raw(top, 0), raw(1, 126), Ordering::Greater),
+            (raw(top, -126), raw(1, 0), Ordering::Greater),
+            (raw(-top, 0), raw(-1, 126), Ordering::Less),
+            (
+                raw(i128::MAX - 1, 0),
+                raw(i128::MAX >> 1, 1),
+                Ordering::Equal,
+            ),
+            (raw(i128::MIN, 0), raw(-1, 127), Ordering::Equal),
+            (raw(i128::MIN, -127), raw(-top, -126), Ordering::Greater),
+            (raw(-i128::MAX, 0), raw(1, 127), Ordering::Less),
+            (raw(3, 5), raw(-3, 5), Ordering::Greater),
+            (Dyadic::ZERO, raw(-1, -1000), Ordering::Greater),
+            (raw(0, 7), Dyadic::ZERO, Ordering::Equal),
+        ];
+        for (x, y, want) in cases {
+            assert_eq!(x.cmp(&y), want, "{x:?} {y:?}");
+            assert_eq!(y.cmp(&x), want.reverse(), "{x:?} {y:?}");
+            assert_eq!(big_only(|| x.cmp(&y)), want, "{x:?} {y:?}");
+        }
+    }
 
     /// `to_f64` scales in steps of 2¹⁰⁰⁰ so that neither the scale factor
     /// nor an `i32` exponent overflows; each case below fails if a step is
@@ -351,6 +777,38 @@ mod tests {
         // top 64 bits no longer fits in an i32.
         let big = &Dyadic::new(i64::MAX, i32::MAX) * &Dyadic::new(i64::MAX, 0);
         assert_eq!(big.to_f64(), f64::INFINITY);
+    }
+
+    /// `to_f64` at ties of the rounding to 53 bits, with the bits beyond the
+    /// leading 64 zero or not, of either sign and at every width: the same
+    /// `f64` as on big integers, which rounds a negative tail downwards.
+    #[test]
+    fn to_f64_at_ties_matches_big_integers() {
+        let tie = Dyadic::small(((1 << 52) + 1) << 11 | 1 << 10, 0);
+        for k in [0, 1, 40, 63, 64, 100, 150, 200, 300] {
+            for tail in [0, 1, -1, 3] {
+                for sign in [1, -1] {
+                    let x = &(&tie * &Dyadic::new(sign, k)) + &Dyadic::new(tail, 0);
+                    let want = big_only(|| x.to_f64());
+                    assert_eq!(x.to_f64().to_bits(), want.to_bits(), "{x:?}");
+                }
+            }
+        }
+        // The tie itself goes to even; just above it, up.
+        assert_eq!(tie.to_f64(), (((1u64 << 52) + 2) << 11) as f64);
+        let above = &tie.mul_pow2(100) + &Dyadic::new(1, 0);
+        assert_eq!(
+            above.to_f64(),
+            (((1u64 << 52) + 2) << 11) as f64 * 2f64.powi(100)
+        );
+        assert_eq!((-&above).to_f64(), -above.to_f64());
+    }
+
+    #[test]
+    fn pow2_is_powi() {
+        for e in -1000..=1000 {
+            assert_eq!(pow2(e), 2f64.powi(e), "{e}");
+        }
     }
 
     #[test]

@@ -1,7 +1,8 @@
 //! The exact oracle's arithmetic: every finite `f32` is a dyadic rational
 //! `m·2^e`, and sums, differences and products of dyadics are dyadic, so the
 //! polynomial quantities of every primitive (`d·n`, the discriminant, α, β,
-//! γ, …) are computed here *exactly*, on big integers (`dashu-int`).
+//! γ, …) are computed here *exactly*: on `i128` or 256-bit mantissas on
+//! the stack while they fit, on big integers (`dashu-int`) beyond that.
 //!
 //! A root of a quadratic is in general irrational, so it is never formed.
 //! Instead [`round`] finds its correctly rounded `f32` (ties to even) by
@@ -12,6 +13,7 @@
 pub mod dyadic;
 pub mod quadratic;
 pub mod round;
+mod wide;
 
 pub use dyadic::Dyadic;
 

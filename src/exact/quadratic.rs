@@ -89,13 +89,23 @@ impl Quadratic {
         &(&self.beta * &self.beta) - &(&self.alpha * &self.gamma).mul_pow2(2)
     }
 
-    /// Where `m` lies against the vertex `−β/2α` (the sign of `2αm + β`)
-    /// and the sign of `p(m) = (αm + β)m + γ`, sharing the product `αm`.
-    fn side_and_sign(&self, m: &Dyadic) -> (Ordering, i32) {
+    /// The ordering of the smaller root (`upper` false) or the larger one
+    /// against `m`, for α > 0 and two real roots; `neg` is `[−β, −γ]`.
+    /// `m` lies against the vertex `−β/2α` as `2αm` does against `−β`; a
+    /// root on the other side is settled by that, else by the sign of
+    /// `p(m) = (αm + β)m + γ`, which is how `(αm + β)m` compares to `−γ`
+    /// (p < 0 strictly between the roots).
+    fn root_against(&self, neg: &[Dyadic; 2], m: &Dyadic, upper: bool) -> Ordering {
         let am = &self.alpha * m;
-        let side = (&am.mul_pow2(1) + &self.beta).signum().cmp(&0);
-        let p = &(&(&am + &self.beta) * m) + &self.gamma;
-        (side, p.signum())
+        let side = am.mul_pow2(1).cmp(&neg[0]);
+        match (side, upper) {
+            (Ordering::Greater, false) => Ordering::Less,
+            (Ordering::Less, true) => Ordering::Greater,
+            _ => {
+                let p = (&(&am + &self.beta) * m).cmp(&neg[1]);
+                if upper { p.reverse() } else { p }
+            }
+        }
     }
 
     /// Classifies and returns the correctly rounded roots.
@@ -135,21 +145,9 @@ impl Quadratic {
             }
             _ => {
                 let (g0, g1) = guess_roots(a, b, c, disc.to_f64());
-                // For α > 0, p < 0 strictly between the roots.
-                let t0 = round_to_f32(
-                    |m| match self.side_and_sign(m) {
-                        (Ordering::Greater, _) => Ordering::Less,
-                        (_, p) => p.cmp(&0),
-                    },
-                    g0,
-                );
-                let t1 = round_to_f32(
-                    |m| match self.side_and_sign(m) {
-                        (Ordering::Less, _) => Ordering::Greater,
-                        (_, p) => 0.cmp(&p),
-                    },
-                    g1,
-                );
+                let neg = [-&self.beta, -&self.gamma];
+                let t0 = round_to_f32(|m| self.root_against(&neg, m, false), g0);
+                let t1 = round_to_f32(|m| self.root_against(&neg, m, true), g1);
                 ExactQuadratic::Two(t0, t1)
             }
         }
@@ -166,9 +164,103 @@ fn guess_roots(a: f64, b: f64, c: f64, disc: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::exact::dyadic::tests::big_only;
+    use rand::rngs::SmallRng;
+    use rand::{Rng, SeedableRng};
 
     fn dy(x: f32) -> Dyadic {
         Dyadic::from_f32(x)
+    }
+
+    /// A float with a random sign, mantissa and exponent in `lo..hi`
+    /// (subnormal below −126), or sometimes a small integer or zero.
+    fn random_f32(r: &mut SmallRng, lo: i32, hi: i32) -> f32 {
+        if r.random_bool(0.2) {
+            return r.random_range(-4..=4) as f32;
+        }
+        let e = r.random_range(lo..hi);
+        let x = r.random_range(1.0..2.0f32) * 2f32.powi(e.max(-126));
+        let x = if e < -126 { x * 2f32.powi(e + 126) } else { x };
+        if r.random_bool(0.5) { -x } else { x }
+    }
+
+    /// The quadratic of a random ray and sphere (`|d|² t² + 2(f·d) t +
+    /// |f|² − r²`, `f = o − c`), at one of several scales: ordinary, far
+    /// (origin 1e7 away), subnormal and near 1e30.
+    fn random_quadratic(r: &mut SmallRng) -> Quadratic {
+        use crate::exact::dyadic::{dot, sub3};
+        let (lo, hi) = [(-8, 4), (-30, 24), (-149, -120), (90, 104)][r.random_range(0..4)];
+        let mut v = |lo, hi| [(); 3].map(|_| dy(random_f32(r, lo, hi)));
+        let (o, d, c) = (v(lo, hi), v(lo, hi), v(lo, hi));
+        let f = sub3(&o, &c);
+        let rad = &f[r.random_range(0..3)] + &d[0];
+        let gamma = &dot(&f, &f) - &(&rad * &rad);
+        Quadratic::new(dot(&d, &d), dot(&f, &d).mul_pow2(1), gamma)
+    }
+
+    fn bits(q: ExactQuadratic) -> String {
+        match q {
+            ExactQuadratic::One(t) => format!("One({:#x})", t.to_bits()),
+            ExactQuadratic::Two(a, b) => format!("Two({:#x}, {:#x})", a.to_bits(), b.to_bits()),
+            other => format!("{other:?}"),
+        }
+    }
+
+    /// `root_against` orders a root against `m` as the signs of `2αm + β`
+    /// and `p(m)`, formed by plain sums on big integers, do.
+    #[test]
+    fn root_against_follows_the_signs_of_the_polynomial() {
+        let mut r = SmallRng::seed_from_u64(11);
+        let mut sides = [0; 3];
+        for _ in 0..3_000 {
+            let q = random_quadratic(&mut r);
+            if q.alpha.is_zero() || q.discriminant().signum() <= 0 {
+                continue;
+            }
+            let neg = [-&q.beta, -&q.gamma];
+            let (g0, g1) = guess_roots(
+                q.alpha.to_f64(),
+                q.beta.to_f64(),
+                q.gamma.to_f64(),
+                q.discriminant().to_f64(),
+            );
+            for g in [g0, g1, 0.0, g0 * 1.0000001, g1 * 0.9999999] {
+                let Ok(m) = Dyadic::try_from_f32(g as f32) else {
+                    continue;
+                };
+                let (side, p) = big_only(|| {
+                    let am = &q.alpha * &m;
+                    let side = (&am.mul_pow2(1) + &q.beta).signum();
+                    (side, (&(&(&am + &q.beta) * &m) + &q.gamma).signum())
+                });
+                let want0 = if side > 0 { Ordering::Less } else { p.cmp(&0) };
+                let want1 = if side < 0 {
+                    Ordering::Greater
+                } else {
+                    0.cmp(&p)
+                };
+                assert_eq!(q.root_against(&neg, &m, false), want0, "{q:?} {g}");
+                assert_eq!(q.root_against(&neg, &m, true), want1, "{q:?} {g}");
+                sides[(side + 1) as usize] += 1;
+            }
+        }
+        // Both sides of the vertex, each a shortcut for one root.
+        assert!(sides[0] > 500 && sides[2] > 500, "{sides:?}");
+    }
+
+    /// Solving on `i128` mantissas gives bit for bit what solving on big
+    /// integers alone gives, at every scale.
+    #[test]
+    fn solve_matches_big_integers() {
+        let mut r = SmallRng::seed_from_u64(12);
+        let mut two = 0;
+        for _ in 0..3_000 {
+            let q = random_quadratic(&mut r);
+            let got = q.solve();
+            assert_eq!(bits(got), bits(big_only(|| q.solve())), "{q:?}");
+            two += usize::from(matches!(got, ExactQuadratic::Two(..)));
+        }
+        assert!(two > 500, "{two}");
     }
 
     /// (t − r0)(t − r1)·s with exactly representable roots must give them back.

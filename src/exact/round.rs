@@ -22,9 +22,16 @@ fn value_of(k: i64) -> Dyadic {
     Dyadic::from_f32(float_of(k))
 }
 
-/// The midpoint between the floats with keys `k` and `k + 1`, exactly.
+/// The midpoint between the floats with keys `k` and `k + 1`, exactly:
+/// `(2M + 1)·2^(e−1)` for the float `M·2^e` of a key `k ≥ 0` (its
+/// successor is `(M + 1)·2^e`, across a binade too), mirrored below zero.
 fn midpoint(k: i64) -> Dyadic {
-    (&value_of(k) + &value_of(k + 1)).mul_pow2(-1)
+    if k < 0 {
+        return -midpoint(-k - 1);
+    }
+    let biased = (k >> 23) as i32;
+    let hidden = if biased > 0 { 0x80_0000 } else { 0 };
+    Dyadic::new(2 * ((k & 0x7f_ffff) + hidden) + 1, biased.max(1) - 151)
 }
 
 /// `f32::MAX + ulp(f32::MAX)/2 = 2^128 − 2^103`: from here on, round to ∞.
@@ -54,6 +61,37 @@ pub fn round_to_f32(cmp: impl Fn(&Dyadic) -> Ordering, guess: f64) -> f32 {
         calls.tick();
         cmp(m)
     };
+    round_at_guess(&cmp, guess).unwrap_or_else(|| search(&cmp, guess))
+}
+
+/// The float of the guess itself, when `x` lies strictly between the
+/// midpoints on either side of it (two comparisons, three for a zero);
+/// `None` when it does not, or when the guess is not inside the finite
+/// floats' keys.
+fn round_at_guess(cmp: &impl Fn(&Dyadic) -> Ordering, guess: f64) -> Option<f32> {
+    // NaN and ±∞ (as f32) have keys beyond MAX_KEY.
+    let g = key_of(guess as f32);
+    if g.abs() >= MAX_KEY
+        || cmp(&midpoint(g)) != Ordering::Less
+        || cmp(&midpoint(g - 1)) != Ordering::Greater
+    {
+        return None;
+    }
+    Some(signed(g, cmp))
+}
+
+/// The float with key `k`, with the sign of `x` if it is zero.
+fn signed(k: i64, cmp: &impl Fn(&Dyadic) -> Ordering) -> f32 {
+    if k == 0 && cmp(&Dyadic::ZERO) == Ordering::Less {
+        -0.0
+    } else {
+        float_of(k)
+    }
+}
+
+/// [`round_to_f32`] by a gallop from the guess to the floor of `x` and a
+/// bisection, then the midpoint above the floor.
+fn search(cmp: &impl Fn(&Dyadic) -> Ordering, guess: f64) -> f32 {
     let limit = overflow_threshold();
     if cmp(&limit) != Ordering::Less {
         return f32::INFINITY;
@@ -118,11 +156,7 @@ pub fn round_to_f32(cmp: impl Fn(&Dyadic) -> Ordering, guess: f64) -> f32 {
             }
         }
     };
-    if k == 0 && cmp(&Dyadic::ZERO) == Ordering::Less {
-        -0.0
-    } else {
-        float_of(k)
-    }
+    signed(k, cmp)
 }
 
 /// How many exact comparisons `round_to_f32` made on this thread (unit
@@ -168,6 +202,73 @@ mod tests {
     /// x = p/q with q > 0 (both dyadic).
     fn ratio(p: Dyadic, q: Dyadic, guess: f64) -> f32 {
         round_to_f32(|m| p.cmp(&(m * &q)), guess)
+    }
+
+    /// Midpoints are the mean of their two floats, across binades, the
+    /// subnormal boundary and zero.
+    #[test]
+    fn midpoints_are_means() {
+        use rand::rngs::SmallRng;
+        use rand::{Rng, SeedableRng};
+        let mut r = SmallRng::seed_from_u64(3);
+        let edges = [
+            0,
+            1,
+            0x7f_fffe,
+            0x7f_ffff,
+            0x80_0000,
+            0xff_ffff,
+            MAX_KEY - 1,
+        ];
+        let keys = edges
+            .into_iter()
+            .flat_map(|k| [k, -k - 1])
+            .chain((0..2_000).map(|_| r.random_range(-MAX_KEY..MAX_KEY)));
+        for k in keys {
+            let mean = (&value_of(k) + &value_of(k + 1)).mul_pow2(-1);
+            assert_eq!(midpoint(k), mean, "{k:#x}");
+        }
+        assert_eq!(midpoint(-1), Dyadic::new(-1, -150));
+        assert_eq!(midpoint(0x7f_ffff), Dyadic::new(0xff_ffff, -150));
+    }
+
+    /// The two comparisons at the guess give what the full search gives,
+    /// for `x` on a float, on a midpoint (a tie, which they leave to the
+    /// search), just off either, around zero and near ±MAX, from guesses on
+    /// `x`, on its neighbours and a few floats away.
+    #[test]
+    fn the_guess_shortcut_agrees_with_the_search() {
+        use rand::rngs::SmallRng;
+        use rand::{Rng, SeedableRng};
+        let mut r = SmallRng::seed_from_u64(0x5ea_4c4);
+        let mut shortcut = 0;
+        for i in 0..20_000 {
+            let k = match i % 4 {
+                0 => r.random_range(-MAX_KEY + 1..MAX_KEY),
+                1 => r.random_range(-4..4),
+                2 => MAX_KEY - r.random_range(1..4),
+                _ => -MAX_KEY + r.random_range(1..4),
+            };
+            let tiny = Dyadic::new(r.random_range(-3..=3), -200);
+            let x = match r.random_range(0..4) {
+                0 => value_of(k),
+                1 => midpoint(k),
+                2 => &midpoint(k) + &tiny,
+                _ => &value_of(k) + &tiny,
+            };
+            let cmp = |m: &Dyadic| x.cmp(m);
+            let want = search(&cmp, 0.0);
+            for dk in [0, 1, -1, 2, -3] {
+                let guess = f64::from(float_of((k + dk).clamp(-MAX_KEY, MAX_KEY)));
+                if round_at_guess(&cmp, guess).is_some() {
+                    shortcut += 1;
+                }
+                let got = round_to_f32(cmp, guess);
+                assert_eq!(got.to_bits(), want.to_bits(), "{x:?} from {guess:e}");
+            }
+        }
+        // The shortcut was taken, and not always.
+        assert!((5_000..80_000).contains(&shortcut), "{shortcut}");
     }
 
     #[test]
