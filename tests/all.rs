@@ -4,6 +4,7 @@
 //! and what made each `cargo mutants` mutant slow. Each module keeps its
 //! own `#![cfg(feature = ...)]`.
 
+mod bounds;
 mod cli;
 mod determinism;
 mod eval_cli;

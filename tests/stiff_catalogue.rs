@@ -142,7 +142,7 @@ fn every_line_parses_and_every_family_is_documented() {
 }
 
 #[test]
-fn well_conditioned_families_are_in_domain_with_bounds_of_two_ulps() {
+fn well_conditioned_families_have_kappa_at_most_2_to_the_18() {
     let fams: BTreeMap<String, Family> = families().into_iter().collect();
     let mut checked = 0;
     for (at, c) in lines() {
