@@ -6,6 +6,10 @@
 //! arithmetic. The answer is the exact class and correctly rounded roots
 //! whichever stage gives it; the stage only says how much work it took.
 //!
+//! With flush-to-zero or denormals-are-zero on, the filter's bounds do not
+//! hold, so every call goes to the exact stage
+//! ([`crate::num::certify::subnormals_work`]): slower, still exact.
+//!
 //! ```
 //! use rayoracle::{Ray, stage::Stage, sphere::{Sphere, reference::intersect_staged}};
 //! use glam::Vec3;

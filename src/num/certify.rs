@@ -39,3 +39,48 @@ pub fn certify<L: Real>(t: L, e: L) -> L::Mask {
     let nonneg = e.gt(L::splat(0.0)) | e.eq(L::splat(0.0));
     L::same_f32(t - e, t + e) & nonneg
 }
+
+/// Whether the floating-point environment keeps subnormals: false when
+/// flush-to-zero (FTZ) or denormals-are-zero (DAZ) is on, as some renderers
+/// and audio engines set it. The filters' bounds assume IEEE-754 gradual
+/// underflow (an f32 subnormal input, an f64 → f32 subnormal result), so
+/// the kernels check this on every call and, when it fails, take the exact
+/// path, whose arithmetic is on integers and unaffected.
+///
+/// ```
+/// // A default Rust program runs with both off.
+/// assert!(rayoracle::num::certify::subnormals_work());
+/// ```
+#[inline(always)]
+pub fn subnormals_work() -> bool {
+    subnormals_work_with(|a, b| core::hint::black_box(a) * core::hint::black_box(b))
+}
+
+/// [`subnormals_work`] with the multiplication given, so that a test can
+/// pass one that flushes.
+#[inline(always)]
+fn subnormals_work_with(mul: impl Fn(f64, f64) -> f64) -> bool {
+    // FTZ makes `half` 0; DAZ reads the subnormal `half` as 0 when doubling.
+    let half = mul(f64::MIN_POSITIVE, 0.5);
+    half != 0.0 && mul(half, 2.0) == f64::MIN_POSITIVE
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A multiplication that flushes subnormal results (FTZ), and one that
+    /// reads subnormal inputs as 0 (DAZ), are both detected.
+    #[test]
+    fn flushing_is_detected() {
+        let sub = |x: f64| x != 0.0 && x.abs() < f64::MIN_POSITIVE;
+        let ftz = |a: f64, b: f64| if sub(a * b) { 0.0 } else { a * b };
+        let daz = |a: f64, b: f64| {
+            let z = |x: f64| if sub(x) { 0.0 } else { x };
+            z(a) * z(b)
+        };
+        assert!(subnormals_work_with(|a, b| a * b));
+        assert!(!subnormals_work_with(ftz));
+        assert!(!subnormals_work_with(daz));
+    }
+}

@@ -203,6 +203,17 @@ impl M4 {
     pub fn all(self) -> bool {
         self.0.to_bitmask() == 0b1111
     }
+    /// `self` if `keep`, else no lane.
+    ///
+    /// ```
+    /// use rayoracle::num::real::{F64x4, Real};
+    /// let m = F64x4::splat(1.0).gt(F64x4::splat(0.0));
+    /// assert_eq!((m.only_if(true).lanes(), m.only_if(false).lanes()), ([true; 4], [false; 4]));
+    /// ```
+    #[inline(always)]
+    pub fn only_if(self, keep: bool) -> M4 {
+        if keep { self } else { M4(f64x4::ZERO) }
+    }
     /// The lanes as booleans.
     #[inline(always)]
     pub fn lanes(self) -> [bool; 4] {

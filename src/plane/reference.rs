@@ -3,7 +3,7 @@
 
 use super::{Plane, PlaneHit, exact, kernel};
 use crate::Ray;
-use crate::num::certify::certify;
+use crate::num::certify::{certify, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a plane: the exact class over `t ∈ ℝ`, and the
@@ -44,6 +44,9 @@ pub fn intersect_staged(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
 #[doc(hidden)]
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
+    if !subnormals_work() {
+        return (escalate(ray, plane), Stage::Exact);
+    }
     let w = |v: glam::Vec3| v.to_array().map(f64::from);
     let f = kernel::filter(
         w(ray.origin),

@@ -3,7 +3,7 @@
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
 use super::{Plane, PlaneHit, kernel, reference};
-use crate::num::certify::certify;
+use crate::num::certify::{certify, subnormals_work};
 use crate::num::real::{F64x4, M4, Real};
 use crate::ray4::{Ray4, gather3, scatter3};
 use wide::{f32x4, i32x4};
@@ -107,7 +107,7 @@ pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
         class: i32x4::from([0, 1, 2, 3].map(class)),
         t: f32x4::from(F64x4::select(hit, f.t, F64x4::splat(f64::NAN)).to_f32()),
     };
-    let done = hit | f.parallel | f.in_plane;
+    let done = (hit | f.parallel | f.in_plane).only_if(subnormals_work());
     if !done.all() {
         out.settle(done, ray, p);
     }

@@ -3,7 +3,7 @@
 
 use super::{Quadric, QuadricHit, exact, kernel};
 use crate::Ray;
-use crate::num::certify::certify;
+use crate::num::certify::{certify, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a quadric: the exact class over `t ∈ ℝ`, and the
@@ -46,6 +46,9 @@ pub fn intersect_staged(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
 #[doc(hidden)]
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
+    if !subnormals_work() {
+        return (escalate(ray, quadric), Stage::Exact);
+    }
     let w = |v: glam::Vec3| v.to_array().map(f64::from);
     let f = kernel::filter(
         &quadric.coeffs.map(f64::from),

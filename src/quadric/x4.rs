@@ -3,7 +3,7 @@
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
 use super::{Quadric, QuadricHit, kernel, reference};
-use crate::num::certify::certify;
+use crate::num::certify::{certify, subnormals_work};
 use crate::num::real::{F64x4, M4, Real};
 use crate::ray4::Ray4;
 use wide::{f32x4, i32x4};
@@ -114,7 +114,7 @@ pub fn intersect(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
         t0: f32x4::from(lo.to_f32()),
         t1: f32x4::from(hi.to_f32()),
     };
-    let done = two | one | f.none | f.all;
+    let done = (two | one | f.none | f.all).only_if(subnormals_work());
     if !done.all() {
         out.settle(done, ray, q);
     }

@@ -3,7 +3,7 @@
 
 use super::{Sphere, SphereHit, exact, kernel};
 use crate::Ray;
-use crate::num::certify::certify;
+use crate::num::certify::{certify, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a sphere: the exact class and both roots over
@@ -48,6 +48,9 @@ pub fn intersect_staged(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
 #[doc(hidden)]
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage) {
+    if !subnormals_work() {
+        return (escalate(ray, sphere), Stage::Exact);
+    }
     let w = |v: glam::Vec3| v.to_array().map(f64::from);
     let f = kernel::filter(
         w(ray.origin),

@@ -3,7 +3,7 @@
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
 use super::{Sphere, SphereHit, kernel, reference};
-use crate::num::certify::certify;
+use crate::num::certify::{certify, subnormals_work};
 use crate::num::real::{F64x4, M4, Real};
 use crate::ray4::{Ray4, gather3, scatter3};
 use wide::{f32x4, i32x4};
@@ -106,7 +106,7 @@ pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
         t0: f32x4::from(lo.to_f32()),
         t1: f32x4::from(hi.to_f32()),
     };
-    let done = f.none | two;
+    let done = (f.none | two).only_if(subnormals_work());
     if !done.all() {
         out.settle(done, ray, s);
     }
