@@ -38,12 +38,15 @@ fn quick_report_writes_the_table_the_json_rows_and_a_plot_per_kernel() {
         "kernel",
         "variant",
         "family",
+        "conditioning",
         "cases",
         "max_bits",
         "p99_bits",
         "mean_bits",
         "class_mismatches",
         "ns_per_ray",
+        "stages",
+        "front",
     ];
     for row in &rows {
         let obj = row.as_object().unwrap();
@@ -59,7 +62,23 @@ fn quick_report_writes_the_table_the_json_rows_and_a_plot_per_kernel() {
             row["cases"].as_u64().unwrap() <= 64,
             "--quick takes 64 cases a family"
         );
+        assert!(matches!(row["conditioning"].as_str(), Some("well" | "ill")), "{row}");
+        assert!(row["front"].is_boolean(), "{row}");
+        // The staged variants say which stage decided each case; the
+        // others have no stages.
+        let stages = row["stages"].as_object().unwrap();
+        let staged = matches!(row["variant"].as_str(), Some("reference" | "x4"))
+            && !row["kernel"].as_str().unwrap().starts_with("camera");
+        if staged {
+            let sum: f64 = stages.values().map(|v| v.as_f64().unwrap()).sum();
+            assert!((sum - 1.0).abs() < 1e-9, "{row}");
+            assert_eq!(stages.keys().collect::<Vec<_>>(), ["exact", "filter"], "{row}");
+        } else {
+            assert!(stages.is_empty(), "{row}");
+        }
     }
+    // The Markdown shows the same front flags as the rows.
+    assert!(rows.iter().any(|r| r["front"] == true));
     // The keys in the order, as written.
     let first = &text[..text.find('}').unwrap()];
     let at: Vec<usize> = keys

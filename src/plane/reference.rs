@@ -69,6 +69,7 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
 /// The last stage: the exact oracle; [`PlaneHit::Parallel`] for a
 /// non-finite input.
 #[cold]
+#[inline(never)]
 pub(crate) fn escalate(ray: &Ray, plane: &Plane) -> PlaneHit {
     exact::intersect(ray, plane).unwrap_or(PlaneHit::Parallel)
 }

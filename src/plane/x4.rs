@@ -117,6 +117,7 @@ pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 impl PlaneHit4 {
     /// Replaces every lane not `done` with the scalar stages' answer.
     #[cold]
+    #[inline(never)]
     fn settle(&mut self, done: M4, ray: &Ray4, p: &Plane4) {
         let rays = ray.to_rays();
         let (a, n) = (scatter3(p.point), scatter3(p.normal));

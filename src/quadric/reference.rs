@@ -79,6 +79,7 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
 /// The last stage: the exact oracle; [`QuadricHit::None`] for a non-finite
 /// input.
 #[cold]
+#[inline(never)]
 pub(crate) fn escalate(ray: &Ray, quadric: &Quadric) -> QuadricHit {
     exact::intersect(ray, quadric).unwrap_or(QuadricHit::None)
 }

@@ -124,6 +124,7 @@ pub fn intersect(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
 impl QuadricHit4 {
     /// Replaces every lane not `done` with the scalar stages' answer.
     #[cold]
+    #[inline(never)]
     fn settle(&mut self, done: M4, ray: &Ray4, q: &Quadric4) {
         let rays = ray.to_rays();
         let k = q.coeffs.map(|c| c.to_array());

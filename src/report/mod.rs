@@ -8,8 +8,10 @@
 //!   [`case_error`]) of each case, over the cases whose class matches:
 //!   the maximum, the 99th percentile and the mean;
 //! * **class mismatches**: cases classified differently from the oracle
-//!   (for ill-conditioned families, the tests judge these against the
-//!   documented band, [`crate::check`]);
+//!   (the reference and x4 have none, [`crate::check`]);
+//! * **stages**: for the reference and x4, the share of the cases each
+//!   [`Stage`](crate::stage::Stage) decided (the filter, or exact
+//!   arithmetic);
 //! * **ns per ray**: the median over repeated passes of the time per case
 //!   of one pass, every variant timed in the same run, one `black_box`ed
 //!   call per case (per packet of four for x4), one core. A camera case
@@ -40,8 +42,12 @@ use variant::Batch;
 /// ```
 /// use rayoracle::report::Row;
 /// let r = Row { kernel: "sphere".into(), variant: "x4".into(), family: "sphere/far-tiny".into(),
-///     cases: 4, max_bits: 1.0, p99_bits: 1.0, mean_bits: 0.25, class_mismatches: 0, ns_per_ray: 20.0 };
-/// assert!(serde_json::to_string(&r).unwrap().starts_with(r#"{"kernel":"sphere","variant":"x4""#));
+///     conditioning: "well".into(), cases: 4, max_bits: 1.0, p99_bits: 1.0, mean_bits: 0.25,
+///     class_mismatches: 0, ns_per_ray: 20.0, stages: [("filter".into(), 0.75), ("exact".into(), 0.25)].into(),
+///     front: true };
+/// let json = serde_json::to_string(&r).unwrap();
+/// assert!(json.starts_with(r#"{"kernel":"sphere","variant":"x4""#));
+/// assert!(json.ends_with(r#""stages":{"exact":0.25,"filter":0.75},"front":true}"#));
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Row {
@@ -51,6 +57,8 @@ pub struct Row {
     pub variant: String,
     /// The family, `kernel/name`.
     pub family: String,
+    /// `well` or `ill`, as the catalogue says of the family.
+    pub conditioning: String,
     /// Cases in the family.
     pub cases: usize,
     /// Worst bits of error over the cases whose class matches.
@@ -63,6 +71,12 @@ pub struct Row {
     pub class_mismatches: usize,
     /// Median time per case, in nanoseconds.
     pub ns_per_ray: f64,
+    /// For the staged variants (reference, x4): the share of the cases each
+    /// stage decided, by [`Stage::name`](crate::stage::Stage::name); empty
+    /// for the others.
+    pub stages: std::collections::BTreeMap<String, f64>,
+    /// The variant is on its kernel's Pareto front ([`points`]).
+    pub front: bool,
 }
 
 /// How much to run.
@@ -152,12 +166,76 @@ fn accuracy_against(
         kernel: family.kernel.name().into(),
         variant: variant.name().into(),
         family: family.name.clone(),
+        conditioning: if family.well_conditioned {
+            "well"
+        } else {
+            "ill"
+        }
+        .into(),
         cases: family.cases.len(),
         max_bits: max,
         p99_bits: p99,
         mean_bits: mean,
         class_mismatches: mismatches,
         ns_per_ray: f64::NAN,
+        stages: match variant {
+            Variant::Reference | Variant::X4 => stage_shares(&family.cases),
+            _ => Default::default(),
+        },
+        front: false,
+    }
+}
+
+/// The share of `cases` each stage decides (the same for the reference and
+/// x4, which run the same filter); empty for cameras, which have no stages.
+///
+/// ```
+/// use rayoracle::report::{Catalogue, stage_shares};
+/// let c = Catalogue::builtin().unwrap();
+/// // Every exact tangent needs exact arithmetic.
+/// let s = stage_shares(&c.family("sphere/exact-tangent").unwrap().cases);
+/// assert_eq!(s["exact"], 1.0);
+/// assert_eq!(s.values().sum::<f64>(), 1.0);
+/// ```
+pub fn stage_shares(cases: &[crate::case::Case]) -> std::collections::BTreeMap<String, f64> {
+    use crate::case::Case;
+    use crate::stage::Stage;
+    let mut counts = [0usize; Stage::ALL.len()];
+    let mut n = 0;
+    for case in cases {
+        let stage = match case {
+            Case::Plane(r, p) => crate::plane::reference::intersect_staged(r, p).1,
+            Case::Sphere(r, s) => crate::sphere::reference::intersect_staged(r, s).1,
+            Case::Quadric(r, q) => crate::quadric::reference::intersect_staged(r, q).1,
+            Case::Camera(..) => continue,
+        };
+        counts[Stage::ALL
+            .iter()
+            .position(|s| *s == stage)
+            .expect("a stage")] += 1;
+        n += 1;
+    }
+    if n == 0 {
+        return Default::default();
+    }
+    Stage::ALL
+        .iter()
+        .zip(counts)
+        .map(|(s, c)| (s.name().to_string(), c as f64 / n as f64))
+        .collect()
+}
+
+/// Marks each row whose variant is on its kernel's Pareto front.
+pub fn mark_front(rows: &mut [Row], catalogue: &Catalogue) {
+    for kernel in Kernel::ALL {
+        let front: Vec<String> = points(rows, catalogue, kernel)
+            .into_iter()
+            .filter(|p| p.front)
+            .map(|p| p.variant)
+            .collect();
+        for r in rows.iter_mut().filter(|r| r.kernel == kernel.name()) {
+            r.front = front.contains(&r.variant);
+        }
     }
 }
 
@@ -199,6 +277,7 @@ pub fn run(catalogue: &Catalogue, options: Options, on_step: &mut dyn FnMut()) -
             on_step();
         }
     }
+    mark_front(&mut rows, &catalogue);
     rows
 }
 
@@ -289,16 +368,20 @@ pub fn markdown(rows: &[Row], catalogue: &Catalogue) -> String {
             continue;
         }
         out += &format!("### {}\n\n", kernel.name());
-        out += "| family | cond. | variant | cases | max bits | p99 bits | mean bits | class mismatches | ns/ray |\n";
-        out += "|---|---|---|---:|---:|---:|---:|---:|---:|\n";
+        out += "| family | cond. | variant | cases | max bits | p99 bits | mean bits | class mismatches | filter / exact | ns/ray |\n";
+        out += "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
         for r in mine {
             let cond = match catalogue.family(&r.family) {
                 Some(f) if f.well_conditioned => "well",
                 Some(_) => "ill",
                 None => "?",
             };
+            let stages = match (r.stages.get("filter"), r.stages.get("exact")) {
+                (Some(f), Some(e)) => format!("{:.0}% / {:.0}%", f * 100.0, e * 100.0),
+                _ => "–".into(),
+            };
             out += &format!(
-                "| {} | {cond} | {} | {} | {:.2} | {:.2} | {:.3} | {} | {:.1} |\n",
+                "| {} | {cond} | {} | {} | {:.2} | {:.2} | {:.3} | {} | {stages} | {:.1} |\n",
                 r.family,
                 r.variant,
                 r.cases,
@@ -371,12 +454,15 @@ mod tests {
             kernel: kernel.into(),
             variant: variant.into(),
             family: family.into(),
+            conditioning: "well".into(),
             cases: 4,
             max_bits: 1.0,
             p99_bits: 1.0,
             mean_bits: 1.0,
             class_mismatches: mismatches,
             ns_per_ray: ns,
+            stages: Default::default(),
+            front: false,
         }
     }
 
@@ -401,6 +487,32 @@ mod tests {
             .map(|p| (p.variant.as_str(), p.ns_per_ray, p.error_bits, p.mismatches))
             .collect();
         assert_eq!(got, [("reference", 15.0, 1.0, 0), ("x4", 3.0, 32.0, 1)]);
+    }
+
+    /// Each row carries its variant's place on its own kernel's front:
+    /// x4 is faster and the reference more accurate, so both are on the
+    /// sphere's; the plane's one variant is on its own.
+    #[test]
+    fn rows_carry_their_front_flag() {
+        let c = Catalogue::builtin().unwrap();
+        let mut rs = rows();
+        rs.push(row("sphere", "textbook", "sphere/far-tiny", 30.0, 1));
+        super::mark_front(&mut rs, &c);
+        let front: Vec<(&str, &str, bool)> = rs
+            .iter()
+            .map(|r| (r.kernel.as_str(), r.variant.as_str(), r.front))
+            .collect();
+        assert_eq!(
+            front,
+            [
+                ("sphere", "reference", true),
+                ("sphere", "reference", true),
+                ("sphere", "x4", true),
+                ("sphere", "x4", true),
+                ("plane", "reference", true),
+                ("sphere", "textbook", false),
+            ]
+        );
     }
 
     /// One section per kernel, each row with its family's conditioning.

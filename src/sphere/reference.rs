@@ -78,6 +78,7 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
 /// The last stage: the exact oracle; [`SphereHit::None`] for a non-finite
 /// input.
 #[cold]
+#[inline(never)]
 pub(crate) fn escalate(ray: &Ray, sphere: &Sphere) -> SphereHit {
     exact::intersect(ray, sphere).unwrap_or(SphereHit::None)
 }

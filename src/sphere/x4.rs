@@ -116,6 +116,7 @@ pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 impl SphereHit4 {
     /// Replaces every lane not `done` with the scalar stages' answer.
     #[cold]
+    #[inline(never)]
     fn settle(&mut self, done: M4, ray: &Ray4, s: &Sphere4) {
         let rays = ray.to_rays();
         let (c, r) = (scatter3(s.center), s.radius.to_array());
