@@ -62,7 +62,10 @@ fn quick_report_writes_the_table_the_json_rows_and_a_plot_per_kernel() {
             row["cases"].as_u64().unwrap() <= 64,
             "--quick takes 64 cases a family"
         );
-        assert!(matches!(row["conditioning"].as_str(), Some("well" | "ill")), "{row}");
+        assert!(
+            matches!(row["conditioning"].as_str(), Some("well" | "ill")),
+            "{row}"
+        );
         assert!(row["front"].is_boolean(), "{row}");
         // The staged variants say which stage decided each case; the
         // others have no stages.
@@ -72,15 +75,27 @@ fn quick_report_writes_the_table_the_json_rows_and_a_plot_per_kernel() {
         if staged {
             let sum: f64 = stages.values().map(|v| v.as_f64().unwrap()).sum();
             assert!((sum - 1.0).abs() < 1e-9, "{row}");
-            assert_eq!(stages.keys().collect::<Vec<_>>(), ["exact", "filter"], "{row}");
+            assert_eq!(
+                stages.keys().collect::<Vec<_>>(),
+                ["exact", "filter"],
+                "{row}"
+            );
         } else {
             assert!(stages.is_empty(), "{row}");
         }
     }
-    // The Markdown shows the same front flags as the rows.
-    assert!(rows.iter().any(|r| r["front"] == true));
-    // The keys in the order, as written.
-    let first = &text[..text.find('}').unwrap()];
+    // Every kernel has a front.
+    for kernel in ["sphere", "plane", "quadric", "camera"] {
+        assert!(
+            rows.iter()
+                .any(|r| r["kernel"] == kernel && r["front"] == true),
+            "{kernel}"
+        );
+    }
+    // The keys in the order, as written (the first row ends after
+    // its last key, `front`).
+    let end = text.find("\"front\"").unwrap();
+    let first = &text[..end + text[end..].find('}').unwrap()];
     let at: Vec<usize> = keys
         .iter()
         .map(|k| first.find(&format!("\"{k}\"")).unwrap())
