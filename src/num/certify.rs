@@ -7,37 +7,44 @@
 //! different bits, so an enclosure that straddles 0 is never certified) and
 //! overflow to ±∞ without special cases; a NaN anywhere fails it.
 //!
-//! The ends are themselves computed in f64, rounded to nearest, so the
-//! radius is widened first: `e' = (e + 2⁻⁵¹|t|)(1 + 2⁻⁴⁰)`. The `2⁻⁵¹|t|`
-//! term covers the rounding of `t ∓ e'` (at most `2⁻⁵³|t ∓ e'|`); the factor
-//! covers the rounding of the few dozen operations that evaluated `e` from
-//! its formula, each a relative `2⁻⁵³`, and of `e'` itself.
+//! The bound comes in two parts, `e = |t|·r + a`: a relative part `r`,
+//! which the kernels can often work out before `t` itself, and an absolute
+//! part `a`. The ends are computed in f64, rounded to nearest, each within
+//! `2⁻⁵³(|t| + e) ≤ 2⁻⁵²|t|` of the true end wherever the test can pass
+//! (there `e ≤ |t|`, or the ends would straddle 0), so `certify` adds
+//! `2⁻⁵¹` to `r`. The kernels widen `r` and `a` by `1 + 2⁻³⁰`, which covers
+//! the roundings of the few dozen operations that evaluate them and `e`.
 
 use super::real::Real;
 
 /// The unit roundoff of f64, `u = 2⁻⁵³`.
 pub const U: f64 = f64::EPSILON / 2.0;
 
-/// Whether every real within `e` of `t` rounds to one `f32`, lane by lane;
-/// where it does, that `f32` is `t as f32`.
+/// The relative slack every bound is widened by, `1 + 2⁻³⁰`.
+pub const SLACK: f64 = 1.0 + 1.0 / (1u64 << 30) as f64;
+
+/// Whether every real within `|t|·r + a` of `t` rounds to one `f32`, lane
+/// by lane; where it does, that `f32` is `t as f32`. `r` and `a` must be
+/// non-negative (or NaN, which certifies nothing).
 ///
 /// ```
 /// use rayoracle::num::certify::certify;
 /// // 1/3 to within 1e-12: every such real rounds to 1/3f32.
-/// assert!(certify(1.0 / 3.0, 1e-12));
+/// assert!(certify(1.0 / 3.0, 0.0, 1e-12));
+/// // Within 2⁻⁴⁰ relatively: the same.
+/// assert!(certify(1.0 / 3.0, 2f64.powi(-40), 0.0));
 /// // Straddling the midpoint between 1 and the next f32: undecided.
 /// let mid = 1.0 + f32::EPSILON as f64 / 2.0;
-/// assert!(!certify(mid, 1e-12));
+/// assert!(!certify(mid, 0.0, 1e-12));
 /// // Straddling 0: +0 and −0 differ.
-/// assert!(!certify(0.0, 1e-300));
-/// assert!(certify(0.0, 0.0));
-/// assert!(!certify(f64::NAN, 0.0));
+/// assert!(!certify(0.0, 0.0, 1e-300));
+/// assert!(certify(0.0, 0.0, 0.0));
+/// assert!(!certify(f64::NAN, 0.0, 0.0) && !certify(1.0, f64::NAN, 0.0));
 /// ```
 #[inline(always)]
-pub fn certify<L: Real>(t: L, e: L) -> L::Mask {
-    let e = (e + t.abs() * L::splat(2f64.powi(-51))) * L::splat(1.0 + 2f64.powi(-40));
-    let nonneg = e.gt(L::splat(0.0)) | e.eq(L::splat(0.0));
-    L::same_f32(t - e, t + e) & nonneg
+pub fn certify<L: Real>(t: L, r: L, a: L) -> L::Mask {
+    let e = t.abs() * (r + L::splat(2f64.powi(-51))) + a;
+    L::same_f32(t - e, t + e)
 }
 
 /// Whether the floating-point environment keeps subnormals: false when

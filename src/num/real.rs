@@ -24,6 +24,11 @@ pub trait Real:
     + Div<Output = Self>
     + Neg<Output = Self>
 {
+    /// Whether division is dear enough, against multiplication, that a
+    /// kernel should take one reciprocal of a product rather than several
+    /// quotients: true for four lanes, where throughput counts; false for
+    /// one, where the latency of a chain of products counts more.
+    const FEW_DIVISIONS: bool;
     /// The lane mask: `bool` or [`M4`].
     type Mask: Copy
         + BitAnd<Output = Self::Mask>
@@ -49,6 +54,7 @@ pub trait Real:
 }
 
 impl Real for f64 {
+    const FEW_DIVISIONS: bool = false;
     type Mask = bool;
     #[inline(always)]
     fn splat(x: f64) -> f64 {
@@ -223,6 +229,7 @@ impl M4 {
 }
 
 impl Real for F64x4 {
+    const FEW_DIVISIONS: bool = true;
     type Mask = M4;
     #[inline(always)]
     fn splat(x: f64) -> F64x4 {

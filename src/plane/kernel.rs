@@ -11,11 +11,13 @@
 //!   and two additions, `E_num = γ₄ m_num` with `m_num = Σ|ŵᵢnᵢ|`;
 //! * `den = Σ dᵢnᵢ`: products of f32 values are exact, two additions:
 //!   `E_den = γ₂ m_den`, `m_den = Σ|dᵢnᵢ|`;
-//! * `t = num/den`, computed as `n̂um·(1/d̂en)` within `3u|t̂|` of
-//!   `n̂um/d̂en` (one division, the slowest operation here): `|n̂/d̂ − n/d| ≤
-//!   (|n̂/d̂| E_den + E_num) / (|d̂| − E_den)`. The root is certified only
-//!   where `x = E_den/|d̂en| ≤ 1/4`, with `1/(1 − x)` bounded by `1 + 2x`,
-//!   and the bound evaluated in f64 is widened by `1 + 2⁻⁴⁰`.
+//! * `t = num/den`, computed as `n̂um·(1/d̂en)` within `2u|t̂|` of
+//!   `n̂um/d̂en`: `|n̂/d̂ − n/d| ≤ (|n̂/d̂| x + E_num/|d̂|) / (1 − x)` with
+//!   `x = E_den/|d̂en|`. The root is certified only where `x < 1/4`, with
+//!   `1/(1 − x)` bounded by `1 + 2x`: `e = (x(1 + 2x) + 6u)|t̂| + (1 +
+//!   2x)E_num/|d̂en|`, split into its relative and absolute parts for
+//!   [`certify`](crate::num::certify::certify), and every part widened by
+//!   `1 + 2⁻³⁰` for the roundings of its own evaluation.
 //!
 //! The filter uses `E_num = 8u m_num` and `E_den = 4u m_den`, twice the
 //! proof's constants. `|d̂en| > E_den` certifies a hit. A magnitude sum of
@@ -26,7 +28,7 @@
 //! rounds it. The rest, such as a line parallel in exact arithmetic but not
 //! term by term, goes to the next stage.
 
-use crate::num::certify::U;
+use crate::num::certify::{SLACK, U};
 use crate::num::real::Real;
 
 /// The filter's result: the certified classes and the root with its bound.
@@ -41,8 +43,10 @@ pub struct Filtered<L: Real> {
     pub in_plane: L::Mask,
     /// `num/den`.
     pub t: L,
-    /// A bound on `t`'s error.
-    pub e: L,
+    /// The relative part of `t`'s error bound.
+    pub r: L,
+    /// The absolute part of `t`'s error bound.
+    pub a: L,
 }
 
 /// Runs the filter on a line `o + t d` and the plane through `a` with
@@ -75,15 +79,21 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) 
     // + 0 makes an exactly zero root +0 whatever the sign of den.
     let t = num * inv + zero;
     let ia = inv.abs();
-    let x = e_den * ia;
-    let slack = L::splat(1.0 + 2f64.powi(-40));
-    let e = (t.abs() * e_den + e_num) * ia * (L::splat(1.0) + x + x) * slack + k(6.0) * t.abs();
-    let e = L::select(L::splat(0.25).gt(x), e, L::splat(f64::INFINITY));
+    let slack = L::splat(SLACK);
+    let x = e_den * ia * slack;
+    let g = (L::splat(1.0) + x + x) * slack;
+    let r = L::select(
+        L::splat(0.25).gt(x),
+        x * g + k(6.0),
+        L::splat(f64::INFINITY),
+    );
+    let a = e_num * ia * g;
     Filtered {
         hit: da.gt(e_den),
         parallel,
         in_plane,
         t,
-        e,
+        r,
+        a,
     }
 }

@@ -55,7 +55,7 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
         w(plane.normal),
         shrink,
     );
-    if f.hit && certify(f.t, f.e) {
+    if f.hit && certify(f.t, f.r, f.a) {
         (PlaneHit::Hit(f.t as f32), Stage::Filter)
     } else if f.parallel {
         (PlaneHit::Parallel, Stage::Filter)

@@ -92,7 +92,7 @@ pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
         p.normal.map(w),
         1.0,
     );
-    let hit = f.hit & certify(f.t, f.e);
+    let hit = f.hit & certify(f.t, f.r, f.a);
     let (h, par) = (hit.lanes(), f.parallel.lanes());
     let class = |i: usize| {
         if h[i] {

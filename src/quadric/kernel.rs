@@ -34,16 +34,21 @@
 //! `γ/q` is then the linear root `−γ/β`, with `E_q = E_β`. Otherwise
 //! `E_s = E_Δ/ŝ + 2u ŝ` and `E_q = ½(E_β + E_s) + 2u|q̂|`.
 //!
-//! Division is the slowest operation here, so there is one: `ρ = 1/(q̂ α̂
-//! ŝ)` (α̂ taken as 1 where α = 0), from which `1/α̂ = q̂ŝρ`, `1/q̂ = α̂ŝρ`
-//! and `1/ŝ = q̂α̂ρ`, each within `4u` relatively. That product is of degree
-//! nine in the inputs and may leave f64's range, so the filter certifies
-//! roots only where `2⁻¹⁰⁰⁰ < |q̂α̂ŝ| < 2¹⁰⁰⁰`. The quotients, computed as
-//! products with the reciprocals, are each within `6u|t̂|` of `x̂/ŷ`, and
-//! `|x̂/ŷ − x/y| ≤ (|x̂/ŷ| E_y + E_x) / (|ŷ| − E_y)`; the filter certifies a
-//! root only where `E_y/|ŷ| ≤ 1/4`, and bounds `1/(1 − x)` by `1 + 2x`. A
-//! root exactly 0 (`γ = 0` term by term) is `+0`. The evaluation of the
-//! bounds themselves is covered by a factor `1 + 2⁻⁴⁰`.
+//! The roots need `1/α̂` (α̂ taken as 1 where α = 0), `1/q̂` and `1/ŝ`. On
+//! one lane they are three divisions, which run in parallel; on four, where
+//! division throughput is what counts, they come from one, `ρ = 1/(q̂α̂ŝ)`:
+//! `1/α̂ = q̂ŝρ`, `1/q̂ = α̂ŝρ`, `1/ŝ = q̂α̂ρ`, each within `4u` relatively.
+//! That product is of degree nine in the inputs and may leave f64's range,
+//! so on four lanes the filter certifies roots only where `2⁻¹⁰⁰⁰ <
+//! |q̂α̂ŝ| < 2¹⁰⁰⁰`. The quotients, computed as products with the
+//! reciprocals, are each within `5u|t̂|` of `x̂/ŷ`, and `|x̂/ŷ − x/y| ≤
+//! (|x̂/ŷ| E_y/|ŷ| + E_x/|ŷ|) / (1 − E_y/|ŷ|)`; the filter certifies a root
+//! only where `E_y/|ŷ| < 1/4`, and bounds `1/(1 − x)` by `1 + 2x`. Each
+//! bound is split into a part relative to the root and an absolute part,
+//! for [`certify`](crate::num::certify::certify), and every part is widened
+//! by `1 + 2⁻³⁰` for the roundings of its own evaluation; the roots'
+//! roundings, `9u` in all, count `20u`. A root exactly 0 (`γ = 0` term by
+//! term) is `+0`.
 //!
 //! # Range
 //!
@@ -51,7 +56,7 @@
 //! and `2⁷⁶⁸` in magnitude, so no overflow and no underflow into f64's
 //! subnormals for any finite input. A non-finite input certifies nothing.
 
-use crate::num::certify::U;
+use crate::num::certify::{SLACK, U};
 use crate::num::real::Real;
 
 /// The filter's result: the certified classes and the roots with their
@@ -69,12 +74,16 @@ pub struct Filtered<L: Real> {
     pub all: L::Mask,
     /// `q/α`.
     pub t0: L,
-    /// A bound on `t0`'s error.
-    pub e0: L,
+    /// The relative part of `t0`'s error bound.
+    pub r0: L,
+    /// The absolute part of `t0`'s error bound.
+    pub a0: L,
     /// `γ/q`, which is the linear root `−γ/β` where α = 0.
     pub t1: L,
-    /// A bound on `t1`'s error.
-    pub e1: L,
+    /// The relative part of `t1`'s error bound.
+    pub r1: L,
+    /// The absolute part of `t1`'s error bound.
+    pub a1: L,
 }
 
 /// A sum of terms and of their magnitudes.
@@ -179,28 +188,41 @@ pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filter
     let alpha = L::select(lin, one, alpha);
     let s = disc.sqrt();
     let q = -(beta + s.copysign(beta)) * half;
-    let p = q * alpha * s;
-    let in_range = p.abs().gt(L::splat(2f64.powi(-1000))) & L::splat(2f64.powi(1000)).gt(p.abs());
-    let rho = one / p;
-    let (ia, iq, is) = (q * s * rho, alpha * s * rho, q * alpha * rho);
-    let slack = L::splat(1.0 + 2f64.powi(-40));
+    let (ia, iq, is, in_range) = if L::FEW_DIVISIONS {
+        let p = q * alpha * s;
+        let pa = p.abs();
+        let in_range = pa.gt(L::splat(2f64.powi(-1000))) & L::splat(2f64.powi(1000)).gt(pa);
+        let rho = one / p;
+        (q * s * rho, alpha * s * rho, q * alpha * rho, in_range)
+    } else {
+        (one / alpha, one / q, one / s, zero.eq(zero))
+    };
+    let slack = L::splat(SLACK);
     let es = ed * is * slack + c(2.0) * s;
     let eq = L::select(lin, eb, (eb + es) * half + c(2.0) * q.abs());
-    let bound = |t: L, ey: L, ex: L, iy: L| {
-        let x = ey * iy.abs();
-        let e = (t.abs() * ey + ex) * iy.abs() * (one + x + x) * slack + c(6.0) * t.abs();
-        L::select(in_range & L::splat(0.25).gt(x), e, inf)
+    // The bound of x/y, x and y with errors ex and ey, iy = 1/y: its
+    // relative and absolute parts.
+    let bound = |ey: L, ex: L, iy: L| {
+        let iya = iy.abs();
+        let x = ey * iya * slack;
+        let g = (one + x + x) * slack;
+        let ok = in_range & L::splat(0.25).gt(x);
+        (L::select(ok, x * g + c(20.0), inf), ex * iya * g)
     };
     let t0 = q * ia;
+    let (r0, a0) = bound(ea, eq, ia);
     let t1 = gamma * iq + zero;
+    let (r1, a1) = bound(eq, eg, iq);
     Filtered {
         two,
         linear,
         none,
         all,
         t0,
-        e0: bound(t0, ea, eq, ia),
+        r0,
+        a0,
         t1,
-        e1: bound(t1, eq, eg, iq),
+        r1,
+        a1,
     }
 }

@@ -56,7 +56,7 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
         w(ray.dir),
         shrink,
     );
-    if f.two && certify(f.t0, f.e0) && certify(f.t1, f.e1) {
+    if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
         // Disjoint enclosures are in the exact order; overlapping ones
         // round to the same f32.
         let (t0, t1) = if f.t0 <= f.t1 {
@@ -65,7 +65,7 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
             (f.t1, f.t0)
         };
         (QuadricHit::Two(t0 as f32, t1 as f32), Stage::Filter)
-    } else if f.linear && certify(f.t1, f.e1) {
+    } else if f.linear && certify(f.t1, f.r1, f.a1) {
         (QuadricHit::One(f.t1 as f32), Stage::Filter)
     } else if f.none {
         (QuadricHit::None, Stage::Filter)

@@ -88,8 +88,8 @@ pub struct QuadricHit4 {
 pub fn intersect(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
     let w = |v: f32x4| F64x4::from_f32(v.to_array());
     let f = kernel::filter(&q.coeffs.map(w), ray.origin.map(w), ray.dir.map(w), 1.0);
-    let ok1 = certify(f.t1, f.e1);
-    let two = f.two & certify(f.t0, f.e0) & ok1;
+    let ok1 = certify(f.t1, f.r1, f.a1);
+    let two = f.two & certify(f.t0, f.r0, f.a0) & ok1;
     let one = f.linear & ok1;
     // Disjoint enclosures are in the exact order; overlapping ones round
     // to the same f32. The linear root is t1.

@@ -35,24 +35,28 @@
 //! `q = −(b + sign(b̂)s)`, and the roots are `q/a` and `c/q`, sorted; the
 //! sign is taken from `b̂` even where `b`'s own is uncertain, which only
 //! costs accuracy, never validity, since both signs give the same roots.
-//! Division is the slowest operation here, so there is one: `ρ = 1/(q̂ â
-//! ŝ)`, from which `1/â = q̂ŝρ`, `1/q̂ = âŝρ` and `1/ŝ = q̂âρ`, each within
-//! `4u` relatively.
+//! The roots need `1/â`, `1/q̂` and `1/ŝ`. On one lane they are three
+//! divisions, which run in parallel; on four, where division throughput is
+//! what counts, they come from one, `ρ = 1/(q̂âŝ)`: `1/â = q̂ŝρ`, `1/q̂ =
+//! âŝρ`, `1/ŝ = q̂âρ`. Either way each is within `4u` relatively.
 //!
 //! * `ŝ = fl(√Δ̂)`: `|√Δ − √Δ̂| ≤ E_Δ/√Δ̂` (from `√x − √(x − e) ≤ e/√x`),
 //!   so `E_s = E_Δ/ŝ + 2u ŝ`.
 //! * `|q̂| = fl(|b̂| + ŝ)` (no cancellation): `E_q = E_b + E_s + 2u|q̂|`.
-//! * `t₀ = q/a`, computed as `q̂·(1/â)` within `6u|t̂₀|` of `q̂/â`:
-//!   `|q̂/â − q/a| ≤ (|q̂/â| E_a + E_q) / (â − E_a)`.
-//! * `t₁ = c/q`, computed as `ĉ·(1/q̂)`: `|ĉ/q̂ − c/q| ≤ (|ĉ/q̂| E_q +
-//!   E_c) / (|q̂| − E_q)`. The filter certifies a root only where
-//!   `x = E_q/|q̂| ≤ 1/4`, and bounds `1/(1 − x)` by `1 + 2x`.
+//! * `t₀ = q/a`, computed as `q̂·(1/â)`, within `5u|t̂₀|` of `q̂/â`; and
+//!   `|q̂/â − q/a| ≤ (|q̂/â| E_a + E_q) / (â − E_a)`, where `E_a/(â − E_a)`
+//!   is `4u` to first order. So `e₀ = 10u|t̂₀| + E_q/â`.
+//! * `t₁ = c/q`, computed as `ĉ·(1/q̂)`, within `5u|t̂₁|` of `ĉ/q̂`; and
+//!   `|ĉ/q̂ − c/q| ≤ (|ĉ/q̂| x + E_c/|q̂|) / (1 − x)` with `x = E_q/|q̂|`.
+//!   The filter certifies `t₁` only where `x < 1/4`, and bounds `1/(1 − x)`
+//!   by `1 + 2x`: `e₁ = (x(1 + 2x) + 10u)|t̂₁| + (1 + 2x)E_c/|q̂|`.
 //!
-//! The relative errors of the reciprocals, of `t̂` against the exact
-//! quotient and of the evaluation of the bounds themselves are a few `u`
-//! each; they are covered by a factor `1 + 2⁻⁴⁰` and by the `2⁻⁵¹|t̂|`
-//! that [`certify`](crate::num::certify::certify) adds. Every constant above is at least twice what the
-//! proof needs: `E_a = 4u â`, `E_b = 8u m_b`, `E_c = 12u m_c`.
+//! Each bound is split, for [`certify`](crate::num::certify::certify), into
+//! a part relative to the root and an absolute part; every quantity the
+//! bounds are made of is widened by `1 + 2⁻³⁰`, which covers the roundings
+//! of their own evaluation and of the reciprocals. Every constant above is
+//! at least twice what the proof needs: `E_a = 4u â`, `E_b = 8u m_b`,
+//! `E_c = 12u m_c`, and `20u` where the roots' roundings need `9u`.
 //!
 //! # Range
 //!
@@ -67,11 +71,11 @@
 //! An infinite input makes a magnitude sum infinite, and a NaN makes `Δ̂`
 //! NaN; neither certifies anything.
 
-use crate::num::certify::U;
+use crate::num::certify::{SLACK, U};
 use crate::num::real::Real;
 
 /// The filter's result: the classes it certified, and both roots (in
-/// computation order) with their error bounds.
+/// computation order) with their error bounds, each `|t|·r + a`.
 #[derive(Clone, Copy, Debug)]
 pub struct Filtered<L: Real> {
     /// Certified: no root (no line, or `Δ < 0`).
@@ -81,12 +85,16 @@ pub struct Filtered<L: Real> {
     pub two: L::Mask,
     /// `q/a`.
     pub t0: L,
-    /// A bound on `t0`'s error.
-    pub e0: L,
+    /// The relative part of `t0`'s error bound.
+    pub r0: L,
+    /// The absolute part of `t0`'s error bound.
+    pub a0: L,
     /// `c/q`.
     pub t1: L,
-    /// A bound on `t1`'s error.
-    pub e1: L,
+    /// The relative part of `t1`'s error bound.
+    pub r1: L,
+    /// The absolute part of `t1`'s error bound.
+    pub a1: L,
 }
 
 /// Runs the filter on a line `o + t d` and a sphere `(c, r)`, with every
@@ -98,7 +106,8 @@ pub struct Filtered<L: Real> {
 /// let f = filter::<f64>([0.0, 0.0, -5.0], [0.0, 0.0, 1.0], [0.0; 3], 1.0, 1.0);
 /// assert!(f.two && !f.none);
 /// assert_eq!((f.t0, f.t1), (6.0, 4.0)); // q/a and c/q
-/// assert!(f.e0 > 0.0 && f.e0 < 1e-12);
+/// let e0 = f.t0 * f.r0 + f.a0;
+/// assert!(e0 > 0.0 && e0 < 1e-12);
 /// ```
 ///
 /// [`certify`]: crate::num::certify::certify
@@ -123,28 +132,39 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Fi
     let none = !line | (-ed).gt(disc);
     let two = line & disc.gt(ed);
 
-    let (ea, eb, ec) = (k(4.0) * a, k(8.0) * mb, k(12.0) * mc);
-    let slack = L::splat(1.0 + 2f64.powi(-40));
+    // E_a = 4u·â enters only through the constant of r0.
+    let (eb, ec) = (k(8.0) * mb, k(12.0) * mc);
+    let (one, slack) = (L::splat(1.0), L::splat(SLACK));
     let s = disc.sqrt();
     let q = -(b + s.copysign(b));
-    let qa = q.abs();
-    let rho = L::splat(1.0) / (q * a * s);
-    let (ia, iq, is) = (q * s * rho, a * s * rho, q * a * rho);
+    let (ia, iq, is) = if L::FEW_DIVISIONS {
+        let rho = one / (q * a * s);
+        (q * s * rho, a * s * rho, q * a * rho)
+    } else {
+        (one / a, one / q, one / s)
+    };
     let es = ed * is * slack + u2 * s;
-    let eq = eb + es + u2 * qa;
+    let eq = eb + es + u2 * q.abs();
     let t0 = q * ia;
-    let e0 = (t0.abs() * ea + eq) * ia * L::splat(1.0 + 2f64.powi(-20)) + k(6.0) * t0.abs();
+    let a0 = eq * ia * slack;
     let t1 = cq * iq;
     let iqa = iq.abs();
-    let x = eq * iqa;
-    let e1 = (t1.abs() * eq + ec) * iqa * (L::splat(1.0) + x + x) * slack + k(6.0) * t1.abs();
-    let e1 = L::select(L::splat(0.25).gt(x), e1, L::splat(f64::INFINITY));
+    let x = eq * iqa * slack;
+    let g = (one + x + x) * slack;
+    let r1 = L::select(
+        L::splat(0.25).gt(x),
+        x * g + k(20.0),
+        L::splat(f64::INFINITY),
+    );
+    let a1 = ec * iqa * g;
     Filtered {
         none,
         two,
         t0,
-        e0,
+        r0: k(20.0),
+        a0,
         t1,
-        e1,
+        r1,
+        a1,
     }
 }

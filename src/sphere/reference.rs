@@ -62,7 +62,7 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
     if f.none {
         return (SphereHit::None, Stage::Filter);
     }
-    if f.two && certify(f.t0, f.e0) && certify(f.t1, f.e1) {
+    if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
         // Disjoint enclosures are in the exact order; overlapping ones
         // round to the same f32.
         let (t0, t1) = if f.t0 <= f.t1 {

@@ -94,7 +94,7 @@ pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
         w(s.radius),
         1.0,
     );
-    let two = f.two & certify(f.t0, f.e0) & certify(f.t1, f.e1);
+    let two = f.two & certify(f.t0, f.r0, f.a0) & certify(f.t1, f.r1, f.a1);
     // Disjoint enclosures are in the exact order; overlapping ones round
     // to the same f32.
     let swap = f.t0.gt(f.t1);
