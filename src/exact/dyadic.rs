@@ -42,7 +42,7 @@ impl core::fmt::Debug for Dyadic {
         let mut d = f.debug_struct("Dyadic");
         match &self.mant {
             Mant::Small(m) => d.field("mant", m),
-            Mant::Wide(m) => d.field("mant", &format_args!("{}", m.to_ibig())),
+            Mant::Wide(m) => d.field("mant", &format_args!("{}", wide::to_ibig(*m))),
             Mant::Big(m) => d.field("mant", &format_args!("{m}")),
         };
         d.field("exp", &self.exp).finish()
@@ -148,12 +148,15 @@ impl Dyadic {
     /// `m · 2^e` with the trailing zero bits of `m` moved into the exponent
     /// (as far as an `i32` allows), in an `i128` if it then fits.
     fn wide(m: Wide, e: i32) -> Dyadic {
+        if m.is_zero() {
+            return Dyadic::ZERO;
+        }
         let tz = m.trailing_zeros();
         let (m, e) = match e.checked_add(tz as i32) {
-            Some(exp) => (m.shr_exact(tz), exp),
-            None => (m, e),
+            Some(exp) if tz > 0 => (m >> tz, exp),
+            _ => (m, e),
         };
-        match m.to_i128() {
+        match wide::to_i128(m) {
             Some(s) => Dyadic::small(s, e),
             None => Dyadic {
                 mant: Mant::Wide(m),
@@ -168,10 +171,10 @@ impl Dyadic {
             return Dyadic::small(s, e);
         }
         let tz = m.trailing_zeros().unwrap_or(0);
-        if m.bit_len() - tz <= Wide::BITS as usize
+        if m.bit_len() - tz <= wide::BITS as usize
             && let Some(exp) = e.checked_add(tz as i32)
         {
-            let odd = Wide::from_ibig(&(&m >> tz)).expect("255 bits fit");
+            let odd = wide::from_ibig(&(&m >> tz)).expect("255 bits fit");
             return Dyadic::wide(odd, exp);
         }
         Dyadic {
@@ -202,7 +205,7 @@ impl Dyadic {
             return None;
         }
         match self.mant {
-            Mant::Small(m) => Some(Wide::from_i128(m)),
+            Mant::Small(m) => Some(wide::from_i128(m)),
             Mant::Wide(m) => Some(m),
             Mant::Big(_) => None,
         }
@@ -212,7 +215,7 @@ impl Dyadic {
     fn ibig(&self) -> std::borrow::Cow<'_, IBig> {
         match &self.mant {
             Mant::Small(m) => std::borrow::Cow::Owned(IBig::from(*m)),
-            Mant::Wide(m) => std::borrow::Cow::Owned(m.to_ibig()),
+            Mant::Wide(m) => std::borrow::Cow::Owned(wide::to_ibig(*m)),
             Mant::Big(m) => std::borrow::Cow::Borrowed(m),
         }
     }
@@ -228,7 +231,7 @@ impl Dyadic {
             return m.signum() as i32;
         }
         if let Some(m) = self.wide_mant() {
-            return m.signum();
+            return wide::signum(m);
         }
         let m = self.ibig();
         if m.is_zero() {
@@ -275,13 +278,13 @@ impl Dyadic {
         // < 2^-63. The value alone decides the result, whatever the
         // representation: the kept bits and the scale are the same.
         if let Some(m) = self.wide_mant() {
-            if m.signum() == 0 {
+            if m.is_zero() {
                 return 0.0;
             }
-            let drop = m.len().saturating_sub(64);
+            let drop = wide::len(m).saturating_sub(64);
             let top = match self.fixed() {
                 Some(m) => m >> drop,
-                None => m.shr_floor_i128(drop),
+                None => wide::to_i128(m >> drop).expect("64 bits"),
             };
             // u64 → f64 rounds as i128 → f64 does (to nearest, ties to
             // even, the same for either sign), without a library call.
@@ -355,7 +358,7 @@ impl Ord for Dyadic {
 #[inline(never)]
 fn cmp_wider(this: &Dyadic, other: &Dyadic) -> Ordering {
     if let (Some(a), Some(b)) = (this.wide_mant(), other.wide_mant()) {
-        return wide::cmp(a, this.exp, b, other.exp);
+        return cmp_wide(a, this.exp, b, other.exp);
     }
     // By sign and the place of the leading bit first, which spares the
     // long shifts of far-apart exponents.
@@ -366,7 +369,7 @@ fn cmp_wider(this: &Dyadic, other: &Dyadic) -> Ordering {
     let top = |x: &Dyadic| {
         let len = match &x.mant {
             Mant::Small(m) => 128 - m.unsigned_abs().leading_zeros() as usize,
-            Mant::Wide(m) => m.len() as usize,
+            Mant::Wide(m) => wide::len(*m) as usize,
             Mant::Big(m) => m.bit_len(),
         };
         x.exp as i64 + len as i64
@@ -403,6 +406,24 @@ fn cmp_fixed(a: i128, ea: i32, b: i128, eb: i32) -> Ordering {
     if sa > 0 { mag } else { mag.reverse() }
 }
 
+/// [`cmp_fixed`] on 256-bit mantissas.
+fn cmp_wide(a: Wide, ea: i32, b: Wide, eb: i32) -> Ordering {
+    let (sa, sb) = (wide::signum(a), wide::signum(b));
+    if sa != sb || sa == 0 {
+        return sa.cmp(&sb);
+    }
+    let top = |m: Wide, e: i32| e as i64 + wide::len(m) as i64;
+    // Equal leading places: the shift is below 255 and the shifted
+    // mantissa as long as the other.
+    let aligned = |m: Wide, s: i32| wide::shl(m, s as u32).expect("aligned mantissas fit");
+    match top(a, ea).cmp(&top(b, eb)) {
+        Ordering::Equal if ea >= eb => aligned(a, ea - eb).cmp(&b),
+        Ordering::Equal => a.cmp(&aligned(b, eb - ea)),
+        unequal if sa > 0 => unequal,
+        unequal => unequal.reverse(),
+    }
+}
+
 /// `m · 2^s` if it fits in an `i128`.
 fn shl_fixed(m: i128, s: i64) -> Option<i128> {
     let r = m.checked_shl(u32::try_from(s).ok()?)?;
@@ -435,19 +456,19 @@ fn add_fixed<const SUB: bool>((a, ea): (i128, i32), (b, eb): (i128, i32)) -> Opt
 /// `a·2^ea + b·2^eb` on 256-bit mantissas, if the aligned operands and the
 /// sum fit; a zero operand takes the other's exponent, as in [`add_fixed`].
 fn add_wide((a, ea): (Wide, i32), (b, eb): (Wide, i32)) -> Option<Dyadic> {
-    let (ea, eb) = match (a.signum(), b.signum()) {
-        (0, _) => (eb, eb),
-        (_, 0) => (ea, ea),
+    let (ea, eb) = match (a.is_zero(), b.is_zero()) {
+        (true, _) => (eb, eb),
+        (_, true) => (ea, ea),
         _ => (ea, eb),
     };
     let d = ea as i64 - eb as i64;
-    let shift = |m: Wide, d: i64| m.shl(u32::try_from(d).ok()?);
+    let shift = |m: Wide, d: i64| wide::shl(m, u32::try_from(d).ok()?);
     let (a, b, e) = match d.cmp(&0) {
         Ordering::Equal => (a, b, ea),
         Ordering::Greater => (shift(a, d)?, b, eb),
         Ordering::Less => (a, shift(b, -d)?, ea),
     };
-    Some(Dyadic::wide(a.add(b)?, e))
+    Some(Dyadic::wide(wide::add(a, b)?, e))
 }
 
 /// `x − y` if `SUB`, else `x + y`: on `i128` mantissas when they fit,
@@ -466,7 +487,7 @@ fn add_or_sub<const SUB: bool>(x: &Dyadic, y: &Dyadic) -> Dyadic {
 #[inline(never)]
 fn add_or_sub_wider<const SUB: bool>(x: &Dyadic, y: &Dyadic) -> Dyadic {
     if let (Some(a), Some(b)) = (x.wide_mant(), y.wide_mant())
-        && let Some(r) = add_wide((a, x.exp), (if SUB { b.neg() } else { b }, y.exp))
+        && let Some(r) = add_wide((a, x.exp), (if SUB { -b } else { b }, y.exp))
     {
         return r;
     }
@@ -531,7 +552,7 @@ impl Mul for &Dyadic {
 #[inline(never)]
 fn mul_wider(x: &Dyadic, y: &Dyadic, exp: i32) -> Dyadic {
     if let (Some(a), Some(b)) = (x.wide_mant(), y.wide_mant())
-        && let Some(p) = a.mul(b)
+        && let Some(p) = wide::mul(a, b)
     {
         return Dyadic::wide(p, exp);
     }
@@ -548,7 +569,7 @@ impl Neg for &Dyadic {
             };
         }
         if let Some(m) = self.wide_mant() {
-            return Dyadic::wide(m.neg(), self.exp);
+            return Dyadic::wide(-m, self.exp);
         }
         Dyadic::big(-self.ibig().as_ref(), self.exp)
     }
