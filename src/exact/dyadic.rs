@@ -694,12 +694,16 @@ pub(crate) mod tests {
     }
 
     /// Every operation on random dyadics gives the same value, ordering,
-    /// sign and `f64` with `i128` mantissas as on big integers alone, on
-    /// operands and results that fit, overflow mid-way or never fit.
+    /// sign and `f64` with `i128` and 256-bit mantissas as on big integers
+    /// alone, on operands and results that fit, overflow mid-way or never
+    /// fit.
     #[test]
     fn fixed_width_arithmetic_matches_big_integers() {
         let mut r = SmallRng::seed_from_u64(0x0dd_a1c);
         let (mut fixed, mut fell_back, mut wide) = (0, 0, 0);
+        // Sums and products of operands on the stack, at least one of them
+        // 256-bit: results on the stack, and results too long for it.
+        let (mut wide_ops, mut wide_overflowed) = (0, 0);
         for _ in 0..60_000 {
             let (x, y) = (random(&mut r), random(&mut r));
             let k = r.random_range(-200..200);
@@ -741,10 +745,22 @@ pub(crate) mod tests {
                     fell_back += 1;
                 }
             }
+            let is_wide = |a: &Dyadic| matches!(a.mant, Mant::Wide(_));
+            let is_big = |a: &Dyadic| matches!(a.mant, Mant::Big(_));
+            if !is_big(&x) && !is_big(&y) && (is_wide(&x) || is_wide(&y)) {
+                for a in [&fast.0[0], &fast.0[1], &fast.0[2]] {
+                    wide_ops += usize::from(!is_big(a));
+                    wide_overflowed += usize::from(is_big(a));
+                }
+            }
         }
         // Every path was taken, and some sums and products overflowed.
         assert!(fixed > 20_000 && fell_back > 2_000, "{fixed} {fell_back}");
         assert!(wide > 20_000, "{wide}");
+        assert!(
+            wide_ops > 20_000 && wide_overflowed > 10_000,
+            "{wide_ops} {wide_overflowed}"
+        );
     }
 
     /// Ordering near the edges of the fixed-width comparison: equal leading
@@ -777,6 +793,37 @@ pub(crate) mod tests {
             assert_eq!(x.cmp(&y), want, "{x:?} {y:?}");
             assert_eq!(y.cmp(&x), want.reverse(), "{x:?} {y:?}");
             assert_eq!(big_only(|| x.cmp(&y)), want, "{x:?} {y:?}");
+        }
+    }
+
+    /// Ordering of 256-bit mantissas at equal leading places, left
+    /// unnormalised: a mantissa against itself shifted (equal) and against
+    /// that with one added (larger in magnitude), of either sign.
+    #[test]
+    fn wide_comparison_at_equal_leading_places() {
+        let mut r = SmallRng::seed_from_u64(255);
+        let raw = |m: &IBig, exp: i32| Dyadic {
+            mant: Mant::Wide(wide::from_ibig(m).expect("255 bits fit")),
+            exp,
+        };
+        for _ in 0..5_000 {
+            let bits = r.random_range(128..=255usize);
+            let m = IBig::from(r.random::<u128>()) << 128 | IBig::from(r.random::<u128>());
+            let m = (m >> (256 - bits)) | IBig::ONE << (bits - 1) | IBig::ONE;
+            let m = if r.random_bool(0.5) { -m } else { m };
+            let (e, k) = (r.random_range(-300..300), r.random_range(0..=255 - bits));
+            let x = raw(&m, e);
+            let shifted = &m << k;
+            let away = &shifted + m.signum();
+            let cases = [
+                (raw(&shifted, e - k as i32), Ordering::Equal),
+                (raw(&away, e - k as i32), x.signum().cmp(&0).reverse()),
+            ];
+            for (y, want) in cases {
+                assert_eq!(x.cmp(&y), want, "{x:?} {y:?}");
+                assert_eq!(y.cmp(&x), want.reverse(), "{x:?} {y:?}");
+                assert_eq!(big_only(|| x.cmp(&y)), want, "{x:?} {y:?}");
+            }
         }
     }
 
