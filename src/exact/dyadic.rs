@@ -277,15 +277,21 @@ impl Dyadic {
         // Keep the leading 64 bits (rounded down); dropping the rest costs
         // < 2^-63. The value alone decides the result, whatever the
         // representation: the kept bits and the scale are the same.
-        if let Some(m) = self.wide_mant() {
-            if m.is_zero() {
+        // (top bits, bits dropped), an `i128` mantissa without a 256-bit
+        // conversion.
+        let top = if let Some(m) = self.fixed() {
+            let drop = (128 - m.unsigned_abs().leading_zeros()).saturating_sub(64);
+            Some((m >> drop, drop))
+        } else if let Some(m) = self.wide_mant() {
+            let drop = wide::len(m).saturating_sub(64);
+            Some((wide::to_i128(m >> drop).expect("64 bits"), drop))
+        } else {
+            None
+        };
+        if let Some((top, drop)) = top {
+            if top == 0 {
                 return 0.0;
             }
-            let drop = wide::len(m).saturating_sub(64);
-            let top = match self.fixed() {
-                Some(m) => m >> drop,
-                None => wide::to_i128(m >> drop).expect("64 bits"),
-            };
             // u64 → f64 rounds as i128 → f64 does (to nearest, ties to
             // even, the same for either sign), without a library call.
             let top = u64::try_from(top.unsigned_abs())
