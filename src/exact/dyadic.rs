@@ -42,7 +42,7 @@ impl core::fmt::Debug for Dyadic {
         let mut d = f.debug_struct("Dyadic");
         match &self.mant {
             Mant::Small(m) => d.field("mant", m),
-            Mant::Wide(m) => d.field("mant", &format_args!("{}", m.to_ibig())),
+            Mant::Wide(m) => d.field("mant", &format_args!("{}", wide::to_ibig(*m))),
             Mant::Big(m) => d.field("mant", &format_args!("{m}")),
         };
         d.field("exp", &self.exp).finish()
@@ -148,12 +148,15 @@ impl Dyadic {
     /// `m · 2^e` with the trailing zero bits of `m` moved into the exponent
     /// (as far as an `i32` allows), in an `i128` if it then fits.
     fn wide(m: Wide, e: i32) -> Dyadic {
+        if m.is_zero() {
+            return Dyadic::ZERO;
+        }
         let tz = m.trailing_zeros();
         let (m, e) = match e.checked_add(tz as i32) {
-            Some(exp) => (m.shr_exact(tz), exp),
-            None => (m, e),
+            Some(exp) if tz > 0 => (m >> tz, exp),
+            _ => (m, e),
         };
-        match m.to_i128() {
+        match wide::to_i128(m) {
             Some(s) => Dyadic::small(s, e),
             None => Dyadic {
                 mant: Mant::Wide(m),
@@ -168,10 +171,10 @@ impl Dyadic {
             return Dyadic::small(s, e);
         }
         let tz = m.trailing_zeros().unwrap_or(0);
-        if m.bit_len() - tz <= Wide::BITS as usize
+        if m.bit_len() - tz <= wide::BITS as usize
             && let Some(exp) = e.checked_add(tz as i32)
         {
-            let odd = Wide::from_ibig(&(&m >> tz)).expect("255 bits fit");
+            let odd = wide::from_ibig(&(&m >> tz)).expect("255 bits fit");
             return Dyadic::wide(odd, exp);
         }
         Dyadic {
@@ -202,7 +205,7 @@ impl Dyadic {
             return None;
         }
         match self.mant {
-            Mant::Small(m) => Some(Wide::from_i128(m)),
+            Mant::Small(m) => Some(wide::from_i128(m)),
             Mant::Wide(m) => Some(m),
             Mant::Big(_) => None,
         }
@@ -212,7 +215,7 @@ impl Dyadic {
     fn ibig(&self) -> std::borrow::Cow<'_, IBig> {
         match &self.mant {
             Mant::Small(m) => std::borrow::Cow::Owned(IBig::from(*m)),
-            Mant::Wide(m) => std::borrow::Cow::Owned(m.to_ibig()),
+            Mant::Wide(m) => std::borrow::Cow::Owned(wide::to_ibig(*m)),
             Mant::Big(m) => std::borrow::Cow::Borrowed(m),
         }
     }
@@ -228,7 +231,7 @@ impl Dyadic {
             return m.signum() as i32;
         }
         if let Some(m) = self.wide_mant() {
-            return m.signum();
+            return wide::signum(m);
         }
         let m = self.ibig();
         if m.is_zero() {
@@ -274,15 +277,21 @@ impl Dyadic {
         // Keep the leading 64 bits (rounded down); dropping the rest costs
         // < 2^-63. The value alone decides the result, whatever the
         // representation: the kept bits and the scale are the same.
-        if let Some(m) = self.wide_mant() {
-            if m.signum() == 0 {
+        // (top bits, bits dropped), an `i128` mantissa without a 256-bit
+        // conversion.
+        let top = if let Some(m) = self.fixed() {
+            let drop = (128 - m.unsigned_abs().leading_zeros()).saturating_sub(64);
+            Some((m >> drop, drop))
+        } else if let Some(m) = self.wide_mant() {
+            let drop = wide::len(m).saturating_sub(64);
+            Some((wide::to_i128(m >> drop).expect("64 bits"), drop))
+        } else {
+            None
+        };
+        if let Some((top, drop)) = top {
+            if top == 0 {
                 return 0.0;
             }
-            let drop = m.len().saturating_sub(64);
-            let top = match self.fixed() {
-                Some(m) => m >> drop,
-                None => m.shr_floor_i128(drop),
-            };
             // u64 → f64 rounds as i128 → f64 does (to nearest, ties to
             // even, the same for either sign), without a library call.
             let top = u64::try_from(top.unsigned_abs())
@@ -355,7 +364,7 @@ impl Ord for Dyadic {
 #[inline(never)]
 fn cmp_wider(this: &Dyadic, other: &Dyadic) -> Ordering {
     if let (Some(a), Some(b)) = (this.wide_mant(), other.wide_mant()) {
-        return wide::cmp(a, this.exp, b, other.exp);
+        return cmp_wide(a, this.exp, b, other.exp);
     }
     // By sign and the place of the leading bit first, which spares the
     // long shifts of far-apart exponents.
@@ -366,7 +375,7 @@ fn cmp_wider(this: &Dyadic, other: &Dyadic) -> Ordering {
     let top = |x: &Dyadic| {
         let len = match &x.mant {
             Mant::Small(m) => 128 - m.unsigned_abs().leading_zeros() as usize,
-            Mant::Wide(m) => m.len() as usize,
+            Mant::Wide(m) => wide::len(*m) as usize,
             Mant::Big(m) => m.bit_len(),
         };
         x.exp as i64 + len as i64
@@ -403,6 +412,24 @@ fn cmp_fixed(a: i128, ea: i32, b: i128, eb: i32) -> Ordering {
     if sa > 0 { mag } else { mag.reverse() }
 }
 
+/// [`cmp_fixed`] on 256-bit mantissas.
+fn cmp_wide(a: Wide, ea: i32, b: Wide, eb: i32) -> Ordering {
+    let (sa, sb) = (wide::signum(a), wide::signum(b));
+    if sa != sb || sa == 0 {
+        return sa.cmp(&sb);
+    }
+    let top = |m: Wide, e: i32| e as i64 + wide::len(m) as i64;
+    // Equal leading places: the shift is below 255 and the shifted
+    // mantissa as long as the other.
+    let aligned = |m: Wide, s: i32| wide::shl(m, s as u32).expect("aligned mantissas fit");
+    match top(a, ea).cmp(&top(b, eb)) {
+        Ordering::Equal if ea >= eb => aligned(a, ea - eb).cmp(&b),
+        Ordering::Equal => a.cmp(&aligned(b, eb - ea)),
+        unequal if sa > 0 => unequal,
+        unequal => unequal.reverse(),
+    }
+}
+
 /// `m · 2^s` if it fits in an `i128`.
 fn shl_fixed(m: i128, s: i64) -> Option<i128> {
     let r = m.checked_shl(u32::try_from(s).ok()?)?;
@@ -435,19 +462,19 @@ fn add_fixed<const SUB: bool>((a, ea): (i128, i32), (b, eb): (i128, i32)) -> Opt
 /// `a·2^ea + b·2^eb` on 256-bit mantissas, if the aligned operands and the
 /// sum fit; a zero operand takes the other's exponent, as in [`add_fixed`].
 fn add_wide((a, ea): (Wide, i32), (b, eb): (Wide, i32)) -> Option<Dyadic> {
-    let (ea, eb) = match (a.signum(), b.signum()) {
-        (0, _) => (eb, eb),
-        (_, 0) => (ea, ea),
+    let (ea, eb) = match (a.is_zero(), b.is_zero()) {
+        (true, _) => (eb, eb),
+        (_, true) => (ea, ea),
         _ => (ea, eb),
     };
     let d = ea as i64 - eb as i64;
-    let shift = |m: Wide, d: i64| m.shl(u32::try_from(d).ok()?);
+    let shift = |m: Wide, d: i64| wide::shl(m, u32::try_from(d).ok()?);
     let (a, b, e) = match d.cmp(&0) {
         Ordering::Equal => (a, b, ea),
         Ordering::Greater => (shift(a, d)?, b, eb),
         Ordering::Less => (a, shift(b, -d)?, ea),
     };
-    Some(Dyadic::wide(a.add(b)?, e))
+    Some(Dyadic::wide(wide::add(a, b)?, e))
 }
 
 /// `x − y` if `SUB`, else `x + y`: on `i128` mantissas when they fit,
@@ -466,7 +493,7 @@ fn add_or_sub<const SUB: bool>(x: &Dyadic, y: &Dyadic) -> Dyadic {
 #[inline(never)]
 fn add_or_sub_wider<const SUB: bool>(x: &Dyadic, y: &Dyadic) -> Dyadic {
     if let (Some(a), Some(b)) = (x.wide_mant(), y.wide_mant())
-        && let Some(r) = add_wide((a, x.exp), (if SUB { b.neg() } else { b }, y.exp))
+        && let Some(r) = add_wide((a, x.exp), (if SUB { -b } else { b }, y.exp))
     {
         return r;
     }
@@ -531,7 +558,7 @@ impl Mul for &Dyadic {
 #[inline(never)]
 fn mul_wider(x: &Dyadic, y: &Dyadic, exp: i32) -> Dyadic {
     if let (Some(a), Some(b)) = (x.wide_mant(), y.wide_mant())
-        && let Some(p) = a.mul(b)
+        && let Some(p) = wide::mul(a, b)
     {
         return Dyadic::wide(p, exp);
     }
@@ -548,7 +575,7 @@ impl Neg for &Dyadic {
             };
         }
         if let Some(m) = self.wide_mant() {
-            return Dyadic::wide(m.neg(), self.exp);
+            return Dyadic::wide(-m, self.exp);
         }
         Dyadic::big(-self.ibig().as_ref(), self.exp)
     }
@@ -673,12 +700,16 @@ pub(crate) mod tests {
     }
 
     /// Every operation on random dyadics gives the same value, ordering,
-    /// sign and `f64` with `i128` mantissas as on big integers alone, on
-    /// operands and results that fit, overflow mid-way or never fit.
+    /// sign and `f64` with `i128` and 256-bit mantissas as on big integers
+    /// alone, on operands and results that fit, overflow mid-way or never
+    /// fit.
     #[test]
     fn fixed_width_arithmetic_matches_big_integers() {
         let mut r = SmallRng::seed_from_u64(0x0dd_a1c);
         let (mut fixed, mut fell_back, mut wide) = (0, 0, 0);
+        // Sums and products of operands on the stack, at least one of them
+        // 256-bit: results on the stack, and results too long for it.
+        let (mut wide_ops, mut wide_overflowed) = (0, 0);
         for _ in 0..60_000 {
             let (x, y) = (random(&mut r), random(&mut r));
             let k = r.random_range(-200..200);
@@ -720,10 +751,22 @@ pub(crate) mod tests {
                     fell_back += 1;
                 }
             }
+            let is_wide = |a: &Dyadic| matches!(a.mant, Mant::Wide(_));
+            let is_big = |a: &Dyadic| matches!(a.mant, Mant::Big(_));
+            if !is_big(&x) && !is_big(&y) && (is_wide(&x) || is_wide(&y)) {
+                for a in [&fast.0[0], &fast.0[1], &fast.0[2]] {
+                    wide_ops += usize::from(!is_big(a));
+                    wide_overflowed += usize::from(is_big(a));
+                }
+            }
         }
         // Every path was taken, and some sums and products overflowed.
         assert!(fixed > 20_000 && fell_back > 2_000, "{fixed} {fell_back}");
         assert!(wide > 20_000, "{wide}");
+        assert!(
+            wide_ops > 20_000 && wide_overflowed > 10_000,
+            "{wide_ops} {wide_overflowed}"
+        );
     }
 
     /// Ordering near the edges of the fixed-width comparison: equal leading
@@ -756,6 +799,37 @@ pub(crate) mod tests {
             assert_eq!(x.cmp(&y), want, "{x:?} {y:?}");
             assert_eq!(y.cmp(&x), want.reverse(), "{x:?} {y:?}");
             assert_eq!(big_only(|| x.cmp(&y)), want, "{x:?} {y:?}");
+        }
+    }
+
+    /// Ordering of 256-bit mantissas at equal leading places, left
+    /// unnormalised: a mantissa against itself shifted (equal) and against
+    /// that with one added (larger in magnitude), of either sign.
+    #[test]
+    fn wide_comparison_at_equal_leading_places() {
+        let mut r = SmallRng::seed_from_u64(255);
+        let raw = |m: &IBig, exp: i32| Dyadic {
+            mant: Mant::Wide(wide::from_ibig(m).expect("255 bits fit")),
+            exp,
+        };
+        for _ in 0..5_000 {
+            let bits = r.random_range(128..=255usize);
+            let m = IBig::from(r.random::<u128>()) << 128 | IBig::from(r.random::<u128>());
+            let m = (m >> (256 - bits)) | IBig::ONE << (bits - 1) | IBig::ONE;
+            let m = if r.random_bool(0.5) { -m } else { m };
+            let (e, k) = (r.random_range(-300..300), r.random_range(0..=255 - bits));
+            let x = raw(&m, e);
+            let shifted = &m << k;
+            let away = &shifted + m.signum();
+            let cases = [
+                (raw(&shifted, e - k as i32), Ordering::Equal),
+                (raw(&away, e - k as i32), x.signum().cmp(&0).reverse()),
+            ];
+            for (y, want) in cases {
+                assert_eq!(x.cmp(&y), want, "{x:?} {y:?}");
+                assert_eq!(y.cmp(&x), want.reverse(), "{x:?} {y:?}");
+                assert_eq!(big_only(|| x.cmp(&y)), want, "{x:?} {y:?}");
+            }
         }
     }
 
