@@ -1,17 +1,22 @@
-//! Reference against x4 for every kernel, over batches of 4096 rays drawn
-//! from a realistic mix (seeded), plus parry3d's ball ray cast as an
-//! outside peer for the sphere. Run with `cargo bench --bench kernels`; the
-//! ratios of the run are printed at the end (and written to
-//! `target/criterion/ratios.md`).
+//! Reference against x4 for every kernel, over batches of 4096 primary rays
+//! of a 64×64 camera (jittered, seeded), plus the plain-f64 variant as a
+//! baseline and parry3d as an outside peer (`Ball` for the sphere,
+//! `HalfSpace` for the plane). The sphere is also run on the same rays
+//! shuffled, where neighbouring rays no longer take the same branches. Run
+//! with `cargo bench --bench kernels`; the rates and ratios of the run are
+//! printed at the end and written to `target/criterion/ratios.md` and
+//! `target/criterion/ratios.json` (one object per kernel, Mrays/s).
 //!
-//! Four ways of running a kernel, per batch:
+//! The ways of running a kernel, per batch:
 //! * `reference/per-ray`: one `black_box`ed call per ray, so the optimiser
 //!   cannot fuse calls across rays: the scalar code as written.
 //! * `reference/slice`: a plain loop over the slice, which LLVM may
-//!   auto-vectorise (4 lanes with SSE, 16 with AVX-512 under native).
+//!   auto-vectorise.
 //! * `x4`: the SIMD kernel over rays already packed four to a `Ray4`.
-//! * `parry3d` (sphere only): `Ball::cast_local_ray`, one `black_box`ed call
-//!   per ray.
+//! * `f64/per-ray`: the plain-f64 variant (`*::double`; `textbook` for the
+//!   camera), one `black_box`ed call per ray.
+//! * `parry3d/per-ray` (sphere, plane): `Ball::cast_local_ray` and
+//!   `HalfSpace::cast_local_ray`, one `black_box`ed call per ray.
 
 use criterion::{BenchmarkId, Criterion, Throughput};
 use glam::Vec3;
@@ -69,6 +74,7 @@ fn bench_group<P: Copy>(
     rays: &[Ray],
     prim: P,
     scalar: impl Fn(&Ray, &P) -> Option<f32>,
+    baseline: impl Fn(&Ray, &P) -> Option<f32>,
     simd: impl Fn(&Ray4) -> f32x4,
 ) {
     let packed = pack(rays);
@@ -100,7 +106,56 @@ fn bench_group<P: Copy>(
             acc
         })
     });
+    g.bench_function(BenchmarkId::new("f64", "per-ray"), |b| {
+        b.iter(|| {
+            let mut acc = 0.0f32;
+            for r in rays {
+                acc += black_box(baseline(black_box(r), &prim)).unwrap_or(0.0);
+            }
+            acc
+        })
+    });
     g.finish();
+}
+
+/// parry3d's cast on the same rays, moved into the shape's frame
+/// beforehand, one `black_box`ed call per ray.
+fn bench_peer<S: parry3d::query::RayCast>(
+    c: &mut Criterion,
+    name: &str,
+    shape: &S,
+    local: &[parry3d::query::Ray],
+) {
+    let mut g = c.benchmark_group(name);
+    g.throughput(Throughput::Elements(local.len() as u64));
+    g.bench_function(BenchmarkId::new("parry3d", "per-ray"), |b| {
+        b.iter(|| {
+            let mut acc = 0.0f32;
+            for r in local {
+                acc += black_box(shape.cast_local_ray(black_box(r), f32::MAX, false)).unwrap_or(0.0);
+            }
+            acc
+        })
+    });
+    g.finish();
+}
+
+/// The rays moved by `-at`, as parry3d rays.
+fn local(rays: &[Ray], at: Vec3) -> Vec<parry3d::query::Ray> {
+    rays.iter()
+        .map(|r| {
+            let o = (r.origin - at).to_array();
+            parry3d::query::Ray::new(o.into(), r.dir.to_array().into())
+        })
+        .collect()
+}
+
+/// The same rays in a seeded random order.
+fn shuffled(rays: &[Ray]) -> Vec<Ray> {
+    use rand::seq::SliceRandom;
+    let mut v = rays.to_vec();
+    v.shuffle(&mut SmallRng::seed_from_u64(0x5_4ff1e));
+    v
 }
 
 fn benches(c: &mut Criterion) {
@@ -111,42 +166,21 @@ fn benches(c: &mut Criterion) {
 
     let s = Sphere::new(Vec3::new(0.3, 0.5, -1.0), 1.2);
     let s4 = sphere::x4::Sphere4::splat(&s);
-    bench_group(
-        c,
-        "sphere",
-        &rays,
-        s,
-        |r, s| sphere::reference::intersect(r, s).nearest(0.0, f32::INFINITY),
-        |r| {
-            let (m, t) = sphere::x4::intersect(r, &s4).nearest(t_min, t_max);
-            finite(m, t)
-        },
-    );
-    // The outside peer, same rays, ball moved to the origin (local ray).
-    {
-        let ball = parry3d::shape::Ball::new(s.radius);
-        let local: Vec<parry3d::query::Ray> = rays
-            .iter()
-            .map(|r| {
-                let o = (r.origin - s.center).to_array();
-                let d = r.dir.to_array();
-                parry3d::query::Ray::new(o.into(), d.into())
-            })
-            .collect();
-        let mut g = c.benchmark_group("sphere");
-        g.throughput(Throughput::Elements(N as u64));
-        g.bench_function(BenchmarkId::new("parry3d", "per-ray"), |b| {
-            use parry3d::query::RayCast;
-            b.iter(|| {
-                let mut acc = 0.0f32;
-                for r in &local {
-                    acc += black_box(ball.cast_local_ray(black_box(r), f32::MAX, false))
-                        .unwrap_or(0.0);
-                }
-                acc
-            })
-        });
-        g.finish();
+    let ball = parry3d::shape::Ball::new(s.radius);
+    for (name, rays) in [("sphere", rays.clone()), ("sphere-shuffled", shuffled(&rays))] {
+        bench_group(
+            c,
+            name,
+            &rays,
+            s,
+            |r, s| sphere::reference::intersect(r, s).nearest(0.0, f32::INFINITY),
+            |r, s| sphere::double::intersect(r, s).nearest(0.0, f32::INFINITY),
+            |r| {
+                let (m, t) = sphere::x4::intersect(r, &s4).nearest(t_min, t_max);
+                finite(m, t)
+            },
+        );
+        bench_peer(c, name, &ball, &local(&rays, s.center));
     }
 
     let p = Plane::new(Vec3::new(0.0, -1.0, 0.0), Vec3::new(0.05, 1.0, 0.02));
@@ -157,11 +191,15 @@ fn benches(c: &mut Criterion) {
         &rays,
         p,
         |r, p| plane::reference::intersect(r, p).nearest(0.0, f32::INFINITY),
+        |r, p| plane::double::intersect(r, p).nearest(0.0, f32::INFINITY),
         |r| {
             let (m, t) = plane::x4::intersect(r, &p4).nearest(t_min, t_max);
             finite(m, t)
         },
     );
+    let n = p.normal.normalize().to_array();
+    let half = parry3d::shape::HalfSpace::new(parry3d::math::Vector::new(n[0], n[1], n[2]));
+    bench_peer(c, "plane", &half, &local(&rays, p.point));
 
     // A one-sheet hyperboloid x² + z² − y² = 0.5, tilted by the mix of terms.
     let q = Quadric::new([1.0, -1.0, 1.0, 0.1, 0.0, 0.05, 0.0, 0.2, 0.0, -0.5]);
@@ -172,6 +210,7 @@ fn benches(c: &mut Criterion) {
         &rays,
         q,
         |r, q| quadric::reference::intersect(r, q).nearest(0.0, f32::INFINITY),
+        |r, q| quadric::double::intersect(r, q).nearest(0.0, f32::INFINITY),
         |r| {
             let (m, t) = quadric::x4::intersect(r, &q4).nearest(t_min, t_max);
             finite(m, t)
@@ -207,10 +246,21 @@ fn benches(c: &mut Criterion) {
             acc
         })
     });
+    let cam64 = rayoracle::camera::double::Camera::new(&cam.params).expect("valid camera");
+    g.bench_function(BenchmarkId::new("f64", "per-ray"), |b| {
+        b.iter(|| {
+            let mut acc = 0.0f32;
+            for i in 0..N as u32 {
+                acc += black_box(cam64.ray(black_box(i % 64), i / 64)).dir.x;
+            }
+            acc
+        })
+    });
     g.finish();
 }
 
-/// Reads criterion's point estimates back and prints x4 / reference ratios.
+/// Reads criterion's point estimates back, prints the rates and ratios of
+/// this run, and writes them to `target/criterion/ratios.{md,json}`.
 fn print_ratios() {
     let base = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/criterion");
     let ns = |group: &str, id: &str| -> Option<f64> {
@@ -219,38 +269,56 @@ fn print_ratios() {
             serde_json::from_str(&std::fs::read_to_string(path).ok()?).ok()?;
         v["median"]["point_estimate"].as_f64()
     };
-    let mut out = String::from(
-        "| kernel | reference per-ray (Mrays/s) | reference slice (Mrays/s) | x4 (Mrays/s) | x4 ÷ per-ray | x4 ÷ slice | parry3d (Mrays/s) |\n|---|---|---|---|---|---|---|\n",
+    let f = |x: Option<f64>| x.map_or("–".into(), |v| format!("{v:.1}"));
+    let r = |a: Option<f64>, b: Option<f64>| match (a, b) {
+        (Some(a), Some(b)) => format!("{:.2}×", a / b),
+        _ => "–".into(),
+    };
+    let mut md = String::from(
+        "| kernel | rays | reference per-ray | reference slice | x4 | f64 per-ray | parry3d | x4 ÷ parry3d | f64 ÷ reference per-ray |\n|---|---|---|---|---|---|---|---|---|\n",
     );
-    for k in ["camera", "plane", "sphere", "quadric"] {
+    let mut json = Vec::new();
+    for k in ["camera", "plane", "sphere", "sphere-shuffled", "quadric"] {
         let rate = |id: &str| ns(k, id).map(|t| N as f64 / t * 1e3);
-        let (pr, sl, x4) = (
+        let (pr, sl, x4, f64r, peer) = (
             rate("reference/per-ray"),
             rate("reference/slice"),
             rate("x4/packed"),
+            rate("f64/per-ray"),
+            rate("parry3d/per-ray"),
         );
-        let peer = if k == "sphere" {
-            rate("parry3d/per-ray")
+        let rays = if k == "sphere-shuffled" {
+            "4096 primary rays of a 64×64 camera, shuffled"
         } else {
-            None
+            "4096 primary rays of a 64×64 camera"
         };
-        let f = |x: Option<f64>| x.map_or("–".into(), |v| format!("{v:.1}"));
-        let r = |a: Option<f64>, b: Option<f64>| match (a, b) {
-            (Some(a), Some(b)) => format!("{:.2}×", a / b),
-            _ => "–".into(),
-        };
-        out += &format!(
-            "| {k} | {} | {} | {} | {} | {} | {} |\n",
+        md += &format!(
+            "| {k} | {rays} | {} | {} | {} | {} | {} | {} | {} |\n",
             f(pr),
             f(sl),
             f(x4),
-            r(x4, pr),
-            r(x4, sl),
-            f(peer)
+            f(f64r),
+            f(peer),
+            r(x4, peer),
+            r(f64r, pr),
         );
+        let mut o = serde_json::json!({
+            "kernel": k,
+            "rays": rays,
+            "reference_per_ray": pr,
+            "reference_slice": sl,
+            "x4": x4,
+            "f64": f64r,
+        });
+        if let Some(p) = peer {
+            o["parry3d"] = serde_json::json!(p);
+        }
+        json.push(o);
     }
-    println!("\n{out}");
-    let _ = std::fs::write(base.join("ratios.md"), out);
+    println!("\nMrays/s, one run:\n\n{md}");
+    let _ = std::fs::write(base.join("ratios.md"), md);
+    let text = serde_json::to_string_pretty(&json).expect("JSON");
+    let _ = std::fs::write(base.join("ratios.json"), text + "\n");
 }
 
 fn main() {
