@@ -132,7 +132,8 @@ fn bench_peer<S: parry3d::query::RayCast>(
         b.iter(|| {
             let mut acc = 0.0f32;
             for r in local {
-                acc += black_box(shape.cast_local_ray(black_box(r), f32::MAX, false)).unwrap_or(0.0);
+                acc +=
+                    black_box(shape.cast_local_ray(black_box(r), f32::MAX, false)).unwrap_or(0.0);
             }
             acc
         })
@@ -167,7 +168,10 @@ fn benches(c: &mut Criterion) {
     let s = Sphere::new(Vec3::new(0.3, 0.5, -1.0), 1.2);
     let s4 = sphere::x4::Sphere4::splat(&s);
     let ball = parry3d::shape::Ball::new(s.radius);
-    for (name, rays) in [("sphere", rays.clone()), ("sphere-shuffled", shuffled(&rays))] {
+    for (name, rays) in [
+        ("sphere", rays.clone()),
+        ("sphere-shuffled", shuffled(&rays)),
+    ] {
         bench_group(
             c,
             name,

@@ -1,9 +1,11 @@
 //! Which stage of a kernel decided an answer.
 //!
-//! Every kernel evaluates in stages, each certifying only what its error
-//! bound decides and passing the rest on: a filter in f64 with a bound from
-//! magnitude sums (the same arithmetic on one lane or four), then exact
-//! arithmetic. The answer is the exact class and correctly rounded roots
+//! Every kernel evaluates in stages, each certifying only what it can
+//! prove and passing the rest on: a filter in f64 with a bound from
+//! magnitude sums (the same arithmetic on one lane or four), then the same
+//! arithmetic checked to be exact, operation by operation (which settles
+//! the exact zeros of small-integer and dyadic data), then exact
+//! arithmetic on integers. The answer is the exact class and correctly rounded roots
 //! whichever stage gives it; the stage only says how much work it took.
 //!
 //! With flush-to-zero or denormals-are-zero on, the filter's bounds do not
@@ -16,9 +18,14 @@
 //! let s = Sphere::new(Vec3::ZERO, 1.0);
 //! let (_, stage) = intersect_staged(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), &s);
 //! assert_eq!(stage, Stage::Filter);
-//! // An exact tangent cannot be told from a near miss in rounded arithmetic.
+//! // An exact tangent cannot be told from a near miss by a bound; small
+//! // integers make every operation exact, which proves it.
 //! let (_, stage) = intersect_staged(&Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z), &s);
-//! assert_eq!(stage, Stage::Exact);
+//! assert_eq!(stage, Stage::Tracked);
+//! // A tangent whose arithmetic rounds goes to the exact oracle.
+//! let big = Sphere::new(Vec3::ZERO, 3.0);
+//! let r = Ray::new(Vec3::new(0.0, 3.0, -1e30), Vec3::new(0.0, 0.0, 0.1));
+//! assert_eq!(intersect_staged(&r, &big).1, Stage::Exact);
 //! ```
 
 /// A stage of evaluation, cheapest first.
@@ -26,13 +33,16 @@
 pub enum Stage {
     /// f64 arithmetic with a bound from magnitude sums; SIMD in x4.
     Filter,
+    /// f64 arithmetic in which no operation rounded
+    /// ([`crate::num::tracked`]).
+    Tracked,
     /// Exact dyadic arithmetic ([`crate::exact`]).
     Exact,
 }
 
 impl Stage {
     /// Every stage, in order.
-    pub const ALL: [Stage; 2] = [Stage::Filter, Stage::Exact];
+    pub const ALL: [Stage; 3] = [Stage::Filter, Stage::Tracked, Stage::Exact];
 
     /// A short name for reports.
     ///
@@ -42,6 +52,7 @@ impl Stage {
     pub fn name(self) -> &'static str {
         match self {
             Stage::Filter => "filter",
+            Stage::Tracked => "tracked",
             Stage::Exact => "exact",
         }
     }

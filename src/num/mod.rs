@@ -1,7 +1,8 @@
 //! Numerical building blocks.
 //!
 //! The plane, sphere and quadric kernels evaluate in f64 with a proven error
-//! bound ([`real`], [`certify`]): the [`Real`] trait runs the same
+//! bound ([`real`], [`certify`]), then in f64 checked to be exact
+//! operation by operation ([`tracked`]): the [`Real`] trait runs the same
 //! expression on one lane (`f64`) or four ([`real::F64x4`]), and every
 //! operation is one correctly rounded IEEE-754 operation (`+`, `−`, `×`,
 //! `÷`, `√`). Nothing here calls `mul_add` (fused on one build, unfused on
@@ -31,3 +32,4 @@ pub use lane::Lane;
 pub use real::Real;
 pub mod certify;
 pub mod real;
+pub mod tracked;

@@ -16,7 +16,7 @@
 //!   `x = E_den/|d̂en|`. The root is certified only where `x < 1/4`, with
 //!   `1/(1 − x)` bounded by `1 + 2x`: `e = (x(1 + 2x) + 6u)|t̂| + (1 +
 //!   2x)E_num/|d̂en|`, split into its relative and absolute parts for
-//!   [`certify`](crate::num::certify::certify), and every part widened by
+//!   [`certify`], and every part widened by
 //!   `1 + 2⁻³⁰` for the roundings of its own evaluation.
 //!
 //! The filter uses `E_num = 8u m_num` and `E_den = 4u m_den`, twice the
@@ -28,14 +28,16 @@
 //! rounds it. The rest, such as a line parallel in exact arithmetic but not
 //! term by term, goes to the next stage.
 
-use crate::num::certify::{SLACK, U};
+use super::PlaneHit;
+use crate::num::certify::{SLACK, U, certify};
 use crate::num::real::Real;
+use crate::num::tracked::Tracked;
 
 /// The filter's result: the certified classes and the root with its bound.
 #[derive(Clone, Copy, Debug)]
 pub struct Filtered<L: Real> {
     /// Certified: one hit (`d·n ≠ 0`); `t` still needs
-    /// [`certify`](crate::num::certify::certify).
+    /// [`certify`].
     pub hit: L::Mask,
     /// Certified: parallel and off the plane.
     pub parallel: L::Mask,
@@ -96,4 +98,37 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) 
         r,
         a,
     }
+}
+
+/// The second stage: the filter's arithmetic tracked for exactness
+/// ([`Tracked`]). Where no operation rounded, `num` and `den` are exact, so
+/// the class follows from their signs, and the root `num/den` rounds once,
+/// within `u|t|` (certified with `2u`). `None` where an operation rounded
+/// or the root sits next to an f32 rounding boundary.
+///
+/// ```
+/// use rayoracle::plane::{PlaneHit, kernel::tracked};
+/// // d·n = 1 − 1 = 0 term by term, and (a − o)·n = 0: in the plane.
+/// let h = tracked([0.0, 0.0, 1.0], [1.0, 1.0, 0.0], [0.0; 3], [1.0, -1.0, 0.0]);
+/// assert_eq!(h, Some(PlaneHit::InPlane));
+/// // a − o = 1 − 2⁻⁶⁰ rounds: not for this stage.
+/// assert_eq!(tracked([2f64.powi(-60), 0.0, 0.0], [1.0; 3], [1.0, 0.0, 0.0], [1.0; 3]), None);
+/// ```
+pub fn tracked(o: [f64; 3], d: [f64; 3], a: [f64; 3], n: [f64; 3]) -> Option<PlaneHit> {
+    let mut x = Tracked::new();
+    let w = [0, 1, 2].map(|i| x.sub(a[i], o[i]));
+    let num = x.dot(w, n);
+    let den = x.dot(d, n);
+    if !x.exact() {
+        return None;
+    }
+    if den == 0.0 {
+        return Some(if num == 0.0 {
+            PlaneHit::InPlane
+        } else {
+            PlaneHit::Parallel
+        });
+    }
+    let t = num / den + 0.0;
+    certify(t, 2.0 * U, 0.0).then_some(PlaneHit::Hit(t as f32))
 }

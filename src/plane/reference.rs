@@ -45,7 +45,7 @@ pub fn intersect_staged(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
     if !subnormals_work() {
-        return (escalate(ray, plane), Stage::Exact);
+        return (exact_stage(ray, plane), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.to_array().map(f64::from);
     let f = kernel::filter(
@@ -62,14 +62,24 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
     } else if f.in_plane {
         (PlaneHit::InPlane, Stage::Filter)
     } else {
-        (escalate(ray, plane), Stage::Exact)
+        escalate(ray, plane)
+    }
+}
+
+/// The stages after the filter: f64 arithmetic that proves itself exact
+/// ([`kernel::tracked`]), then the exact oracle.
+#[cold]
+#[inline(never)]
+pub(crate) fn escalate(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
+    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    match kernel::tracked(w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal)) {
+        Some(h) => (h, Stage::Tracked),
+        None => (exact_stage(ray, plane), Stage::Exact),
     }
 }
 
 /// The last stage: the exact oracle; [`PlaneHit::Parallel`] for a
 /// non-finite input.
-#[cold]
-#[inline(never)]
-pub(crate) fn escalate(ray: &Ray, plane: &Plane) -> PlaneHit {
+fn exact_stage(ray: &Ray, plane: &Plane) -> PlaneHit {
     exact::intersect(ray, plane).unwrap_or(PlaneHit::Parallel)
 }

@@ -45,7 +45,7 @@
 //! (|x̂/ŷ| E_y/|ŷ| + E_x/|ŷ|) / (1 − E_y/|ŷ|)`; the filter certifies a root
 //! only where `E_y/|ŷ| < 1/4`, and bounds `1/(1 − x)` by `1 + 2x`. Each
 //! bound is split into a part relative to the root and an absolute part,
-//! for [`certify`](crate::num::certify::certify), and every part is widened
+//! for [`certify`], and every part is widened
 //! by `1 + 2⁻³⁰` for the roundings of its own evaluation; the roots'
 //! roundings, `9u` in all, count `20u`. A root exactly 0 (`γ = 0` term by
 //! term) is `+0`.
@@ -56,15 +56,17 @@
 //! and `2⁷⁶⁸` in magnitude, so no overflow and no underflow into f64's
 //! subnormals for any finite input. A non-finite input certifies nothing.
 
-use crate::num::certify::{SLACK, U};
+use super::QuadricHit;
+use crate::num::certify::{SLACK, U, certify};
 use crate::num::real::Real;
+use crate::num::tracked::Tracked;
 
 /// The filter's result: the certified classes and the roots with their
 /// bounds.
 #[derive(Clone, Copy, Debug)]
 pub struct Filtered<L: Real> {
     /// Certified: two roots `t0`, `t1` (unsorted; each still needs
-    /// [`certify`](crate::num::certify::certify)).
+    /// [`certify`]).
     pub two: L::Mask,
     /// Certified: one linear root `t1` (α = 0).
     pub linear: L::Mask,
@@ -98,6 +100,57 @@ fn sum<L: Real, const N: usize>(t: [L; N]) -> (L, L) {
     (s, m)
 }
 
+/// The terms of α, β and γ of the line `o + t d` on the quadric `k`, each
+/// term `t(c, x, y) = c·x·y` (with `y = 1` for the linear ones), β's square
+/// terms doubled: written once for the filter and the tracked stage.
+#[inline(always)]
+#[allow(clippy::type_complexity)]
+fn terms<L: Copy + core::ops::Add<Output = L>>(
+    k: &[L; 10],
+    o: [L; 3],
+    d: [L; 3],
+    one: L,
+    mut t: impl FnMut(L, L, L) -> L,
+) -> ([L; 6], [L; 12], [L; 10]) {
+    let alpha = [
+        t(k[0], d[0], d[0]),
+        t(k[1], d[1], d[1]),
+        t(k[2], d[2], d[2]),
+        t(k[3], d[0], d[1]),
+        t(k[4], d[0], d[2]),
+        t(k[5], d[1], d[2]),
+    ];
+    // Doubling is exact (x + x), or overflows, which every later step sees.
+    let two = |x: L| x + x;
+    let beta = [
+        two(t(k[0], o[0], d[0])),
+        two(t(k[1], o[1], d[1])),
+        two(t(k[2], o[2], d[2])),
+        t(k[3], o[0], d[1]),
+        t(k[3], d[0], o[1]),
+        t(k[4], o[0], d[2]),
+        t(k[4], d[0], o[2]),
+        t(k[5], o[1], d[2]),
+        t(k[5], d[1], o[2]),
+        t(k[6], d[0], one),
+        t(k[7], d[1], one),
+        t(k[8], d[2], one),
+    ];
+    let gamma = [
+        t(k[0], o[0], o[0]),
+        t(k[1], o[1], o[1]),
+        t(k[2], o[2], o[2]),
+        t(k[3], o[0], o[1]),
+        t(k[4], o[0], o[2]),
+        t(k[5], o[1], o[2]),
+        t(k[6], o[0], one),
+        t(k[7], o[1], one),
+        t(k[8], o[2], one),
+        k[9],
+    ];
+    (alpha, beta, gamma)
+}
+
 /// α, β and γ of the line `o + t d` on the quadric `k`, each with the sum
 /// of its terms' magnitudes.
 ///
@@ -110,43 +163,8 @@ fn sum<L: Real, const N: usize>(t: [L; N]) -> (L, L) {
 /// ```
 #[inline(always)]
 pub fn coefficients<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3]) -> [(L, L); 3] {
-    let two = L::splat(2.0);
-    let t = |c: L, x: L, y: L| c * x * y;
-    let alpha = sum([
-        t(k[0], d[0], d[0]),
-        t(k[1], d[1], d[1]),
-        t(k[2], d[2], d[2]),
-        t(k[3], d[0], d[1]),
-        t(k[4], d[0], d[2]),
-        t(k[5], d[1], d[2]),
-    ]);
-    let beta = sum([
-        t(k[0], o[0], d[0]) * two,
-        t(k[1], o[1], d[1]) * two,
-        t(k[2], o[2], d[2]) * two,
-        t(k[3], o[0], d[1]),
-        t(k[3], d[0], o[1]),
-        t(k[4], o[0], d[2]),
-        t(k[4], d[0], o[2]),
-        t(k[5], o[1], d[2]),
-        t(k[5], d[1], o[2]),
-        k[6] * d[0],
-        k[7] * d[1],
-        k[8] * d[2],
-    ]);
-    let gamma = sum([
-        t(k[0], o[0], o[0]),
-        t(k[1], o[1], o[1]),
-        t(k[2], o[2], o[2]),
-        t(k[3], o[0], o[1]),
-        t(k[4], o[0], o[2]),
-        t(k[5], o[1], o[2]),
-        k[6] * o[0],
-        k[7] * o[1],
-        k[8] * o[2],
-        k[9],
-    ]);
-    [alpha, beta, gamma]
+    let (a, b, g) = terms(k, o, d, L::splat(1.0), |c, x, y| c * x * y);
+    [sum(a), sum(b), sum(g)]
 }
 
 /// Runs the filter on a line `o + t d` and the quadric `k`, every bound
@@ -225,4 +243,58 @@ pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filter
         r1,
         a1,
     }
+}
+
+/// The second stage: α, β, γ and `β² − 4αγ` tracked for exactness
+/// ([`Tracked`]), each term `k·x·y` as two checked products. Where no
+/// operation rounded, the class follows from signs, as in pbrt-v4's
+/// `Quadratic` with its α = 0 branch: a linear root `−γ/β` or a double
+/// root `−β/2α` rounds once (certified with `2u`); two roots `q/α` and
+/// `γ/q` from `s = √Δ` are within `4u` (certified with `8u`). `None` where
+/// an operation rounded or a root sits next to an f32 rounding boundary.
+///
+/// ```
+/// use rayoracle::quadric::{QuadricHit, kernel::tracked};
+/// // The cone x² + y² − z² = 0 through its apex: a double root at 0.
+/// let cone = [1.0, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+/// assert_eq!(tracked(&cone, [-1.0, 0.0, -2.0], [1.0, 0.0, 2.0]), Some(QuadricHit::One(1.0)));
+/// // A line on the cylinder x² + y² = 1: every t.
+/// let cyl = [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+/// assert_eq!(tracked(&cyl, [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]), Some(QuadricHit::All));
+/// ```
+pub fn tracked(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> Option<QuadricHit> {
+    let mut x = Tracked::new();
+    let (alpha, beta, gamma) = terms(k, o, d, 1.0, |c, p, q| {
+        let cp = x.mul(c, p);
+        x.mul(cp, q)
+    });
+    let mut sum = |v: &[f64]| v.iter().fold(0.0, |s, &y| x.add(s, y));
+    let (alpha, beta, gamma) = (sum(&alpha), sum(&beta), sum(&gamma));
+    let b2 = x.mul(beta, beta);
+    let ag = x.mul(4.0 * alpha, gamma);
+    let disc = x.sub(b2, ag);
+    // The doubled β terms and 4α are exact unless they overflow, which the
+    // checks below see as a non-finite value.
+    if !x.exact() || !disc.is_finite() || !beta.is_finite() {
+        return None;
+    }
+    let one = |t: f64| certify(t, 2.0 * U, 0.0).then_some(QuadricHit::One(t as f32));
+    if alpha == 0.0 {
+        return match (beta == 0.0, gamma == 0.0) {
+            (true, true) => Some(QuadricHit::All),
+            (true, false) => Some(QuadricHit::None),
+            _ => one(-gamma / beta + 0.0),
+        };
+    }
+    if disc < 0.0 {
+        return Some(QuadricHit::None);
+    }
+    if disc == 0.0 {
+        return one(-beta / (2.0 * alpha) + 0.0);
+    }
+    let q = -0.5 * (beta + disc.sqrt().copysign(beta));
+    let (t0, t1) = (q / alpha, gamma / q + 0.0);
+    let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
+    let ok = certify(t0, 8.0 * U, 0.0) && certify(t1, 8.0 * U, 0.0);
+    ok.then_some(QuadricHit::Two(t0 as f32, t1 as f32))
 }

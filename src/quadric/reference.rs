@@ -47,7 +47,7 @@ pub fn intersect_staged(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
     if !subnormals_work() {
-        return (escalate(ray, quadric), Stage::Exact);
+        return (exact_stage(ray, quadric), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.to_array().map(f64::from);
     let f = kernel::filter(
@@ -72,14 +72,24 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
     } else if f.all {
         (QuadricHit::All, Stage::Filter)
     } else {
-        (escalate(ray, quadric), Stage::Exact)
+        escalate(ray, quadric)
+    }
+}
+
+/// The stages after the filter: f64 arithmetic that proves itself exact
+/// ([`kernel::tracked`]), then the exact oracle.
+#[cold]
+#[inline(never)]
+pub(crate) fn escalate(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
+    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    match kernel::tracked(&quadric.coeffs.map(f64::from), w(ray.origin), w(ray.dir)) {
+        Some(h) => (h, Stage::Tracked),
+        None => (exact_stage(ray, quadric), Stage::Exact),
     }
 }
 
 /// The last stage: the exact oracle; [`QuadricHit::None`] for a non-finite
 /// input.
-#[cold]
-#[inline(never)]
-pub(crate) fn escalate(ray: &Ray, quadric: &Quadric) -> QuadricHit {
+fn exact_stage(ray: &Ray, quadric: &Quadric) -> QuadricHit {
     exact::intersect(ray, quadric).unwrap_or(QuadricHit::None)
 }

@@ -135,7 +135,7 @@ impl QuadricHit4 {
         );
         for i in (0..4).filter(|&i| !done.lanes()[i]) {
             let quadric = Quadric::new(k.map(|c| c[i]));
-            (class[i], t0[i], t1[i]) = match reference::escalate(&rays[i], &quadric) {
+            (class[i], t0[i], t1[i]) = match reference::escalate(&rays[i], &quadric).0 {
                 QuadricHit::None => (0, f32::NAN, f32::NAN),
                 QuadricHit::One(t) => (1, t, t),
                 QuadricHit::Two(a, b) => (2, a, b),

@@ -51,7 +51,7 @@
 //!   The filter certifies `t₁` only where `x < 1/4`, and bounds `1/(1 − x)`
 //!   by `1 + 2x`: `e₁ = (x(1 + 2x) + 10u)|t̂₁| + (1 + 2x)E_c/|q̂|`.
 //!
-//! Each bound is split, for [`certify`](crate::num::certify::certify), into
+//! Each bound is split, for [`certify`], into
 //! a part relative to the root and an absolute part; every quantity the
 //! bounds are made of is widened by `1 + 2⁻³⁰`, which covers the roundings
 //! of their own evaluation and of the reciprocals. Every constant above is
@@ -71,8 +71,10 @@
 //! An infinite input makes a magnitude sum infinite, and a NaN makes `Δ̂`
 //! NaN; neither certifies anything.
 
-use crate::num::certify::{SLACK, U};
+use super::SphereHit;
+use crate::num::certify::{SLACK, U, certify};
 use crate::num::real::Real;
+use crate::num::tracked::Tracked;
 
 /// The filter's result: the classes it certified, and both roots (in
 /// computation order) with their error bounds, each `|t|·r + a`.
@@ -81,7 +83,7 @@ pub struct Filtered<L: Real> {
     /// Certified: no root (no line, or `Δ < 0`).
     pub none: L::Mask,
     /// Certified: two roots (`Δ > 0`); the roots still need
-    /// [`certify`](crate::num::certify::certify).
+    /// [`certify`].
     pub two: L::Mask,
     /// `q/a`.
     pub t0: L,
@@ -167,4 +169,45 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Fi
         r1,
         a1,
     }
+}
+
+/// The second stage: the textbook quadratic tracked for exactness
+/// ([`Tracked`]). Where no operation rounded, `a`, `b`, `c` and `Δ` are
+/// exact, so the class follows from signs: a tangent's root `−b/a` rounds
+/// once (certified with `2u`); two roots are `q/a` and `c/q` from `s =
+/// √Δ`, within `2u|q|` for `q` and so `4u` for each root (certified with
+/// `8u`). `None` where an operation rounded or a root sits next to an f32
+/// rounding boundary.
+///
+/// ```
+/// use rayoracle::sphere::{SphereHit, kernel::tracked};
+/// // Grazing the unit sphere at (0, 1, 0) from z = −5: Δ = 0 exactly.
+/// assert_eq!(tracked([0.0, 1.0, -5.0], [0.0, 0.0, 1.0], [0.0; 3], 1.0), Some(SphereHit::Tangent(5.0)));
+/// ```
+pub fn tracked(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Option<SphereHit> {
+    let mut x = Tracked::new();
+    let f = [0, 1, 2].map(|i| x.sub(o[i], c[i]));
+    let a = x.dot(d, d);
+    let b = x.dot(f, d);
+    let ff = x.dot(f, f);
+    let rr = x.mul(r, r);
+    let cq = x.sub(ff, rr);
+    let b2 = x.mul(b, b);
+    let ac = x.mul(a, cq);
+    let disc = x.sub(b2, ac);
+    if !x.exact() {
+        return None;
+    }
+    if a == 0.0 || disc < 0.0 {
+        return Some(SphereHit::None);
+    }
+    if disc == 0.0 {
+        let t = -b / a + 0.0;
+        return certify(t, 2.0 * U, 0.0).then_some(SphereHit::Tangent(t as f32));
+    }
+    let q = -(b + disc.sqrt().copysign(b));
+    let (t0, t1) = (q / a, cq / q + 0.0);
+    let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
+    let ok = certify(t0, 8.0 * U, 0.0) && certify(t1, 8.0 * U, 0.0);
+    ok.then_some(SphereHit::Two(t0 as f32, t1 as f32))
 }

@@ -49,7 +49,7 @@ pub fn intersect_staged(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage) {
     if !subnormals_work() {
-        return (escalate(ray, sphere), Stage::Exact);
+        return (exact_stage(ray, sphere), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.to_array().map(f64::from);
     let f = kernel::filter(
@@ -72,13 +72,28 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
         };
         return (SphereHit::Two(t0 as f32, t1 as f32), Stage::Filter);
     }
-    (escalate(ray, sphere), Stage::Exact)
+    escalate(ray, sphere)
+}
+
+/// The stages after the filter: f64 arithmetic that proves itself exact
+/// ([`kernel::tracked`]), then the exact oracle.
+#[cold]
+#[inline(never)]
+pub(crate) fn escalate(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
+    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    match kernel::tracked(
+        w(ray.origin),
+        w(ray.dir),
+        w(sphere.center),
+        f64::from(sphere.radius),
+    ) {
+        Some(h) => (h, Stage::Tracked),
+        None => (exact_stage(ray, sphere), Stage::Exact),
+    }
 }
 
 /// The last stage: the exact oracle; [`SphereHit::None`] for a non-finite
 /// input.
-#[cold]
-#[inline(never)]
-pub(crate) fn escalate(ray: &Ray, sphere: &Sphere) -> SphereHit {
+fn exact_stage(ray: &Ray, sphere: &Sphere) -> SphereHit {
     exact::intersect(ray, sphere).unwrap_or(SphereHit::None)
 }

@@ -126,7 +126,7 @@ impl SphereHit4 {
             self.t1.to_array(),
         );
         for i in (0..4).filter(|&i| !done.lanes()[i]) {
-            let (k, a, b) = match reference::escalate(&rays[i], &Sphere::new(c[i], r[i])) {
+            let (k, a, b) = match reference::escalate(&rays[i], &Sphere::new(c[i], r[i])).0 {
                 SphereHit::None => (0, f32::NAN, f32::NAN),
                 SphereHit::Tangent(t) => (1, t, t),
                 SphereHit::Two(a, b) => (2, a, b),
