@@ -5,14 +5,16 @@
 //! magnitude sums (the same arithmetic on one lane or four), then the same
 //! arithmetic checked to be exact, operation by operation (which settles
 //! the exact zeros of small-integer and dyadic data), then exact
-//! arithmetic on integers. The answer is the exact class and correctly rounded roots
-//! whichever stage gives it; the stage only says how much work it took.
+//! arithmetic on integers. The answer is the exact class and correctly
+//! rounded roots whichever stage gives it; the stage only says how much
+//! work it took.
 //!
 //! With flush-to-zero or denormals-are-zero on, the filter's bounds do not
 //! hold, so every call goes to the exact stage
 //! ([`crate::num::certify::subnormals_work`]): slower, still exact.
 //!
 //! ```
+//! # #[cfg(feature = "sphere")] {
 //! use rayoracle::{Ray, stage::Stage, sphere::{Sphere, reference::intersect_staged}};
 //! use glam::Vec3;
 //! let s = Sphere::new(Vec3::ZERO, 1.0);
@@ -26,6 +28,7 @@
 //! let big = Sphere::new(Vec3::ZERO, 3.0);
 //! let r = Ray::new(Vec3::new(0.0, 3.0, -1e30), Vec3::new(0.0, 0.0, 0.1));
 //! assert_eq!(intersect_staged(&r, &big).1, Stage::Exact);
+//! # }
 //! ```
 
 /// A stage of evaluation, cheapest first.
