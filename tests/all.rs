@@ -11,6 +11,7 @@ mod eval_cli;
 mod fixtures;
 mod fuzz_replay;
 mod known_wrong;
+mod non_finite;
 mod props_camera;
 mod props_plane;
 mod props_quadric;
