@@ -47,6 +47,37 @@ pub fn certify<L: Real>(t: L, r: L, a: L) -> L::Mask {
     L::same_f32(t - e, t + e)
 }
 
+/// The bound on a quotient, in the two parts [`certify`] takes. For `t̂ =
+/// x̂·(1/ŷ)`, with `|x̂ − x| ≤ ex`, `|ŷ − y| ≤ ey` and `iy` within a few `u`
+/// of `1/ŷ`: `|x̂/ŷ − x/y| ≤ (|x̂/ŷ| w + ex/|ŷ|) / (1 − w)` with `w =
+/// ey/|ŷ|`. Certified only where `w < 1/4`, with `1/(1 − w)` bounded by
+/// `1 + 2w`; `round` is the relative part for the roundings of `t̂` itself.
+/// Every part is widened by [`SLACK`]. Returns `(r, a)`, `r` infinite where
+/// `w ≥ 1/4` (or NaN).
+///
+/// ```
+/// use rayoracle::num::certify::{U, certify, quotient_bound};
+/// // 1/3 from x = 1 ± 0 and y = 3 ± 1e-300.
+/// let (r, a) = quotient_bound(1e-300, 0.0, 1.0 / 3.0, 2.0 * U);
+/// assert!(certify(1.0 / 3.0, r, a));
+/// // y known only to within a third of itself: nothing certified.
+/// let (r, _) = quotient_bound(1.0, 0.0, 1.0 / 3.0, 2.0 * U);
+/// assert_eq!(r, f64::INFINITY);
+/// ```
+#[inline(always)]
+pub fn quotient_bound<L: Real>(ey: L, ex: L, iy: L, round: f64) -> (L, L) {
+    let (one, slack) = (L::splat(1.0), L::splat(SLACK));
+    let iya = iy.abs();
+    let w = ey * iya * slack;
+    let g = (one + w + w) * slack;
+    let r = L::select(
+        L::splat(0.25).gt(w),
+        w * g + L::splat(round),
+        L::splat(f64::INFINITY),
+    );
+    (r, ex * iya * g)
+}
+
 /// Whether the floating-point environment keeps subnormals: false when
 /// flush-to-zero (FTZ) or denormals-are-zero (DAZ) is on, as some renderers
 /// and audio engines set it. The filters' bounds assume IEEE-754 gradual

@@ -29,7 +29,7 @@
 //! term by term, goes to the next stage.
 
 use super::PlaneHit;
-use crate::num::certify::{SLACK, U, certify};
+use crate::num::certify::{U, certify, quotient_bound};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
 
@@ -80,16 +80,7 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) 
     let inv = L::splat(1.0) / den;
     // + 0 makes an exactly zero root +0 whatever the sign of den.
     let t = num * inv + zero;
-    let ia = inv.abs();
-    let slack = L::splat(SLACK);
-    let x = e_den * ia * slack;
-    let g = (L::splat(1.0) + x + x) * slack;
-    let r = L::select(
-        L::splat(0.25).gt(x),
-        x * g + k(6.0),
-        L::splat(f64::INFINITY),
-    );
-    let a = e_num * ia * g;
+    let (r, a) = quotient_bound(e_den, e_num, inv, 6.0 * U * shrink);
     Filtered {
         hit: da.gt(e_den),
         parallel,

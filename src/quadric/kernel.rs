@@ -57,7 +57,7 @@
 //! subnormals for any finite input. A non-finite input certifies nothing.
 
 use super::QuadricHit;
-use crate::num::certify::{SLACK, U, certify};
+use crate::num::certify::{SLACK, U, certify, quotient_bound};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
 
@@ -218,14 +218,9 @@ pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filter
     let slack = L::splat(SLACK);
     let es = ed * is * slack + c(2.0) * s;
     let eq = L::select(lin, eb, (eb + es) * half + c(2.0) * q.abs());
-    // The bound of x/y, x and y with errors ex and ey, iy = 1/y: its
-    // relative and absolute parts.
     let bound = |ey: L, ex: L, iy: L| {
-        let iya = iy.abs();
-        let x = ey * iya * slack;
-        let g = (one + x + x) * slack;
-        let ok = in_range & L::splat(0.25).gt(x);
-        (L::select(ok, x * g + c(20.0), inf), ex * iya * g)
+        let (r, a) = quotient_bound(ey, ex, iy, 20.0 * U * shrink);
+        (L::select(in_range, r, inf), a)
     };
     let t0 = q * ia;
     let (r0, a0) = bound(ea, eq, ia);

@@ -72,7 +72,7 @@
 //! NaN; neither certifies anything.
 
 use super::SphereHit;
-use crate::num::certify::{SLACK, U, certify};
+use crate::num::certify::{SLACK, U, certify, quotient_bound};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
 
@@ -150,15 +150,7 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Fi
     let t0 = q * ia;
     let a0 = eq * ia * slack;
     let t1 = cq * iq;
-    let iqa = iq.abs();
-    let x = eq * iqa * slack;
-    let g = (one + x + x) * slack;
-    let r1 = L::select(
-        L::splat(0.25).gt(x),
-        x * g + k(20.0),
-        L::splat(f64::INFINITY),
-    );
-    let a1 = ec * iqa * g;
+    let (r1, a1) = quotient_bound(eq, ec, iq, 20.0 * U * shrink);
     Filtered {
         none,
         two,
