@@ -122,7 +122,8 @@ impl PlaneHit4 {
         let rays = ray.to_rays();
         let (a, n) = (scatter3(p.point), scatter3(p.normal));
         let (mut class, mut t) = (self.class.to_array(), self.t.to_array());
-        for i in (0..4).filter(|&i| !done.lanes()[i]) {
+        let done = done.lanes();
+        for i in (0..4).filter(|&i| !done[i]) {
             (class[i], t[i]) = match reference::escalate(&rays[i], &Plane::new(a[i], n[i])).0 {
                 PlaneHit::Hit(x) => (0, x),
                 PlaneHit::Parallel => (1, f32::NAN),

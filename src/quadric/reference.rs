@@ -77,10 +77,15 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
 }
 
 /// The stages after the filter: f64 arithmetic that proves itself exact
-/// ([`kernel::tracked`]), then the exact oracle.
+/// ([`kernel::tracked`]), then the exact oracle. The tracked stage, too,
+/// assumes subnormals work, so this checks for itself: x4 sends its
+/// undecided lanes here, and all of them when FTZ or DAZ is on.
 #[cold]
 #[inline(never)]
 pub(crate) fn escalate(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
+    if !subnormals_work() {
+        return (exact_stage(ray, quadric), Stage::Exact);
+    }
     let w = |v: glam::Vec3| v.to_array().map(f64::from);
     match kernel::tracked(&quadric.coeffs.map(f64::from), w(ray.origin), w(ray.dir)) {
         Some(h) => (h, Stage::Tracked),

@@ -133,7 +133,8 @@ impl QuadricHit4 {
             self.t0.to_array(),
             self.t1.to_array(),
         );
-        for i in (0..4).filter(|&i| !done.lanes()[i]) {
+        let done = done.lanes();
+        for i in (0..4).filter(|&i| !done[i]) {
             let quadric = Quadric::new(k.map(|c| c[i]));
             (class[i], t0[i], t1[i]) = match reference::escalate(&rays[i], &quadric).0 {
                 QuadricHit::None => (0, f32::NAN, f32::NAN),

@@ -125,7 +125,8 @@ impl SphereHit4 {
             self.t0.to_array(),
             self.t1.to_array(),
         );
-        for i in (0..4).filter(|&i| !done.lanes()[i]) {
+        let done = done.lanes();
+        for i in (0..4).filter(|&i| !done[i]) {
             let (k, a, b) = match reference::escalate(&rays[i], &Sphere::new(c[i], r[i])).0 {
                 SphereHit::None => (0, f32::NAN, f32::NAN),
                 SphereHit::Tangent(t) => (1, t, t),
