@@ -246,7 +246,7 @@ fn report_command(args: &ReportArgs) -> u8 {
                 .extension()
                 .map_or("svg".into(), |e| e.to_string_lossy().into_owned());
             let file = p.with_file_name(format!("{stem}-{}.{ext}", kernel.name()));
-            let points = report::points(&rows, &catalogue, kernel);
+            let points = report::points(&rows, kernel);
             outputs.push((file, report::svg(kernel.name(), &points)));
         }
     }

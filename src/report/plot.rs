@@ -60,7 +60,7 @@ fn draw(
     chart
         .configure_mesh()
         .x_desc("ns per ray (median, one core, log scale)")
-        .y_desc("worst max bits of error, well-conditioned families")
+        .y_desc("worst max bits of error, every family")
         .draw()?;
     let mut front: Vec<&Point> = points
         .iter()
