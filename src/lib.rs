@@ -7,6 +7,7 @@ pub mod case;
 pub mod check;
 pub mod eval;
 pub mod exact;
+pub mod fixtures;
 pub mod fuzz;
 pub mod hit;
 pub mod num;

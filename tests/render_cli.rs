@@ -1,7 +1,7 @@
 //! `rayoracle render` and the no-argument default job, run as a user would.
 #![cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 
-use crate::cli::{run, temp_dir};
+use crate::cli::{run, run_in, temp_dir};
 
 use std::path::Path;
 
@@ -124,14 +124,25 @@ fn bad_flags_are_refused_before_any_work() {
     );
 }
 
+/// From a directory outside the source tree: the cases, the catalogue and
+/// the scene are compiled in, and the outputs land in `./out`.
 #[test]
 fn the_default_job_evaluates_the_fixtures_and_renders_the_default_scene() {
-    let (code, stdout, stderr) = run(&[]);
+    let dir = temp_dir("default-job");
+    let (code, stdout, stderr) = run_in(&dir, &[]);
     assert_eq!(code, 0, "{stderr}");
     assert!(stdout.contains("out/eval.jsonl"), "{stdout}");
+    assert!(
+        stdout.contains("camera.jsonl") && stdout.contains("sphere.jsonl"),
+        "{stdout}"
+    );
+    let evaluated = std::fs::read_to_string(dir.join("out/eval.jsonl")).unwrap();
+    assert!(evaluated.lines().count() > 100);
     for channel in ["depth", "normal", "id"] {
-        let file = Path::new(ROOT).join(format!("out/seed.{channel}.png"));
-        assert!(stdout.contains(file.to_str().unwrap()), "{stdout}");
-        assert_eq!(png_size(&file), (160, 120));
+        let file = format!("out/seed.{channel}.png");
+        assert!(stdout.contains(&file), "{stdout}");
+        assert_eq!(png_size(&dir.join(file)), (160, 120));
     }
+    assert!(stdout.contains("sphere/far-tiny"), "the report: {stdout}");
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -9,10 +9,10 @@
 //!   `DIR/STEM.CHANNEL.png`. A scene that cannot be loaded is reported with
 //!   its file, line, column and field, and the others are still rendered;
 //!   exit 1 if any scene failed, 2 if an output cannot be written.
-//! * `rayoracle` with no subcommand: `eval` over every
-//!   `fixtures/cases/*.jsonl` of the crate, into `out/eval.jsonl`, then the
-//!   built-in default scene (`fixtures/scenes/seed.json`, compiled in)
-//!   rendered into `out/`.
+//! * `rayoracle` with no subcommand: `eval` over the compiled-in
+//!   `fixtures/cases/*.jsonl` into `./out/eval.jsonl`, then the built-in
+//!   default scene (`fixtures/scenes/seed.json`) rendered into `./out/`,
+//!   then `report --quick`. Nothing is read from the source tree.
 
 use clap::{Parser, Subcommand};
 use rayoracle::eval::{Summary, evaluate};
@@ -27,8 +27,9 @@ use std::process::ExitCode;
 #[derive(Parser, Debug)]
 #[command(version, about)]
 struct Cli {
-    /// Without a subcommand: evaluate every fixtures/cases/*.jsonl into
-    /// out/eval.jsonl and print the summary.
+    /// Without a subcommand: evaluate the built-in cases into
+    /// ./out/eval.jsonl, render the default scene into ./out/, and run
+    /// report --quick.
     #[command(subcommand)]
     command: Option<Command>,
 }
@@ -75,7 +76,7 @@ enum Command {
         /// Also write the Markdown table to FILE.
         #[arg(long, value_name = "FILE")]
         md: Option<PathBuf>,
-        /// The catalogue directory (default: the crate's fixtures/stiff).
+        /// A catalogue directory to use instead of the compiled-in one.
         #[arg(long, value_name = "DIR")]
         stiff: Option<PathBuf>,
     },
@@ -131,8 +132,8 @@ fn main() -> ExitCode {
             stiff,
         }),
         None => {
-            let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-            let eval = default_job(&root.join("fixtures/cases"), &root.join("out/eval.jsonl"));
+            let out = Path::new("out");
+            let eval = default_job(&builtin_cases(), &out.join("eval.jsonl"));
             println!();
             let scene = RenderJob {
                 name: "the built-in default scene (fixtures/scenes/seed.json)".into(),
@@ -141,7 +142,7 @@ fn main() -> ExitCode {
             };
             let render = render_command(
                 [scene].into_iter(),
-                &root.join("out"),
+                out,
                 RenderPath::X4,
                 Channels::ALL,
                 None,
@@ -259,7 +260,7 @@ fn report_command(args: &ReportArgs) -> u8 {
 }
 
 /// The default scene, compiled in so `rayoracle` runs from anywhere.
-const DEFAULT_SCENE: &str = include_str!("../../fixtures/scenes/seed.json");
+const DEFAULT_SCENE: &str = rayoracle::fixtures::DEFAULT_SCENE;
 
 /// One scene to render.
 struct RenderJob {
@@ -441,41 +442,13 @@ fn report_steps(catalogue: &rayoracle::report::Catalogue) -> u64 {
     (catalogue.families.len() * rayoracle::report::Variant::ALL.len()) as u64
 }
 
-/// The `*.jsonl` files in `dir`, sorted by file name; an empty list if `dir`
-/// does not exist.
-fn case_files(dir: &Path) -> io::Result<Vec<PathBuf>> {
-    let entries = match std::fs::read_dir(dir) {
-        Ok(e) => e,
-        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(Vec::new()),
-        Err(e) => return Err(e),
-    };
-    let mut files = Vec::new();
-    for entry in entries {
-        let path = entry?.path();
-        if path.extension().is_some_and(|x| x == "jsonl") && path.is_file() {
-            files.push(path);
-        }
-    }
-    files.sort_by(|a, b| a.file_name().cmp(&b.file_name()));
-    Ok(files)
-}
-
-/// `eval` over every `*.jsonl` in `cases_dir` into `out_path`; the summary
-/// and the output path on stdout. Each output line starts with a `"file"`
-/// key naming its input file, since line numbers restart per file.
-fn default_job(cases_dir: &Path, out_path: &Path) -> u8 {
-    let files = match case_files(cases_dir) {
-        Ok(f) => f,
-        Err(e) => {
-            eprintln!("rayoracle: cannot read {}: {e}", cases_dir.display());
-            return EXIT_IO;
-        }
-    };
+/// `eval` over the compiled-in `fixtures/cases/*.jsonl` (name, text) into
+/// `out_path`; the summary and the output path on stdout. Each output line
+/// starts with a `"file"` key naming its input file, since line numbers
+/// restart per file.
+fn default_job(files: &[(String, &str)], out_path: &Path) -> u8 {
     if files.is_empty() {
-        println!(
-            "rayoracle: no case files (*.jsonl) in {}; nothing to evaluate",
-            cases_dir.display()
-        );
+        println!("rayoracle: no case files; nothing to evaluate");
         return EXIT_OK;
     }
     if let Some(parent) = out_path.parent()
@@ -492,46 +465,26 @@ fn default_job(cases_dir: &Path, out_path: &Path) -> u8 {
         }
     };
     let mut summary = Summary::default();
-    let mut io_failed = false;
-    for path in &files {
-        let name = path
-            .file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        let result = File::open(path)
-            .map_err(IoFailure::Read)
-            .and_then(|f| eval_stream(&mut BufReader::new(f), &mut out, Some(&name), &mut summary));
-        match result {
-            Ok(()) => {}
-            Err(IoFailure::Read(e)) => {
-                eprintln!("rayoracle: cannot read {}: {e}", path.display());
-                io_failed = true;
-            }
-            Err(IoFailure::Write(e)) => {
-                eprintln!("rayoracle: cannot write {}: {e}", out_path.display());
-                return EXIT_IO;
-            }
+    for (name, text) in files {
+        let result = eval_stream(&mut text.as_bytes(), &mut out, Some(name), &mut summary);
+        if result.is_err() {
+            eprintln!("rayoracle: cannot write {}", out_path.display());
+            return EXIT_IO;
         }
     }
     if let Err(e) = out.flush() {
         eprintln!("rayoracle: cannot write {}: {e}", out_path.display());
         return EXIT_IO;
     }
-    println!(
-        "evaluated {} file(s) from {}",
-        files.len(),
-        cases_dir.display()
-    );
+    let names: Vec<&str> = files.iter().map(|f| f.0.as_str()).collect();
+    println!("evaluated the built-in cases ({})", names.join(", "));
     print!("{}", summary.render());
     println!("results: {}", out_path.display());
     // The fixtures hold error cases on purpose (`"expect": {"class":
     // "error"}`, e.g. a zero camera dir); the run is clean when exactly
     // those lines are the invalid ones.
-    let expected_errors = expected_error_lines(&files);
-    if io_failed {
-        EXIT_IO
-    } else if summary.malformed == 0 && summary.internal == 0 && summary.invalid == expected_errors
-    {
+    let expected_errors: usize = files.iter().map(|f| expected_error_lines(f.1)).sum();
+    if summary.malformed == 0 && summary.internal == 0 && summary.invalid == expected_errors {
         println!("({expected_errors} invalid lines are the fixtures' expected error cases)");
         EXIT_OK
     } else {
@@ -539,18 +492,22 @@ fn default_job(cases_dir: &Path, out_path: &Path) -> u8 {
     }
 }
 
-/// How many lines of `files` say they expect an error.
-fn expected_error_lines(files: &[PathBuf]) -> usize {
-    files
-        .iter()
-        .filter_map(|f| std::fs::read_to_string(f).ok())
-        .map(|text| {
-            text.lines()
-                .filter_map(|l| serde_json::from_str::<serde_json::Value>(l).ok())
-                .filter(|v| v["expect"]["class"] == "error")
-                .count()
-        })
-        .sum()
+/// How many lines of `text` say they expect an error.
+fn expected_error_lines(text: &str) -> usize {
+    text.lines()
+        .filter_map(|l| serde_json::from_str::<serde_json::Value>(l).ok())
+        .filter(|v| v["expect"]["class"] == "error")
+        .count()
+}
+
+/// The compiled-in case files of every kind this build has, as
+/// `(KIND.jsonl, text)`.
+fn builtin_cases() -> Vec<(String, &'static str)> {
+    rayoracle::fixtures::KINDS
+        .into_iter()
+        .filter(|k| rayoracle::case::compiled_in(k))
+        .filter_map(|k| Some((format!("{k}.jsonl"), rayoracle::fixtures::cases(k)?)))
+        .collect()
 }
 
 #[cfg(test)]
@@ -572,14 +529,6 @@ mod tests {
         assert_eq!(report_steps(&c), 27 * 5);
     }
 
-    /// A missing cases directory is an empty run; a path that is not a
-    /// directory is an error.
-    #[test]
-    fn case_files_refuses_a_file_for_a_directory() {
-        assert!(case_files(Path::new("no/such/dir")).unwrap().is_empty());
-        assert!(case_files(Path::new("Cargo.toml")).is_err());
-    }
-
     fn temp_dir(name: &str) -> PathBuf {
         let dir = std::env::temp_dir().join(format!("rayoracle-bin-{}-{name}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
@@ -593,15 +542,15 @@ mod tests {
 
     #[cfg(feature = "sphere")]
     #[test]
-    fn default_job_merges_files_in_name_order_with_file_keys() {
+    fn default_job_merges_files_in_order_with_file_keys() {
         let dir = temp_dir("merge");
-        let cases = dir.join("cases");
-        std::fs::create_dir_all(&cases).unwrap();
-        std::fs::write(cases.join("b.jsonl"), format!("{SPHERE}\n")).unwrap();
-        std::fs::write(cases.join("a.jsonl"), format!("\n{SPHERE}\n")).unwrap();
-        std::fs::write(cases.join("c.txt"), "not a case file\n").unwrap();
         let out = dir.join("out/eval.jsonl");
-        assert_eq!(default_job(&cases, &out), EXIT_OK);
+        let a = format!("\n{SPHERE}\n");
+        let files = [
+            ("a.jsonl".to_string(), a.as_str()),
+            ("b.jsonl".into(), SPHERE),
+        ];
+        assert_eq!(default_job(&files, &out), EXIT_OK);
         let text = std::fs::read_to_string(&out).unwrap();
         let lines: Vec<&str> = text.lines().collect();
         assert_eq!(lines.len(), 2);
@@ -619,18 +568,33 @@ mod tests {
     }
 
     #[test]
-    fn default_job_reports_bad_lines_and_empty_directories() {
+    fn default_job_reports_bad_lines_and_empty_inputs() {
         let dir = temp_dir("bad");
         let out = dir.join("out/eval.jsonl");
-        assert_eq!(default_job(&dir.join("missing"), &out), EXIT_OK);
+        assert_eq!(default_job(&[], &out), EXIT_OK);
         assert!(!out.exists());
-        std::fs::write(dir.join("x.jsonl"), "{}\n").unwrap();
-        assert_eq!(default_job(&dir, &out), EXIT_BAD_LINE);
+        assert_eq!(
+            default_job(&[("x.jsonl".into(), "{}\n")], &out),
+            EXIT_BAD_LINE
+        );
         assert_eq!(
             std::fs::read_to_string(&out).unwrap(),
             "{\"file\":\"x.jsonl\",\"line\":1,\"error\":\"kind: missing\"}\n"
         );
         let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// Every kind this build has, from the data compiled in: the run needs
+    /// no source tree.
+    #[test]
+    fn the_builtin_cases_are_compiled_in() {
+        let files = builtin_cases();
+        let want = rayoracle::fixtures::KINDS
+            .into_iter()
+            .filter(|k| rayoracle::case::compiled_in(k))
+            .count();
+        assert_eq!(files.len(), want);
+        assert!(files.iter().all(|f| f.1.lines().count() > 10), "{files:?}");
     }
 
     #[test]

@@ -107,37 +107,72 @@ struct FamilyEntry {
 }
 
 impl Catalogue {
-    /// The crate's own catalogue, `fixtures/stiff/` of this source tree.
+    /// The crate's own catalogue, `fixtures/stiff/`, compiled in
+    /// ([`crate::fixtures`]).
     pub fn builtin() -> Result<Catalogue, String> {
-        Catalogue::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/stiff"))
+        let files = ["camera", "plane", "quadric", "sphere"].map(|k| {
+            let text = crate::fixtures::stiff(k).expect("every kind has a stiff file");
+            (format!("fixtures/stiff/{k}.jsonl"), text.to_string())
+        });
+        Catalogue::parse(
+            "fixtures/stiff/families.json",
+            crate::fixtures::STIFF_FAMILIES,
+            &files,
+        )
     }
 
-    /// Loads `DIR/families.json` and every `DIR/*.jsonl`. Every case must
-    /// parse and name a listed family of its own kind; every family must
-    /// have cases. Errors name the file and line.
+    /// Loads `DIR/families.json` and every `DIR/*.jsonl` ([`Catalogue::parse`]).
     pub fn load(dir: &Path) -> Result<Catalogue, String> {
         let index = dir.join("families.json");
         let text = std::fs::read_to_string(&index)
             .map_err(|e| format!("{}: cannot read: {e}", index.display()))?;
+        let mut paths: Vec<_> = std::fs::read_dir(dir)
+            .map_err(|e| format!("{}: {e}", dir.display()))?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.extension().is_some_and(|x| x == "jsonl"))
+            .collect();
+        paths.sort();
+        let mut files = Vec::new();
+        for file in paths {
+            let text = std::fs::read_to_string(&file)
+                .map_err(|e| format!("{}: cannot read: {e}", file.display()))?;
+            files.push((file.display().to_string(), text));
+        }
+        Catalogue::parse(&index.display().to_string(), &text, &files)
+    }
+
+    /// A catalogue from the text of its index (named `index` in errors) and
+    /// of its case files (name, text). Every case must parse and name a
+    /// listed family of its own kind; every family must have cases. Errors
+    /// name the file and line.
+    ///
+    /// ```
+    /// use rayoracle::report::Catalogue;
+    /// let index = r#"[{"family":"sphere/one","kernel":"sphere","conditioning":"well","why":"demo"}]"#;
+    /// let case = r#"{"kind":"sphere","family":"sphere/one","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#;
+    /// let c = Catalogue::parse("families.json", index, &[("s.jsonl".into(), case.into())]).unwrap();
+    /// assert_eq!(c.families[0].cases.len(), 1);
+    /// let e = Catalogue::parse("families.json", index, &[]).unwrap_err();
+    /// assert_eq!(e, "families.json: family sphere/one has no cases");
+    /// ```
+    pub fn parse(
+        index: &str,
+        index_text: &str,
+        files: &[(String, String)],
+    ) -> Result<Catalogue, String> {
         let entries: Vec<FamilyEntry> =
-            serde_json::from_str(&text).map_err(|e| format!("{}: {e}", index.display()))?;
+            serde_json::from_str(index_text).map_err(|e| format!("{index}: {e}"))?;
         let mut families = Vec::new();
         for e in entries {
             let kernel = Kernel::parse(&e.kernel).ok_or_else(|| {
-                format!(
-                    "{}: family {}: unknown kernel {}",
-                    index.display(),
-                    e.family,
-                    e.kernel
-                )
+                format!("{index}: family {}: unknown kernel {}", e.family, e.kernel)
             })?;
             let well_conditioned = match e.conditioning.as_str() {
                 "well" => true,
                 "ill" => false,
                 other => {
                     return Err(format!(
-                        "{}: family {}: conditioning \"{other}\" is neither \"well\" nor \"ill\"",
-                        index.display(),
+                        "{index}: family {}: conditioning \"{other}\" is neither \"well\" nor \"ill\"",
                         e.family
                     ));
                 }
@@ -150,20 +185,12 @@ impl Catalogue {
                 cases: Vec::new(),
             });
         }
-        let mut files: Vec<_> = std::fs::read_dir(dir)
-            .map_err(|e| format!("{}: {e}", dir.display()))?
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.extension().is_some_and(|x| x == "jsonl"))
-            .collect();
-        files.sort();
-        for file in files {
-            let text = std::fs::read_to_string(&file)
-                .map_err(|e| format!("{}: cannot read: {e}", file.display()))?;
+        for (file, text) in files {
             for (i, line) in text.lines().enumerate() {
                 if line.trim().is_empty() {
                     continue;
                 }
-                let at = || format!("{}:{}", file.display(), i + 1);
+                let at = || format!("{file}:{}", i + 1);
                 let parsed = parse_line(line).map_err(|e| format!("{}: {e}", at()))?;
                 let name = parsed
                     .family
@@ -171,7 +198,7 @@ impl Catalogue {
                 let family = families
                     .iter_mut()
                     .find(|f| f.name == name)
-                    .ok_or_else(|| format!("{}: family {name} is not in families.json", at()))?;
+                    .ok_or_else(|| format!("{}: family {name} is not in {index}", at()))?;
                 if parsed.case.kind() != family.kernel.name() {
                     return Err(format!(
                         "{}: a {} case in the {} family {name}",
@@ -184,7 +211,7 @@ impl Catalogue {
             }
         }
         if let Some(f) = families.iter().find(|f| f.cases.is_empty()) {
-            return Err(format!("{}: family {} has no cases", dir.display(), f.name));
+            return Err(format!("{index}: family {} has no cases", f.name));
         }
         Ok(Catalogue { families })
     }

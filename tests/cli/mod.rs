@@ -1,7 +1,7 @@
 //! Running the `rayoracle` binary from the CLI tests (`tests/*_cli.rs`).
 #![allow(dead_code)]
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// A fresh, empty directory under the system temp dir, named for the test
@@ -15,8 +15,14 @@ pub fn temp_dir(name: &str) -> PathBuf {
 
 /// Runs `rayoracle ARGS…`: the exit code, stdout and stderr.
 pub fn run(args: &[&str]) -> (i32, String, String) {
+    run_in(&std::env::current_dir().unwrap(), args)
+}
+
+/// Runs `rayoracle ARGS…` with `dir` as the working directory.
+pub fn run_in(dir: &Path, args: &[&str]) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_rayoracle"))
         .args(args)
+        .current_dir(dir)
         .output()
         .unwrap();
     (

@@ -1,0 +1,68 @@
+//! The data rayoracle ships, compiled into the library: the hand-written
+//! cases of every kind (`fixtures/cases/`), the stiff catalogue
+//! (`fixtures/stiff/`) and the default scene. Nothing reads the source tree
+//! at run time, so an installed binary and a crate that depends on
+//! rayoracle see the same data as a checkout.
+//!
+//! ```
+//! use rayoracle::fixtures;
+//! assert!(fixtures::cases("sphere").unwrap().lines().count() > 10);
+//! assert!(fixtures::stiff("quadric").unwrap().contains("\"family\""));
+//! assert!(fixtures::cases("torus").is_none());
+//! ```
+
+/// The kinds that have fixture files, in the order rayoracle lists them.
+pub const KINDS: [&str; 4] = ["plane", "sphere", "quadric", "camera"];
+
+/// `fixtures/stiff/families.json`: the stiff families, their kernels,
+/// conditioning and reasons.
+pub const STIFF_FAMILIES: &str = include_str!("../fixtures/stiff/families.json");
+
+/// `fixtures/scenes/seed.json`, the scene `rayoracle` renders by default.
+pub const DEFAULT_SCENE: &str = include_str!("../fixtures/scenes/seed.json");
+
+/// `fixtures/cases/KIND.jsonl`: hand-written cases of a kind, one `eval`
+/// line each, with their families and expectations.
+pub fn cases(kind: &str) -> Option<&'static str> {
+    Some(match kind {
+        "plane" => include_str!("../fixtures/cases/plane.jsonl"),
+        "sphere" => include_str!("../fixtures/cases/sphere.jsonl"),
+        "quadric" => include_str!("../fixtures/cases/quadric.jsonl"),
+        "camera" => include_str!("../fixtures/cases/camera.jsonl"),
+        _ => return None,
+    })
+}
+
+/// `fixtures/stiff/KIND.jsonl`: the stiff catalogue's cases of a kind.
+pub fn stiff(kind: &str) -> Option<&'static str> {
+    Some(match kind {
+        "plane" => include_str!("../fixtures/stiff/plane.jsonl"),
+        "sphere" => include_str!("../fixtures/stiff/sphere.jsonl"),
+        "quadric" => include_str!("../fixtures/stiff/quadric.jsonl"),
+        "camera" => include_str!("../fixtures/stiff/camera.jsonl"),
+        _ => return None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    /// Every kind has both files, and every line of them parses.
+    #[test]
+    fn every_compiled_in_line_parses() {
+        for kind in super::KINDS
+            .into_iter()
+            .filter(|k| crate::case::compiled_in(k))
+        {
+            for (what, text) in [("cases", super::cases(kind)), ("stiff", super::stiff(kind))] {
+                let text = text.unwrap_or_else(|| panic!("{what} of {kind}"));
+                for (i, line) in text.lines().enumerate() {
+                    if !line.trim().is_empty() {
+                        let c = crate::case::parse_line(line)
+                            .unwrap_or_else(|e| panic!("{what}/{kind}.jsonl:{}: {e}", i + 1));
+                        assert_eq!(c.case.kind(), kind, "{what}/{kind}.jsonl:{}", i + 1);
+                    }
+                }
+            }
+        }
+    }
+}
