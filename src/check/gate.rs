@@ -539,8 +539,14 @@ impl Gate {
     /// assert!(families.iter().all(|f| f.1.len() <= 4));
     /// ```
     pub fn cases(&self, kind: &str) -> Vec<(String, Vec<Case>)> {
+        self.load(kind).0
+    }
+
+    /// [`Gate::cases`], and the fixture lines that could not be loaded.
+    fn load(&self, kind: &str) -> (Vec<(String, Vec<Case>)>, Vec<String>) {
         let mut by_family: Vec<(String, Vec<Case>)> = Vec::new();
-        for (family, case) in self.sources(kind, self.budget) {
+        let (sources, errors) = self.sources(kind, self.budget);
+        for (family, case) in sources {
             let case = if self.declared.unit_dirs_only {
                 unit_dir(case)
             } else {
@@ -552,12 +558,24 @@ impl Gate {
                 None => by_family.push((family, vec![case])),
             }
         }
-        by_family
+        (by_family, errors)
     }
 
     fn run(&self, kind: &str, judge: impl Fn(&Case) -> Option<Verdict>) -> Report {
         let mut report = Report::default();
-        for (family, cases) in self.cases(kind) {
+        let judge = |c: &Case| guarded(|| judge(c));
+        let (families, errors) = self.load(kind);
+        for e in errors {
+            report.failures.push(Failure {
+                family: "fixtures".into(),
+                eval_line: String::new(),
+                expected: "a loadable case".into(),
+                got: "an error".into(),
+                why: e,
+            });
+            report.families.push(("fixtures".into(), 0, 1));
+        }
+        for (family, cases) in families {
             let mut failed = 0;
             for case in &cases {
                 let Some(Verdict::Fail { why, .. }) = judge(case) else {
@@ -681,31 +699,55 @@ impl Gate {
     }
 
     /// The fixture families, the stiff families and the random families of
-    /// a kind.
-    fn sources(&self, kind: &str, random: usize) -> Vec<Sourced> {
-        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures");
+    /// a kind, all compiled in ([`crate::fixtures`]); and the lines that
+    /// could not be loaded, each `FILE:LINE: problem`, which fail the run
+    /// rather than shrink it.
+    fn sources(&self, kind: &str, random: usize) -> (Vec<Sourced>, Vec<String>) {
         let mut out = Vec::new();
-        for file in [
-            root.join(format!("cases/{kind}.jsonl")),
-            root.join(format!("stiff/{kind}.jsonl")),
-        ] {
-            let Ok(text) = std::fs::read_to_string(&file) else {
+        let mut errors = Vec::new();
+        let files = [
+            ("cases", crate::fixtures::cases(kind)),
+            ("stiff", crate::fixtures::stiff(kind)),
+        ];
+        for (dir, text) in files {
+            let Some(text) = text else {
+                errors.push(format!("fixtures/{dir}: no cases of the kind \"{kind}\""));
                 continue;
             };
-            for line in text.lines() {
-                if let Ok(c) = parse_line(line)
-                    && c.expect.as_ref().is_none_or(|e| e["class"] != "error")
-                {
-                    out.push((
+            for (i, line) in text.lines().enumerate() {
+                if line.trim().is_empty() {
+                    continue;
+                }
+                match parse_line(line) {
+                    Ok(c) if c.expect.as_ref().is_some_and(|e| e["class"] == "error") => {}
+                    Ok(c) => out.push((
                         c.family.unwrap_or_else(|| format!("{kind}/unnamed")),
                         c.case,
-                    ));
+                    )),
+                    Err(e) => errors.push(format!("fixtures/{dir}/{kind}.jsonl:{}: {e}", i + 1)),
                 }
             }
         }
         out.extend(random_cases(kind, self.seed, random));
-        out
+        (out, errors)
     }
+}
+
+/// Runs `judge`, turning a panic inside it (the user's kernel) into a
+/// failure that names the panic's message.
+fn guarded(judge: impl FnOnce() -> Option<Verdict>) -> Option<Verdict> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(judge)).unwrap_or_else(|p| {
+        let msg = p
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| p.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "a non-string payload".into());
+        Some(Verdict::Fail {
+            expected: "an answer".into(),
+            got: "a panic".into(),
+            why: format!("the kernel panicked: {msg}"),
+        })
+    })
 }
 
 /// A single judged case as a result.

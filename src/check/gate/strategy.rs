@@ -38,7 +38,10 @@ use proptest::prelude::*;
 /// ```
 pub fn families(kind: &str) -> Vec<String> {
     let mut names: Vec<String> = Vec::new();
-    for (f, _) in Gate::new(super::Declared::f32(super::Semantics::WholeLine)).sources(kind, 1) {
+    for (f, _) in Gate::new(super::Declared::f32(super::Semantics::WholeLine))
+        .sources(kind, 1)
+        .0
+    {
         if !names.contains(&f) {
             names.push(f);
         }
@@ -50,6 +53,7 @@ fn cases_of(family: &str) -> Vec<Case> {
     let kind = family.split('/').next().unwrap_or("");
     Gate::new(super::Declared::f32(super::Semantics::WholeLine))
         .sources(kind, 0)
+        .0
         .into_iter()
         .filter(|(f, _)| f == family)
         .map(|(_, c)| c)

@@ -552,3 +552,52 @@ fn tiny_alpha() -> Quadric {
         -1.0,
     ])
 }
+
+/// A kernel that panics on some cases fails those cases, each reported
+/// with its family and eval line; the other families still run.
+#[test]
+fn a_panicking_kernel_is_a_failure_not_an_abort() {
+    let k = |r: &Ray, s: &Sphere| {
+        assert!(r.origin.x >= s.center.x, "behind x = {}", r.origin.x);
+        Answer::roots(sphere::reference::intersect(r, s))
+    };
+    let report = whole_line().budget(16).sphere(&k);
+    let all = whole_line()
+        .budget(16)
+        .sphere(&|r: &Ray, s: &Sphere| Answer::roots(sphere::reference::intersect(r, s)));
+    assert_eq!(report.cases, all.cases);
+    assert!(!report.failures.is_empty());
+    for f in &report.failures {
+        assert!(f.why.starts_with("the kernel panicked: behind x = "), "{f}");
+        assert!(f.eval_line.starts_with(r#"{"kind":"sphere""#), "{f}");
+        assert_eq!(f.got, "a panic");
+    }
+    let failing = report.failing_families().len();
+    assert!(failing > 3 && failing < report.families.len(), "{failing}");
+}
+
+/// Every family of every kind comes from the data compiled into the
+/// library, none skipped: the gate's reach does not depend on where it
+/// runs.
+#[test]
+fn every_family_is_compiled_in() {
+    let kinds = [("plane", 8), ("sphere", 12), ("quadric", 10), ("camera", 6)];
+    for (kind, at_least) in kinds.into_iter().filter(|k| crate::case::compiled_in(k.0)) {
+        let (families, errors) = whole_line().budget(2).load(kind);
+        assert!(errors.is_empty(), "{kind}: {errors:?}");
+        assert!(
+            families.len() >= at_least,
+            "{kind}: {} families",
+            families.len()
+        );
+        assert!(families.iter().all(|f| !f.1.is_empty()));
+    }
+    let (_, errors) = whole_line().sources("torus", 1);
+    assert_eq!(
+        errors,
+        [
+            "fixtures/cases: no cases of the kind \"torus\"",
+            "fixtures/stiff: no cases of the kind \"torus\""
+        ]
+    );
+}
