@@ -259,13 +259,75 @@ fn a_missing_file_exits_2_naming_the_file_and_the_os_error() {
     let run = rayoracle(&["eval", path.to_str().unwrap()], "");
     assert_eq!(run.code, 2);
     assert_eq!(run.stdout, "");
-    assert_eq!(
-        run.stderr,
-        format!(
+    assert!(
+        run.stderr.starts_with(&format!(
             "rayoracle: cannot read {}: No such file or directory (os error 2)\n",
             path.display()
-        )
+        )),
+        "{}",
+        run.stderr
     );
+}
+
+/// Several files are read in order, each output line keyed by its file; a
+/// file that cannot be read is named and the others are still evaluated.
+#[cfg(feature = "sphere")]
+#[test]
+fn several_files_are_evaluated_in_order_and_a_missing_one_does_not_stop_them() {
+    let a = temp_file("several-a.jsonl", &[SPHERE]);
+    let b = temp_file("several-b.jsonl", &["", SPHERE]);
+    let missing = std::env::temp_dir().join("rayoracle-eval-cli-no-such.jsonl");
+    let args = [
+        a.to_str().unwrap(),
+        missing.to_str().unwrap(),
+        b.to_str().unwrap(),
+    ];
+    let run = rayoracle(&[&["eval"][..], &args].concat(), "");
+    assert_eq!(run.code, 2, "{}", run.stderr);
+    let lines = run.lines();
+    assert_eq!(lines.len(), 2);
+    assert_eq!(json(lines[0])["file"], args[0]);
+    assert_eq!(json(lines[0])["line"], 1);
+    assert_eq!(json(lines[1])["file"], args[2]);
+    assert_eq!(json(lines[1])["line"], 2);
+    assert!(
+        run.stderr.contains(&format!("cannot read {}", args[1])),
+        "{}",
+        run.stderr
+    );
+}
+
+/// Each line that is not evaluated is named on stderr with its file and
+/// line, as well as in the JSON on stdout.
+#[cfg(feature = "sphere")]
+#[test]
+fn a_malformed_line_is_named_on_stderr_with_its_file_and_line() {
+    let run = rayoracle(&["eval"], &format!("{SPHERE}\n{{\"kind\":\"sphere\"}}\n"));
+    assert_eq!(run.code, 1);
+    assert!(
+        run.stderr
+            .starts_with("rayoracle: stdin:2: origin: missing\n"),
+        "{}",
+        run.stderr
+    );
+    let f = temp_file("named.jsonl", &[SPHERE, "", "{\"kind\":1}"]);
+    let run = rayoracle(&["eval", f.to_str().unwrap()], "");
+    assert!(
+        run.stderr
+            .starts_with(&format!("rayoracle: {}:3: kind:", f.display())),
+        "{}",
+        run.stderr
+    );
+    assert!(!run.stdout.contains("\"file\""), "one file: no file key");
+}
+
+/// A UTF-8 byte-order mark (as some Windows editors write) is skipped.
+#[cfg(feature = "sphere")]
+#[test]
+fn a_byte_order_mark_is_skipped() {
+    let run = rayoracle(&["eval"], &format!("\u{feff}{SPHERE}\n"));
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert_eq!(json(run.lines()[0])["results"]["exact"]["class"], "two");
 }
 
 #[cfg(not(all(feature = "plane", feature = "sphere", feature = "quadric")))]

@@ -19,7 +19,7 @@ use rayoracle::eval::{Summary, evaluate};
 use rayoracle::render::{Channels, Path as RenderPath, Plan, render_with_progress, write_pngs};
 use rayoracle::scene::{Scene, SceneError};
 use std::fs::File;
-use std::io::{self, BufRead, BufReader, BufWriter, Write};
+use std::io::{self, BufRead, BufReader, BufWriter, IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -38,8 +38,9 @@ struct Cli {
 enum Command {
     /// Evaluate cases, one JSON object per line, against the exact oracle.
     Eval {
-        /// The input file; `-` or nothing reads stdin.
-        file: Option<PathBuf>,
+        /// Input files, read in order; `-` or nothing reads stdin. With
+        /// more than one, each output line starts with a "file" key.
+        files: Vec<PathBuf>,
     },
     /// Render scenes to PNG: depth (16-bit grey), normal and id channels.
     Render {
@@ -100,7 +101,7 @@ const EXIT_IO: u8 = 2;
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let code = match cli.command {
-        Some(Command::Eval { file }) => eval_command(file.as_deref()),
+        Some(Command::Eval { files }) => eval_command(&files),
         Some(Command::Render {
             scenes,
             out,
@@ -351,15 +352,28 @@ enum IoFailure {
     Write(io::Error),
 }
 
-/// Evaluates every line of `input`, writing one JSON line per non-blank line
-/// to `out` (with a `"file"` key when `file` is given) and tallying into
-/// `summary`. Lines that are not UTF-8 are reported as malformed.
+/// Where `eval_stream`'s lines come from.
+struct Source<'a> {
+    /// How messages name it (a path, or `stdin`).
+    name: &'a str,
+    /// Each output line starts with a `"file"` key of `name`.
+    keyed: bool,
+    /// Each line that is not evaluated is also named on stderr.
+    tell: bool,
+}
+
+/// Evaluates every line of `input`, writing one JSON line per non-blank
+/// line to `out` and tallying into `summary`. Lines that are not UTF-8 are
+/// reported as malformed; with `source.tell`, every line that is not
+/// evaluated is also named on stderr as `NAME:LINE: problem`. A UTF-8
+/// byte-order mark before the first line is skipped.
 fn eval_stream(
     input: &mut dyn BufRead,
     out: &mut dyn Write,
-    file: Option<&str>,
+    source: &Source,
     summary: &mut Summary,
 ) -> Result<(), IoFailure> {
+    let file = source.keyed.then_some(source.name);
     let mut buf = Vec::new();
     let mut line_no = 0;
     loop {
@@ -370,6 +384,10 @@ fn eval_stream(
         line_no += 1;
         let line = buf.strip_suffix(b"\n").unwrap_or(&buf);
         let line = line.strip_suffix(b"\r").unwrap_or(line);
+        let line = match line_no {
+            1 => line.strip_prefix(b"\xef\xbb\xbf").unwrap_or(line),
+            _ => line,
+        };
         let report = match std::str::from_utf8(line) {
             Ok(text) => match evaluate(line_no, text) {
                 Some(r) => r,
@@ -383,8 +401,22 @@ fn eval_stream(
                 },
             },
         };
+        if let Some(problem) = not_evaluated(&report).filter(|_| source.tell) {
+            eprintln!("rayoracle: {}:{line_no}: {problem}", source.name);
+        }
         summary.add(&report);
         writeln!(out, "{}", report.to_json_in(file)).map_err(IoFailure::Write)?;
+    }
+}
+
+/// Why a line was not evaluated, or `None` if it was.
+fn not_evaluated(report: &rayoracle::eval::LineReport) -> Option<String> {
+    use rayoracle::eval::LineReport;
+    match report {
+        LineReport::Malformed { error, .. } => Some(error.to_string()),
+        LineReport::Invalid { kind, error, .. } => Some(format!("invalid {kind}: {error}")),
+        LineReport::Internal { error, .. } => Some(format!("internal error: {error}")),
+        LineReport::Evaluated(_) => None,
     }
 }
 
@@ -396,39 +428,70 @@ fn exit_code(summary: &Summary) -> u8 {
     }
 }
 
-fn eval_command(file: Option<&Path>) -> u8 {
-    let file = file.filter(|f| f.as_os_str() != "-");
-    let (name, mut input): (String, Box<dyn BufRead>) = match file {
-        None => ("stdin".into(), Box::new(io::stdin().lock())),
-        Some(path) => match File::open(path) {
-            Ok(f) => (path.display().to_string(), Box::new(BufReader::new(f))),
-            Err(e) => {
-                eprintln!("rayoracle: cannot read {}: {e}", path.display());
-                return EXIT_IO;
-            }
-        },
+/// `rayoracle eval FILE...`: every file in order (stdin for none or `-`),
+/// one summary. A file that cannot be read is reported and the others are
+/// still evaluated (exit 2).
+fn eval_command(files: &[PathBuf]) -> u8 {
+    let stdin_only = [PathBuf::from("-")];
+    let files = if files.is_empty() {
+        &stdin_only[..]
+    } else {
+        files
     };
+    let keyed = files.len() > 1;
     let mut summary = Summary::default();
     let stdout = io::stdout();
     let mut out = BufWriter::new(stdout.lock());
-    let result = eval_stream(&mut input, &mut out, None, &mut summary);
-    let result = result.and_then(|()| out.flush().map_err(IoFailure::Write));
-    match result {
-        Ok(()) => {
-            eprint!("{}", summary.render());
-            exit_code(&summary)
-        }
-        Err(IoFailure::Read(e)) => {
-            eprintln!("rayoracle: cannot read {name}: {e}");
-            EXIT_IO
-        }
-        // A closed pipe (`| head`) is the reader's choice, not an error.
-        Err(IoFailure::Write(e)) if e.kind() == io::ErrorKind::BrokenPipe => exit_code(&summary),
-        Err(IoFailure::Write(e)) => {
-            eprintln!("rayoracle: cannot write stdout: {e}");
-            EXIT_IO
+    let mut code = EXIT_OK;
+    for path in files {
+        let (name, mut input): (String, Box<dyn BufRead>) = if path.as_os_str() == "-" {
+            if io::stdin().is_terminal() {
+                eprintln!(
+                    "rayoracle: reading cases from the terminal, one JSON object a line; end with Ctrl-D (see rayoracle eval --help)"
+                );
+            }
+            ("stdin".into(), Box::new(io::stdin().lock()))
+        } else {
+            match File::open(path) {
+                Ok(f) => (path.display().to_string(), Box::new(BufReader::new(f))),
+                Err(e) => {
+                    eprintln!("rayoracle: cannot read {}: {e}", path.display());
+                    code = EXIT_IO;
+                    continue;
+                }
+            }
+        };
+        let source = Source {
+            name: &name,
+            keyed,
+            tell: true,
+        };
+        let result = eval_stream(&mut input, &mut out, &source, &mut summary);
+        match result {
+            Ok(()) => {}
+            Err(IoFailure::Read(e)) => {
+                eprintln!("rayoracle: cannot read {name}: {e}");
+                code = EXIT_IO;
+            }
+            // A closed pipe (`| head`) is the reader's choice, not an error.
+            Err(IoFailure::Write(e)) if e.kind() == io::ErrorKind::BrokenPipe => {
+                return exit_code(&summary).max(code);
+            }
+            Err(IoFailure::Write(e)) => {
+                eprintln!("rayoracle: cannot write stdout: {e}");
+                return EXIT_IO;
+            }
         }
     }
+    match out.flush() {
+        Err(e) if e.kind() != io::ErrorKind::BrokenPipe => {
+            eprintln!("rayoracle: cannot write stdout: {e}");
+            return EXIT_IO;
+        }
+        _ => {}
+    }
+    eprint!("{}", summary.render());
+    exit_code(&summary).max(code)
 }
 
 /// Whether a render is long enough (a million pixels) for a progress bar.
@@ -466,7 +529,13 @@ fn default_job(files: &[(String, &str)], out_path: &Path) -> u8 {
     };
     let mut summary = Summary::default();
     for (name, text) in files {
-        let result = eval_stream(&mut text.as_bytes(), &mut out, Some(name), &mut summary);
+        // The fixtures' invalid lines are on purpose: the summary counts them.
+        let source = Source {
+            name,
+            keyed: true,
+            tell: false,
+        };
+        let result = eval_stream(&mut text.as_bytes(), &mut out, &source, &mut summary);
         if result.is_err() {
             eprintln!("rayoracle: cannot write {}", out_path.display());
             return EXIT_IO;
@@ -602,7 +671,12 @@ mod tests {
         let mut input: &[u8] = b"\xff\xfe\n{}\n";
         let mut out = Vec::new();
         let mut summary = Summary::default();
-        eval_stream(&mut input, &mut out, None, &mut summary).unwrap();
+        let source = Source {
+            name: "stdin",
+            keyed: false,
+            tell: false,
+        };
+        eval_stream(&mut input, &mut out, &source, &mut summary).unwrap();
         let text = String::from_utf8(out).unwrap();
         let lines: Vec<&str> = text.lines().collect();
         assert_eq!(lines.len(), 2);
