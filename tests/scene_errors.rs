@@ -132,6 +132,16 @@ fn a_file_error_names_the_file_line_and_column() {
     );
 }
 
+/// A byte-order mark before the object is skipped; errors after it keep
+/// their line and column.
+#[test]
+fn a_byte_order_mark_is_not_content() {
+    let s = Scene::parse(&format!("\u{feff}{}", rayoracle::fixtures::DEFAULT_SCENE)).unwrap();
+    assert_eq!(s, Scene::parse(rayoracle::fixtures::DEFAULT_SCENE).unwrap());
+    let e = Scene::parse("\u{feff}{\n  \"camera\": 7\n}").unwrap_err();
+    assert_eq!((e.line, e.column), (Some(2), Some(13)), "{e}");
+}
+
 #[test]
 fn every_fixture_scene_loads() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/scenes");

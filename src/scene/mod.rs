@@ -202,6 +202,8 @@ impl Scene {
     /// assert!(e.message.contains("parallel"), "{e}");
     /// ```
     pub fn parse(text: &str) -> Result<Scene, SceneError> {
+        // A UTF-8 byte-order mark, as some editors write, is not content.
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         // serde would read a struct from an array too (`[name, description,
         // …]`); a scene is only ever an object.
         let body = text.trim_start();
