@@ -124,6 +124,65 @@ fn bad_flags_are_refused_before_any_work() {
     );
 }
 
+/// Two scenes of the same file name would write the same frames: the
+/// second is refused by name and the run exits 1; `-o` naming a file is
+/// refused before any work.
+#[test]
+fn scenes_that_would_overwrite_each_other_and_a_file_for_a_directory_are_refused() {
+    let dir = temp_dir("same-stem");
+    let (a, b) = (dir.join("a"), dir.join("b"));
+    for d in [&a, &b] {
+        std::fs::create_dir_all(d).unwrap();
+        std::fs::copy(fixture("seed.json"), d.join("seed.json")).unwrap();
+    }
+    let out = dir.join("out");
+    let (sa, sb) = (a.join("seed.json"), b.join("seed.json"));
+    let args = |o: &Path| {
+        [
+            sa.to_str(),
+            sb.to_str(),
+            Some("-o"),
+            o.to_str(),
+            Some("--size"),
+            Some("8x6"),
+        ]
+        .map(Option::unwrap)
+        .map(String::from)
+    };
+    let owned = args(&out);
+    let argv: Vec<&str> = std::iter::once("render")
+        .chain(owned.iter().map(String::as_str))
+        .collect();
+    let (code, stdout, stderr) = run(&argv);
+    assert_eq!(code, 1, "{stderr}");
+    assert!(
+        stdout.contains(&format!("rendered {}", sa.display())),
+        "{stdout}"
+    );
+    assert!(
+        !stdout.contains(&format!("rendered {}", sb.display())),
+        "{stdout}"
+    );
+    let want = format!(
+        "{}: not rendered: its frames would overwrite those of {}",
+        sb.display(),
+        sa.display()
+    );
+    assert!(stderr.contains(&want), "{stderr}");
+
+    let file = dir.join("a-file");
+    std::fs::write(&file, "").unwrap();
+    let owned = args(&file);
+    let argv: Vec<&str> = std::iter::once("render")
+        .chain(owned.iter().map(String::as_str))
+        .collect();
+    let (code, stdout, stderr) = run(&argv);
+    assert_eq!(code, 2);
+    assert_eq!(stdout, "");
+    assert!(stderr.contains("is a file; name a directory"), "{stderr}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// From a directory outside the source tree: the cases, the catalogue and
 /// the scene are compiled in, and the outputs land in `./out`.
 #[test]

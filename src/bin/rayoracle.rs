@@ -281,8 +281,30 @@ fn render_command(
     channels: Channels,
     size: Option<[u32; 2]>,
 ) -> u8 {
+    if out.exists() && !out.is_dir() {
+        eprintln!(
+            "rayoracle: -o {}: is a file; name a directory (it is created if missing)",
+            out.display()
+        );
+        return EXIT_IO;
+    }
     let mut code = EXIT_OK;
+    // Output stem → the scene that took it: a second scene of the same file
+    // name would silently overwrite the first one's frames.
+    let mut taken: Vec<(String, String)> = Vec::new();
     for job in jobs {
+        if let Some((_, first)) = taken.iter().find(|t| t.0 == job.stem) {
+            eprintln!(
+                "rayoracle: {}: not rendered: its frames would overwrite those of {first} \
+                 (both {}.*.png in {}); rename one, or render them into separate -o directories",
+                job.name,
+                job.stem,
+                out.display()
+            );
+            code = code.max(EXIT_BAD_LINE);
+            continue;
+        }
+        taken.push((job.stem.clone(), job.name.clone()));
         let plan = job
             .scene
             .and_then(|s| match size {
@@ -304,7 +326,7 @@ fn render_command(
         // Only long renders get a bar (and indicatif draws nothing when
         // stderr is not a terminal, so tests see no bar either way: the
         // choice is `long_render`, tested on its own).
-        let target = if long_render(w, h) {
+        let target = if long_render(w, h, plan.objects()) {
             indicatif::ProgressDrawTarget::stderr()
         } else {
             indicatif::ProgressDrawTarget::hidden()
@@ -494,9 +516,11 @@ fn eval_command(files: &[PathBuf]) -> u8 {
     exit_code(&summary).max(code)
 }
 
-/// Whether a render is long enough (a million pixels) for a progress bar.
-fn long_render(w: u32, h: u32) -> bool {
-    u64::from(w) * u64::from(h) >= 1 << 20
+/// Whether a render is long enough for a progress bar: 2²⁴ ray–object
+/// tests or more (about a second on one core), counting a scene with no
+/// objects as one.
+fn long_render(w: u32, h: u32, objects: usize) -> bool {
+    u64::from(w) * u64::from(h) * (objects.max(1) as u64) >= 1 << 24
 }
 
 /// The report's progress steps: one per family per variant.
@@ -583,11 +607,14 @@ fn builtin_cases() -> Vec<(String, &'static str)> {
 mod tests {
     use super::*;
 
-    /// A bar from a million pixels on, in either orientation.
+    /// A bar from 2²⁴ ray–object tests on: many objects at a small size
+    /// count as much as a large frame of one object.
     #[test]
-    fn a_render_is_long_from_a_million_pixels() {
-        assert!(long_render(1024, 1024) && long_render(1 << 20, 1));
-        assert!(!long_render(1024, 1023) && !long_render(1, 1));
+    fn a_render_is_long_from_its_ray_object_tests() {
+        assert!(long_render(4096, 4096, 0) && long_render(4096, 4096, 1));
+        assert!(long_render(160, 120, 100_000) && long_render(1 << 20, 1, 16));
+        assert!(!long_render(4096, 4095, 1) && !long_render(160, 120, 873));
+        assert!(long_render(160, 120, 874));
     }
 
     /// 27 stiff families, 5 variants each.

@@ -254,6 +254,19 @@ impl Plan {
         self.res
     }
 
+    /// How many objects the scene has, of every kind.
+    ///
+    /// ```
+    /// use rayoracle::render::{Channels, Plan};
+    /// use rayoracle::scene::Scene;
+    /// let s = Scene::parse(r#"{"camera": {"position": [0, 0, 0], "dir": [0, 0, -1],
+    ///     "up": [0, 1, 0], "angle": 1, "res": [4, 3]}}"#).unwrap();
+    /// assert_eq!(Plan::compile(&s, Channels::DEPTH).unwrap().objects(), 0);
+    /// ```
+    pub fn objects(&self) -> usize {
+        self.ids.len()
+    }
+
     /// The first object number of each kind: `[planes, spheres, quadrics]`.
     pub(super) fn bases(&self) -> [u32; 3] {
         #[allow(unused_mut)]
