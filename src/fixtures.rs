@@ -21,6 +21,50 @@ pub const STIFF_FAMILIES: &str = include_str!("../fixtures/stiff/families.json")
 /// `fixtures/scenes/seed.json`, the scene `rayoracle` renders by default.
 pub const DEFAULT_SCENE: &str = include_str!("../fixtures/scenes/seed.json");
 
+/// Every scene of `fixtures/scenes/`, as `(file name, text)`: the default
+/// scene and the stress scenes (a far ground sphere, a quadric zoo, a
+/// grazing plane, extreme cameras).
+///
+/// ```
+/// let (name, text) = rayoracle::fixtures::SCENES[0];
+/// assert!(name.ends_with(".json") && rayoracle::scene::Scene::parse(text).is_ok());
+/// ```
+pub const SCENES: [(&str, &str); 9] = [
+    ("seed.json", DEFAULT_SCENE),
+    (
+        "rtg7-stress.json",
+        include_str!("../fixtures/scenes/rtg7-stress.json"),
+    ),
+    (
+        "quadric-zoo.json",
+        include_str!("../fixtures/scenes/quadric-zoo.json"),
+    ),
+    (
+        "grazing-plane.json",
+        include_str!("../fixtures/scenes/grazing-plane.json"),
+    ),
+    (
+        "camera-narrow.json",
+        include_str!("../fixtures/scenes/camera-narrow.json"),
+    ),
+    (
+        "camera-wide.json",
+        include_str!("../fixtures/scenes/camera-wide.json"),
+    ),
+    (
+        "camera-nonsquare.json",
+        include_str!("../fixtures/scenes/camera-nonsquare.json"),
+    ),
+    (
+        "camera-long-dir.json",
+        include_str!("../fixtures/scenes/camera-long-dir.json"),
+    ),
+    (
+        "camera-tilted-up.json",
+        include_str!("../fixtures/scenes/camera-tilted-up.json"),
+    ),
+];
+
 /// `fixtures/cases/KIND.jsonl`: hand-written cases of a kind, one `eval`
 /// line each, with their families and expectations.
 pub fn cases(kind: &str) -> Option<&'static str> {

@@ -5,11 +5,8 @@
 //! own `#![cfg(feature = ...)]`.
 
 mod bounds;
-mod cli;
 mod determinism;
-mod eval_cli;
 mod fixtures;
-mod fuzz_replay;
 mod known_wrong;
 mod non_finite;
 mod props_camera;
@@ -17,9 +14,7 @@ mod props_plane;
 mod props_quadric;
 mod props_sphere;
 mod props_sphere_quadric;
-mod render_cli;
 mod render_snapshots;
-mod report_cli;
 mod scene_errors;
 mod stiff_catalogue;
 mod stiff_report;

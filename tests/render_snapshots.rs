@@ -1,3 +1,4 @@
+#![cfg(feature = "png")]
 //! Every fixture scene (`fixtures/scenes/*.json`), rendered through both
 //! paths: the frames must be the same bits, and each channel's PNG is an
 //! insta snapshot (`tests/snapshots/render_snapshots__SCENE_CHANNEL.snap.png`).

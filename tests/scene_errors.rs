@@ -142,10 +142,11 @@ fn a_byte_order_mark_is_not_content() {
     assert_eq!((e.line, e.column), (Some(2), Some(13)), "{e}");
 }
 
+/// Every scene file loads, and every one is compiled into the library.
 #[test]
 fn every_fixture_scene_loads() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/scenes");
-    let mut n = 0;
+    let mut names = Vec::new();
     for entry in std::fs::read_dir(dir).unwrap() {
         let path = entry.unwrap().path();
         let s = Scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
@@ -154,7 +155,14 @@ fn every_fixture_scene_loads() {
             "{}",
             path.display()
         );
-        n += 1;
+        let name = path.file_name().unwrap().to_str().unwrap().to_string();
+        let compiled = rayoracle::fixtures::SCENES.iter().find(|c| c.0 == name);
+        assert_eq!(
+            compiled.map(|c| c.1),
+            Some(std::fs::read_to_string(&path).unwrap().as_str()),
+            "{name}"
+        );
+        names.push(name);
     }
-    assert!(n >= 9);
+    assert_eq!(names.len(), rayoracle::fixtures::SCENES.len());
 }

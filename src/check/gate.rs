@@ -36,6 +36,7 @@
 //! the case fails with [`Answer::Inconsistent`].
 
 pub mod fuzz;
+#[cfg(feature = "proptest")]
 pub mod strategy;
 pub mod survey;
 #[cfg(test)]
@@ -618,7 +619,7 @@ impl Gate {
     }
 
     /// One sphere case, judged: for a user's own property tests and
-    /// fuzzers ([`strategy`], [`fuzz`]). The failure is not shrunk.
+    /// fuzzers (`strategy`, with the `proptest` feature, and [`fuzz`]). The failure is not shrunk.
     ///
     /// ```
     /// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics};

@@ -1,6 +1,7 @@
-//! Frames to PNG bytes: the channel mappings of [`super`] and the `png`
-//! crate with fixed settings.
+//! Frames to PNG bytes: the channel mappings of [`super`] and, with the
+//! `png` feature, the `png` crate with fixed settings.
 
+#[cfg(feature = "png")]
 use super::Frame;
 use crate::scene::DepthRange;
 
@@ -52,11 +53,13 @@ pub fn depth_grey(t: f32, range: DepthRange) -> u16 {
 }
 
 /// A normal component to 8 bits: `round(127.5 · (n + 1))`, clamped.
+#[cfg(feature = "png")]
 fn normal_byte(n: f32) -> u8 {
     ((n + 1.0) * 127.5).round().clamp(0.0, 255.0) as u8
 }
 
 /// Encodes 8- or 16-bit samples as PNG with fixed settings.
+#[cfg(feature = "png")]
 fn png(
     width: u32,
     height: u32,
@@ -78,6 +81,7 @@ fn png(
     out
 }
 
+#[cfg(feature = "png")]
 impl Frame {
     /// RGB 8-bit samples of this frame's size as PNG.
     fn rgb_png(&self, data: &[u8]) -> Vec<u8> {
@@ -201,6 +205,7 @@ impl Frame {
 /// let files = write_pngs(&f, Channels::parse("id").unwrap(), &dir, "empty").unwrap();
 /// assert_eq!(files, vec![dir.join("empty.id.png")]);
 /// ```
+#[cfg(feature = "png")]
 pub fn write_pngs(
     frame: &Frame,
     channels: super::Channels,

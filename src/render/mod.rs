@@ -33,10 +33,12 @@
 //! * **id**, RGB 8-bit: black where nothing is hit; object id `k` gets
 //!   [`PALETTE`]`[(k − 1) mod 12]`.
 //!
-//! PNGs are written by the `png` crate with fixed settings; the same frame
-//! gives the same bytes.
+//! With the `png` feature, `Frame::pngs` and `write_pngs` encode the
+//! channels with the `png` crate at fixed settings (the same frame gives
+//! the same bytes), and `diff` draws review images of two frames.
 
 mod channels;
+#[cfg(feature = "png")]
 pub mod diff;
 mod encode;
 pub mod normal;
@@ -60,7 +62,9 @@ mod reference;
 mod x4;
 
 pub use channels::Channels;
-pub use encode::{PALETTE, depth_grey, write_pngs};
+#[cfg(feature = "png")]
+pub use encode::write_pngs;
+pub use encode::{PALETTE, depth_grey};
 pub use plan::Plan;
 
 /// Which implementation renders.

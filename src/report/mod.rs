@@ -29,12 +29,10 @@
 
 mod catalogue;
 mod error;
-mod plot;
 mod variant;
 
 pub use catalogue::{Catalogue, Family, Kernel};
 pub use error::{CaseError, case_error};
-pub use plot::svg;
 pub use variant::Variant;
 
 use serde::Serialize;

@@ -521,6 +521,7 @@ fn the_fuzz_helpers_judge_the_decoded_case() {
 }
 
 /// The random strategies draw components of both signs.
+#[cfg(feature = "proptest")]
 #[test]
 fn random_strategies_draw_both_signs() {
     use proptest::strategy::{Strategy, ValueTree};

@@ -14,6 +14,8 @@
 //!   default scene (`fixtures/scenes/seed.json`) rendered into `./out/`,
 //!   then `report --quick`. Nothing is read from the source tree.
 
+mod plot;
+
 use clap::{Parser, Subcommand};
 use rayoracle::eval::{Summary, evaluate};
 use rayoracle::render::{Channels, Path as RenderPath, Plan, render_with_progress, write_pngs};
@@ -62,7 +64,6 @@ enum Command {
     },
     /// Error against run time on the stiff catalogue (fixtures/stiff/): a
     /// Markdown table on stdout, optionally JSON rows, SVG plots, Markdown file.
-    #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
     Report {
         /// 64 cases per family and 5 timed passes (under 30 s).
         #[arg(long)]
@@ -118,7 +119,6 @@ fn main() -> ExitCode {
             });
             render_command(jobs, &out, path, channel, size)
         }
-        #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
         Some(Command::Report {
             quick,
             json,
@@ -148,7 +148,6 @@ fn main() -> ExitCode {
                 Channels::ALL,
                 None,
             );
-            #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
             let render = {
                 println!(
                     "\nrayoracle report --quick (error against run time on the stiff catalogue):\n"
@@ -169,7 +168,6 @@ fn main() -> ExitCode {
 }
 
 /// `rayoracle report`'s arguments.
-#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 struct ReportArgs {
     quick: bool,
     json: Option<PathBuf>,
@@ -180,7 +178,6 @@ struct ReportArgs {
 
 /// Runs the report; exit 2 if the catalogue cannot be read or an output
 /// cannot be written.
-#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn report_command(args: &ReportArgs) -> u8 {
     use rayoracle::report::{self, Catalogue, Kernel, Options, Variant};
     let catalogue = match &args.stiff {
@@ -249,7 +246,7 @@ fn report_command(args: &ReportArgs) -> u8 {
                 .map_or("svg".into(), |e| e.to_string_lossy().into_owned());
             let file = p.with_file_name(format!("{stem}-{}.{ext}", kernel.name()));
             let points = report::points(&rows, kernel);
-            outputs.push((file, report::svg(kernel.name(), &points)));
+            outputs.push((file, plot::svg(kernel.name(), &points)));
         }
     }
     for (path, text) in outputs {
@@ -524,7 +521,6 @@ fn long_render(w: u32, h: u32, objects: usize) -> bool {
 }
 
 /// The report's progress steps: one per family per variant.
-#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn report_steps(catalogue: &rayoracle::report::Catalogue) -> u64 {
     (catalogue.families.len() * rayoracle::report::Variant::ALL.len()) as u64
 }
@@ -618,7 +614,6 @@ mod tests {
     }
 
     /// 27 stiff families, 5 variants each.
-    #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
     #[test]
     fn the_report_counts_a_step_per_family_and_variant() {
         let c = rayoracle::report::Catalogue::builtin().unwrap();
@@ -631,12 +626,8 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         dir
     }
-
-    #[cfg(feature = "sphere")]
     const SPHERE: &str =
         r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#;
-
-    #[cfg(feature = "sphere")]
     #[test]
     fn default_job_merges_files_in_order_with_file_keys() {
         let dir = temp_dir("merge");

@@ -1,11 +1,8 @@
 //! `rayoracle render` and the no-argument default job, run as a user would.
-#![cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 
 use crate::cli::{run, run_in, temp_dir};
 
 use std::path::Path;
-
-const ROOT: &str = env!("CARGO_MANIFEST_DIR");
 
 fn png_size(path: &Path) -> (u32, u32) {
     let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
@@ -15,8 +12,18 @@ fn png_size(path: &Path) -> (u32, u32) {
     (r.info().width, r.info().height)
 }
 
+/// A scene of the library's compiled-in fixtures, written to a file of its
+/// own name in a directory of this test process.
 fn fixture(name: &str) -> String {
-    format!("{ROOT}/fixtures/scenes/{name}")
+    let (_, text) = rayoracle::fixtures::SCENES
+        .into_iter()
+        .find(|s| s.0 == name)
+        .unwrap_or_else(|| panic!("no scene {name}"));
+    let dir = std::env::temp_dir().join(format!("rayoracle-cli-scenes-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.to_str().unwrap().to_string()
 }
 
 #[test]

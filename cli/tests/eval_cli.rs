@@ -8,7 +8,6 @@ use std::process::{Command, Stdio};
 
 const SPHERE: &str =
     r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#;
-#[cfg(all(feature = "plane", feature = "sphere"))]
 const SPHERE_OUT: &str = concat!(
     r#""results":{"exact":{"class":"two","roots":[4.0,6.0],"roots_bits":["0x40800000","0x40c00000"]},"#,
     r#""reference":{"class":"two","roots":[4.0,6.0],"roots_bits":["0x40800000","0x40c00000"],"#,
@@ -69,8 +68,6 @@ fn temp_file(name: &str, lines: &[&str]) -> PathBuf {
 fn json(line: &str) -> serde_json::Value {
     serde_json::from_str(line).unwrap_or_else(|e| panic!("not JSON ({e}): {line}"))
 }
-
-#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 #[test]
 fn mixed_input_gives_one_line_per_case_in_order_and_exit_1() {
     let input = [
@@ -173,8 +170,6 @@ fn mixed_input_gives_one_line_per_case_in_order_and_exit_1() {
     assert!(run.stderr.contains("5 malformed"), "{}", run.stderr);
     assert!(!run.stdout.contains("malformed"));
 }
-
-#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 #[test]
 fn all_good_lines_exit_0_with_a_summary_on_stderr() {
     let path = temp_file("good.jsonl", &[PLANE, SPHERE, "", QUADRIC, CAMERA]);
@@ -197,8 +192,6 @@ fn all_good_lines_exit_0_with_a_summary_on_stderr() {
         );
     }
 }
-
-#[cfg(feature = "plane")]
 #[test]
 fn nan_input_is_evaluated_not_malformed() {
     let nan =
@@ -227,8 +220,6 @@ fn a_camera_that_cannot_be_built_is_an_error_line_and_exit_1() {
         "{\"line\":1,\"kind\":\"camera\",\"family\":\"fov\",\"error\":\"angle: 4 is outside the open interval (0, π)\"}\n"
     );
 }
-
-#[cfg(all(feature = "plane", feature = "sphere"))]
 #[test]
 fn stdin_dash_and_no_file_both_read_stdin() {
     let input = format!("{SPHERE}\n\n{PLANE}\r\n");
@@ -271,7 +262,6 @@ fn a_missing_file_exits_2_naming_the_file_and_the_os_error() {
 
 /// Several files are read in order, each output line keyed by its file; a
 /// file that cannot be read is named and the others are still evaluated.
-#[cfg(feature = "sphere")]
 #[test]
 fn several_files_are_evaluated_in_order_and_a_missing_one_does_not_stop_them() {
     let a = temp_file("several-a.jsonl", &[SPHERE]);
@@ -299,7 +289,6 @@ fn several_files_are_evaluated_in_order_and_a_missing_one_does_not_stop_them() {
 
 /// Each line that is not evaluated is named on stderr with its file and
 /// line, as well as in the JSON on stdout.
-#[cfg(feature = "sphere")]
 #[test]
 fn a_malformed_line_is_named_on_stderr_with_its_file_and_line() {
     let run = rayoracle(&["eval"], &format!("{SPHERE}\n{{\"kind\":\"sphere\"}}\n"));
@@ -322,58 +311,12 @@ fn a_malformed_line_is_named_on_stderr_with_its_file_and_line() {
 }
 
 /// A UTF-8 byte-order mark (as some Windows editors write) is skipped.
-#[cfg(feature = "sphere")]
 #[test]
 fn a_byte_order_mark_is_skipped() {
     let run = rayoracle(&["eval"], &format!("\u{feff}{SPHERE}\n"));
     assert_eq!(run.code, 0, "{}", run.stderr);
     assert_eq!(json(run.lines()[0])["results"]["exact"]["class"], "two");
 }
-
-#[cfg(not(all(feature = "plane", feature = "sphere", feature = "quadric")))]
-#[test]
-fn a_kind_that_is_compiled_out_is_an_error_line_and_the_run_goes_on() {
-    let kinds = [
-        ("plane", PLANE, cfg!(feature = "plane")),
-        ("sphere", SPHERE, cfg!(feature = "sphere")),
-        ("quadric", QUADRIC, cfg!(feature = "quadric")),
-    ];
-    let mut compiled_out = 0;
-    for (kind, line) in kinds.into_iter().filter(|k| !k.2).map(|k| (k.0, k.1)) {
-        compiled_out += 1;
-        let path = temp_file(
-            &format!("{kind}-compiled-out.jsonl"),
-            &[CAMERA, line, CAMERA],
-        );
-        let run = rayoracle(&["eval", path.to_str().unwrap()], "");
-        let _ = std::fs::remove_file(&path);
-        assert_eq!(run.code, 1, "stderr: {}", run.stderr);
-        let lines = run.lines();
-        assert_eq!(lines.len(), 3, "{}", run.stdout);
-        assert_eq!(
-            lines[1],
-            format!(
-                r#"{{"line":2,"error":"kind: \"{kind}\" is not compiled into this build (cargo feature \"{kind}\" is off)"}}"#
-            )
-        );
-        for (i, n) in [(0, 1), (2, 3)] {
-            let v = json(lines[i]);
-            assert_eq!(
-                (v["line"].as_u64(), v["kind"].as_str()),
-                (Some(n), Some("camera"))
-            );
-            assert!(
-                v["results"]["reference"]["class_match"] == true,
-                "{}",
-                lines[i]
-            );
-        }
-        assert!(run.stderr.contains("1 malformed"), "{}", run.stderr);
-    }
-    assert!(compiled_out > 0);
-}
-
-#[cfg(feature = "sphere")]
 #[test]
 fn a_bad_line_does_not_stop_the_run() {
     let mut input = String::new();

@@ -1,7 +1,7 @@
 //! The error-against-time plot of one kernel, as SVG (plotters).
 
-use super::Point;
 use plotters::prelude::*;
+use rayoracle::report::Point;
 
 /// An SVG plot of `points`: time per ray (log scale) across, worst bits of
 /// error up, one labelled point per variant. The Pareto front is filled and
@@ -9,17 +9,6 @@ use plotters::prelude::*;
 /// has no finite error to plot; it is drawn as a cross in a band above the
 /// axis range, so that the correctly classified variants keep the whole
 /// height. Labels are placed where they overlap no other label.
-///
-/// ```
-/// use rayoracle::report::{Point, pareto, svg};
-/// let p = |v: &str, ns, bits| Point { variant: v.into(), ns_per_ray: ns, error_bits: bits, mismatches: 0, front: false };
-/// let s = svg("sphere", &pareto(vec![p("textbook", 3.0, 32.0), p("reference", 60.0, 1.0)]));
-/// assert!(s.starts_with("<svg") && s.contains("textbook") && s.contains("Pareto"));
-/// // A time that is not a positive number (not measured) is left off the
-/// // axis range, and the rest is still drawn.
-/// let s = svg("sphere", &pareto(vec![p("f64", 0.0, 1.0), p("exact", f64::INFINITY, 0.0), p("reference", 60.0, 1.0)]));
-/// assert!(s.contains("\nreference\n"));
-/// ```
 pub fn svg(kernel: &str, points: &[Point]) -> String {
     let mut out = String::new();
     {
@@ -171,7 +160,7 @@ fn draw(
 
 #[cfg(test)]
 mod tests {
-    use super::super::{Point, pareto};
+    use rayoracle::report::{Point, pareto};
 
     /// Where each variant lands: the circles, the crosses, the front's line
     /// and the labels' places, for three points with fixed times and
@@ -248,6 +237,32 @@ mod tests {
         "464,374 f64",
         "632,312 reference",
     ];
+
+    /// The plot names every timed variant; a time that is not a positive
+    /// number (not measured) is left off the axis range, and the rest is
+    /// still drawn.
+    #[test]
+    fn every_timed_variant_is_drawn() {
+        let p = |v: &str, ns, bits| Point {
+            variant: v.into(),
+            ns_per_ray: ns,
+            error_bits: bits,
+            mismatches: 0,
+            front: false,
+        };
+        let s = super::svg(
+            "sphere",
+            &pareto(vec![p("textbook", 3.0, 32.0), p("reference", 60.0, 1.0)]),
+        );
+        assert!(s.starts_with("<svg") && s.contains("textbook") && s.contains("Pareto"));
+        let pts = vec![
+            p("f64", 0.0, 1.0),
+            p("exact", f64::INFINITY, 0.0),
+            p("reference", 60.0, 1.0),
+        ];
+        let s = super::svg("sphere", &pareto(pts));
+        assert!(s.contains("\nreference\n") && !s.contains("\nexact\n"));
+    }
 
     /// A label goes up and right of its point unless that box is taken;
     /// then below, then to the left.

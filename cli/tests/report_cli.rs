@@ -1,6 +1,5 @@
 //! `rayoracle report`, run as a user would: the table, the JSON rows, the
 //! plots, and a broken catalogue.
-#![cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 
 use crate::cli::{run, temp_dir};
 

@@ -8,7 +8,7 @@ use std::path::Path;
 
 #[test]
 fn every_committed_fuzz_input_passes_its_target_checks() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fuzz");
     let mut failures = Vec::new();
     for (target, check) in rayoracle::fuzz::TARGETS {
         let mut seen = 0;
