@@ -8,18 +8,20 @@
 //! `|δ₁| ≤ 2⁻⁵²` ([`BASIS_REL`]), nonzero only where `bxᵢ` is and then at
 //! least `2⁻¹⁰⁰⁰` (or NaN, which certifies nothing), so with `|nx| ≥ 1`
 //! nothing below underflows. In f64, `t = nx·b̂` is within
-//! `|t|(2⁻⁵² + 2⁻⁵³)(1 + 2⁻⁵⁰)` of `nx·bxᵢ`, likewise `s`, and
-//! `r = (dᵢ + t) + s` adds two roundings, each at most `u` of its result
-//! (`u = 2⁻⁵³`; a subnormal sum is exact). So
+//! `α|t|`, `α = (2⁻⁵² + u)(1 + 2⁻⁵⁰)`, of `nx·bxᵢ` (`u = 2⁻⁵³`), likewise
+//! `s`; `p = dᵢ + t` and `r = p + s` add roundings of at most `u|p|` and
+//! `u|r|` (a subnormal sum is exact). With `|p| ≤ (|dᵢ| + |t|)(1 + u)` and
+//! `|r| ≤ S(1 + u)²`, `S = |dᵢ| + |t| + |s|`,
 //!
 //! ```text
-//! |r − cᵢ| ≤ (|t| + |s|)(2⁻⁵² + 2⁻⁵³)(1 + 2⁻⁵⁰) + u·|dᵢ + t| + u·|r|
+//! |r − cᵢ| ≤ α(|t| + |s|) + u|p| + u|r| ≤ (2⁻⁵² + 3u)(1 + 2⁻⁵⁰)·S
 //! ```
 //!
-//! and [`certify`] decides the rounding from it. Where `t` and `s` are
-//! both exactly 0, so are `nx·bxᵢ` and `ny·byᵢ`, and `cᵢ = dᵢ` (its sign of
-//! zero kept, as [`super::exact`] defines). Elsewhere an undecided lane goes
-//! to [`super::exact`].
+//! and [`certify`] decides the rounding from it (the two roundings of `S`
+//! itself are in [`SLACK`]). Where `t` and `s` are both exactly 0, so are
+//! `nx·bxᵢ` and `ny·byᵢ`, and `cᵢ = dᵢ` (its sign of zero kept, as
+//! [`super::exact`] defines). Elsewhere an undecided lane goes to
+//! [`super::exact`].
 
 use crate::num::Real;
 use crate::num::certify::{SLACK, U, certify};
@@ -27,6 +29,9 @@ use crate::num::certify::{SLACK, U, certify};
 /// The relative error of the stored basis per unit, `2⁻⁵²`: an enclosure
 /// at 96 bits or more, approximated in f64 (see [`super::tan::Fx::to_f64`]).
 pub const BASIS_REL: f64 = f64::EPSILON;
+
+/// `(2⁻⁵² + 3u)(1 + 2⁻⁵⁰)`, widened by [`SLACK`]: the bound per unit of `S`.
+const K: f64 = (BASIS_REL + 3.0 * U) * (1.0 + 1.0 / (1u64 << 50) as f64) * SLACK;
 
 /// `(value, decided)` for one component: see the module docs. `shrink`
 /// scales the bound (1 for the kernels; tests shrink it to show it is
@@ -42,14 +47,12 @@ pub const BASIS_REL: f64 = f64::EPSILON;
 /// ```
 #[inline(always)]
 pub fn component<L: Real>(d: L, bx: L, by: L, nx: L, ny: L, shrink: f64) -> (L, L::Mask) {
-    let zero = L::splat(0.0);
     let (t, s) = (nx * bx, ny * by);
-    let p = d + t;
-    let r = p + s;
-    let terms = L::splat((BASIS_REL + U) * (1.0 + 2f64.powi(-50)) * SLACK * shrink);
-    let a = (t.abs() + s.abs()) * terms + p.abs() * L::splat(U * SLACK * shrink);
-    let exact = t.eq(zero) & s.eq(zero);
-    let ok = exact | certify(r, L::splat(U * SLACK * shrink), a);
+    let r = (d + t) + s;
+    let ts = t.abs() + s.abs();
+    let k = K * shrink;
+    let exact = ts.eq(L::splat(0.0));
+    let ok = exact | certify(r, L::splat(0.0), (d.abs() + ts) * L::splat(k));
     (L::select(exact, d, r), ok)
 }
 
