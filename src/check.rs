@@ -22,7 +22,7 @@
 //!   the same [`CameraError`]. Otherwise the origin must be the camera
 //!   position bit for bit, and each direction component the oracle's bits:
 //!   the reference and x4 cameras are correctly rounded too. (The gate,
-//!   [`gate`], judges other cameras with an allowance in ulps of `Sᵢ`,
+//!   `check::gate`, judges other cameras with an allowance in ulps of `Sᵢ`,
 //!   [`camera::component_scale`].)
 
 #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]

@@ -22,9 +22,10 @@
 //!   wrong order; `x` comes first (from `dir × up`), then `y` from `dir × x`.
 //! * The seed's `f = focus · dir/|dir|` is just `dir`; the code uses `dir`
 //!   and avoids a rounding.
-//! * The pixel offset `2((X + ½)/resX − ½)` is computed as
-//!   `(2X + 1 − resX)/resX`: the numerator is an exact integer (hence the
-//!   limit [`MAX_RESOLUTION`] `= 2²³`), so the offset is rounded once.
+//! * The pixel offset `2((X + ½)/resX − ½)` is the exact rational
+//!   `u = (2X + 1 − resX)/resX` (`v` likewise), never rounded by the
+//!   kernels; its integer numerator is exact even in f32 up to the limit
+//!   [`MAX_RESOLUTION`] `= 2²³`.
 //! * Construction rejects what has no meaning ([`CameraError`]): a zero or
 //!   non-finite `dir`/`up`, `dir` parallel to `up`, `angle` outside `(0, π)`,
 //!   a zero resolution.
