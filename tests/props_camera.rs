@@ -320,3 +320,34 @@ fn a_shrunk_filter_bound_gives_wrong_components() {
     assert_eq!(wrong_with_shrink(1.0), 0);
     assert!(wrong_with_shrink(1e-6) > 0);
 }
+
+/// Rounding defines overflow: a component whose real value is beyond
+/// `f32::MAX` (plus half an ulp) is `+∞`, in the reference, x4 and the
+/// oracle alike; a basis that rounds to ∞ is a construction error.
+#[test]
+fn a_component_beyond_f32_max_is_infinite_and_an_infinite_basis_is_refused() {
+    // x = (−1.5, 0, 1.5)·10³⁸ and y = (0, −2.1, 0)·10³⁸, roughly; pixel
+    // (1, 0) has u = ½, so z = 3·10³⁸ + ½·1.5·10³⁸ > f32::MAX.
+    let p = CameraParams::new(
+        Vec3::ZERO,
+        Vec3::new(3e38, 0.0, 3e38),
+        Vec3::Y,
+        0.9273,
+        [2, 2],
+    );
+    let cam = p.build().unwrap();
+    assert!(cam.x.is_finite() && cam.y.is_finite());
+    let d = cam.ray(1, 0).dir;
+    assert_eq!(d.z, f32::INFINITY);
+    assert!(d.x.is_finite() && d.x > 2e38);
+    let r = check_camera(&p, [1, 0], Ok(cam.ray(1, 0))).unwrap();
+    assert_eq!(r.status, Status::Checked);
+    assert_eq!(cam.ray4([[1, 0]; 4]).to_rays()[3], cam.ray(1, 0));
+    // 64 times as wide: x overflows.
+    let wide = CameraParams { res: [128, 2], ..p };
+    assert_eq!(wide.build().unwrap_err(), CameraError::BasisOverflow);
+    assert_eq!(
+        exact::ray(&wide, 0, 0).unwrap_err(),
+        CameraError::BasisOverflow
+    );
+}
