@@ -24,7 +24,7 @@ use glam::Vec3;
 /// // Row 0 is the top: its ray points up.
 /// assert!(cam.ray(0, 0).dir.y > 0.0);
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug)]
 pub struct Camera {
     /// The inputs.
     pub params: CameraParams,
@@ -37,6 +37,14 @@ pub struct Camera {
     pub(super) unit: [[f64; 3]; 2],
 }
 
+/// Cameras are equal when their inputs are: everything else is built from
+/// them (and the per-unit basis may hold NaN, which `==` would not match).
+impl PartialEq for Camera {
+    fn eq(&self, o: &Camera) -> bool {
+        self.params == o.params
+    }
+}
+
 fn check_vec(v: Vec3, zero: CameraError, nonfinite: CameraError) -> Result<(), CameraError> {
     if !v.is_finite() {
         Err(nonfinite)
@@ -47,8 +55,9 @@ fn check_vec(v: Vec3, zero: CameraError, nonfinite: CameraError) -> Result<(), C
     }
 }
 
-/// `u = (2X + 1 − resX)/resX` and `v` likewise: the seed's
-/// `2((X + ½)/res − ½)` with an exact numerator and one rounding.
+/// `u = (2X + 1 − resX)/resX` and `v` likewise, rounded once to `f32`: the
+/// seed's `2((X + ½)/res − ½)` as numbers, for the scale `Sᵢ`
+/// ([`super::component_scale`]); the kernels use the exact values.
 ///
 /// ```
 /// use rayoracle::camera::reference::pixel_offsets;
