@@ -30,7 +30,7 @@ use rand::{RngCore, SeedableRng};
 use rayoracle::Ray;
 use rayoracle::camera::{self, CameraParams};
 use rayoracle::case::{Case, parse_line};
-use rayoracle::check::{self, CaseReport, Status};
+use rayoracle::check::{self, CaseReport};
 use rayoracle::exact::Quadratic;
 use rayoracle::hit::Intersection;
 use rayoracle::plane::{self, Plane};
@@ -1547,13 +1547,10 @@ fn self_report(case: &Case) -> CaseReport {
 
 fn judge(fam: &Family, cand: &Cand) -> Result<Kept, Reject> {
     let case = &cand.case;
-    if let Case::Camera(p, _) = case {
-        if p.build().is_err() {
-            return Err(Reject::Range);
-        }
-        if !camera::in_domain(p) {
-            return Err(Reject::Domain);
-        }
+    if let Case::Camera(p, _) = case
+        && p.build().is_err()
+    {
+        return Err(Reject::Range);
     }
     let (class, roots) = exact_class(case);
     if let Some(e) = &cand.expect {
@@ -1567,9 +1564,6 @@ fn judge(fam: &Family, cand: &Cand) -> Result<Kept, Reject> {
         return Err(Reject::Range);
     }
     let report = self_report(case);
-    if report.status == Status::OutOfDomain {
-        return Err(Reject::Domain);
-    }
     let kappa = report.roots.iter().map(|r| r.kappa).fold(0.0, f64::max);
     let exact_roots = cand.expect.as_ref().is_some_and(|e| !e.roots.is_empty());
     if fam.cond == Cond::Well && !exact_roots {

@@ -11,7 +11,7 @@
 //! 1. each x4 lane equals the reference bit for bit (class, roots, and
 //!    `nearest` over a fuzzer-chosen interval);
 //! 2. each reference answer is the exact oracle's ([`crate::check`]: the
-//!    exact class and every root's bits; the camera within its bound);
+//!    exact class and every root's bits; the camera's direction bits);
 //! 3. for spheres, when the quadric is compiled in too, the same sphere
 //!    written as a quadric agrees ([`crate::check::sphere_as_quadric`]);
 //! 4. nothing panics.

@@ -295,7 +295,8 @@ fn camera_with(
 ) -> Option<Ray> {
     let cam = p.build().ok()?;
     let (u, v) = offsets(p.res, px);
-    let d = kernel::pixel_dir(p.dir.to_array(), cam.x.to_array(), cam.y.to_array(), u, v);
+    let (f, x, y) = (p.dir, cam.x, cam.y);
+    let d = [0, 1, 2].map(|i| (f[i] + u * x[i]) + v * y[i]);
     Some(Ray::new(p.position, glam::Vec3::from_array(d)))
 }
 

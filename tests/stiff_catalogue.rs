@@ -106,11 +106,11 @@ fn self_report(case: &Case) -> CaseReport {
     r.expect("the exact answer passes its own check")
 }
 
-/// Only the camera has a stated domain; the other kernels are correctly
-/// rounded on every finite input.
+/// Every kernel is correctly rounded on every finite input: a case is in
+/// the domain when the camera, if it is one, builds.
 fn in_domain(case: &Case) -> bool {
     match case {
-        Case::Camera(p, _) => camera::in_domain(p),
+        Case::Camera(p, _) => p.build().is_ok(),
         _ => true,
     }
 }

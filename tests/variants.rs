@@ -429,7 +429,7 @@ mod camera {
     }
 
     /// The largest error of a variant's direction, in ulps of the component
-    /// scale `Sᵢ` (what [`rayoracle::camera::COMPONENT_ULPS`] bounds), and
+    /// scale `Sᵢ` (what the gate's `CAMERA_ULPS` allowance is in), and
     /// in plain ulps where the component is at least `Sᵢ/2` (no
     /// cancellation).
     fn worst_errors(

@@ -14,14 +14,12 @@
 //! than rounded to `f32`, and nothing is prescaled: `f64`'s range holds
 //! every square and cross product of finite `f32` vectors.
 //!
-//! **This is close to the oracle by construction.** The camera oracle,
-//! [`super::exact`], is itself these formulas in `f64`, rounded once; the
-//! two differ only in the order of a few `f64` operations (the oracle forms
-//! `aspect · focus · h` and rebuilds the basis for every pixel). Expect
-//! each component to be the oracle's or one `f32` ulp of `Sᵢ = |fᵢ| +
-//! |u xᵢ| + |v yᵢ|` from it, where the two `f64` values straddle a rounding
-//! boundary. It is in the report to show what `f64` alone gives, not as an
-//! independent check.
+//! **This is close to the oracle, not equal to it.** The oracle,
+//! [`super::exact`], rounds each component's real value once; here the
+//! basis and the sum carry a few `f64` roundings first. Expect each
+//! component to be the oracle's, or one `f32` ulp of `Sᵢ = |fᵢ| + |u xᵢ| +
+//! |v yᵢ|` from it where the `f64` value and the real one straddle a
+//! rounding boundary.
 
 use super::{CameraError, CameraParams};
 use crate::Ray;
@@ -91,7 +89,7 @@ impl Camera {
     /// let p = CameraParams::new(Vec3::ONE, Vec3::new(0.3, -0.2, -1.0), Vec3::Y, 1.0, [640, 480]);
     /// let cam = Camera::new(&p).unwrap();
     /// assert_eq!(cam.ray(0, 0).origin, Vec3::ONE);
-    /// // The oracle is f64 too: here the two agree to the bit.
+    /// // Here the two agree to the bit.
     /// assert_eq!(cam.ray(17, 400), exact::ray(&p, 17, 400).unwrap());
     /// ```
     pub fn ray(&self, px: u32, py: u32) -> Ray {

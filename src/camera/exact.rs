@@ -1,37 +1,253 @@
-//! The camera oracle: the seed's formulas in f64 (29 bits more than f32),
-//! rounded once to f32 at the end. `tan`, `sqrt` and the divisions leave the
-//! result irrational, so "exact" here means a stated precision of about
-//! `2⁻⁵⁰` relative per basis component, far below f32's `2⁻²⁴`.
+//! The camera oracle: each direction component correctly rounded, by Ziv's
+//! strategy over the rigorous enclosures of [`super::tan`].
+//!
+//! # The exact definition
+//!
+//! With `D = dir`, `X = D × up`, `Y = D × X` (exact dyadic vectors: products
+//! and sums of `f32`), `focus = |D|`, `h = tan(angle/2)` (the real tangent
+//! of half the `f32` angle, in radians) and the pixel numerators
+//! `nx = 2X + 1 − resX`, `ny = 2Y + 1 − resY` (exact integers), the module
+//! formulas give
+//!
+//! ```text
+//! u·xᵢ + v·yᵢ = focus · h · Bᵢ / resY,   Bᵢ = nx·Xᵢ/|X| + ny·Yᵢ/|Y|
+//! ```
+//!
+//! (`u·aspect = nx/resY`, and `Y/|Y|` is `ŷ` since `D × x̂ = (D × X)/|X|`).
+//! Component `i` of the ray direction is the real number
+//! `cᵢ = Dᵢ + focus·h·Bᵢ/resY`, rounded once to `f32`, to nearest, ties to
+//! even, overflowing to ±∞. Where `Bᵢ = 0`, `cᵢ = Dᵢ` is returned as the
+//! `f32` `dirᵢ` itself, the sign of a zero included.
+//!
+//! # Why Ziv's strategy ends
+//!
+//! An enclosure of `cᵢ` at `p` bits decides the rounding once it lies inside
+//! the interval an `f32` owns ([`super::tan::decide`]); doubling `p` shrinks
+//! it around `cᵢ`, so this happens unless `cᵢ` is a midpoint between two
+//! `f32`s, the overflow threshold, or 0: dyadic rationals all. It never is
+//! where `Bᵢ ≠ 0`. The half angle `a = angle/2` is a nonzero rational, so by
+//! the Lindemann–Weierstrass theorem `e^{2ia}` is transcendental; were
+//! `h = tan a` algebraic, `e^{2ia} = (1 + ih)/(1 − ih)` would be too. So `h`
+//! is transcendental, while `focus` (a square root of a rational) and `Bᵢ`
+//! (rationals and square roots of rationals) are algebraic: a nonzero
+//! `focus·Bᵢ/resY` times `h` is transcendental, and so is `cᵢ`, never a
+//! rational. `Bᵢ = 0` is decided exactly first: `nx·Xᵢ·|Y| = −ny·Yᵢ·|X|`
+//! holds when both sides are 0, or when they have opposite-signed factors
+//! `nx·Xᵢ` and `ny·Yᵢ` and equal squares `(nx·Xᵢ)²·|Y|² = (ny·Yᵢ)²·|X|²`,
+//! all exact dyadics.
+//!
+//! The basis `x`, `y` ([`super::Camera`]) is correctly rounded the same way:
+//! `xᵢ = resX·focus·h·Xᵢ/(resY·|X|)` is 0 where `Xᵢ = 0` and transcendental
+//! elsewhere.
+//!
+//! ```
+//! use rayoracle::camera::{CameraParams, exact::ray};
+//! use glam::Vec3;
+//! let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [3, 3]);
+//! assert_eq!(ray(&p, 1, 1).unwrap().dir, -Vec3::Z);
+//! // tan(1/2)·2/3 = 0.3642016598958603…, correctly rounded.
+//! assert_eq!(ray(&p, 2, 1).unwrap().dir.x, 0.36420166);
+//! ```
 
+use super::tan::{Fx, Iv, decide, rsqrt, sqrt, tan_half};
 use super::{CameraError, CameraParams};
 use crate::Ray;
-use glam::{DVec3, Vec3};
+use glam::Vec3;
 
-/// The ray for pixel `(px, py)` computed in f64 and rounded to f32. Fails
-/// exactly when the reference's construction does.
-///
-/// ```
-/// use rayoracle::camera::{CameraParams, exact::ray};
-/// use glam::Vec3;
-/// let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [3, 3]);
-/// assert_eq!(ray(&p, 1, 1).unwrap().dir, -Vec3::Z);
-/// ```
+/// The first precision tried, in bits; each retry doubles it.
+pub const FIRST_BITS: u32 = 96;
+
+/// A camera's exact dyadic data.
+#[derive(Clone, Debug)]
+pub struct Exact {
+    dir: [f32; 3],
+    d: [Fx; 3],
+    x: [Fx; 3],
+    y: [Fx; 3],
+    nx: Fx,
+    ny: Fx,
+    nd: Fx,
+    angle: f32,
+    res: [u32; 2],
+}
+
+fn cross(a: &[Fx; 3], b: &[Fx; 3]) -> [Fx; 3] {
+    let c = |i: usize, j: usize| a[i].mul(&b[j]).sub(&a[j].mul(&b[i]));
+    [c(1, 2), c(2, 0), c(0, 1)]
+}
+
+fn norm2(a: &[Fx; 3]) -> Fx {
+    a.iter().fold(Fx::zero(), |s, c| s.add(&c.mul(c)))
+}
+
+/// The enclosures, at one precision, of what every component needs.
+#[derive(Clone, Debug)]
+pub struct Approx {
+    /// `focus·h/resY`.
+    k: Iv,
+    /// `1/|X|`, `1/|Y|`.
+    ix: Iv,
+    iy: Iv,
+    p: u32,
+}
+
+impl Exact {
+    /// The exact data of a camera that [`CameraParams::build`] accepts
+    /// (finite `dir` and `up`, `dir × up ≠ 0`, `angle ∈ (0, π)`).
+    pub fn new(p: &CameraParams) -> Exact {
+        let v = |v: Vec3| v.to_array().map(|c| Fx::from_f64(c as f64));
+        let (d, up) = (v(p.dir), v(p.up));
+        let x = cross(&d, &up);
+        let y = cross(&d, &x);
+        Exact {
+            dir: p.dir.to_array(),
+            nx: norm2(&x),
+            ny: norm2(&y),
+            nd: norm2(&d),
+            d,
+            x,
+            y,
+            angle: p.angle,
+            res: p.res,
+        }
+    }
+
+    /// Whether `dir × up = 0` exactly.
+    pub fn parallel(&self) -> bool {
+        self.nx.signum() == 0
+    }
+
+    /// The enclosures at `p` bits (for a camera that is not
+    /// [`Exact::parallel`]).
+    pub fn approx(&self, p: u32) -> Approx {
+        let q = p + 8;
+        let h = tan_half(self.angle, q);
+        let focus = sqrt(&self.nd, q);
+        let res_y = Iv::point(Fx::new(self.res[1], 0));
+        Approx {
+            k: focus.mul(&h, q).div_pos(&res_y, q),
+            ix: rsqrt(&self.nx, q),
+            iy: rsqrt(&self.ny, q),
+            p: q,
+        }
+    }
+
+    /// `nx·Xᵢ` and `ny·Yᵢ`, exactly.
+    fn parts(&self, i: usize, nx: i64, ny: i64) -> (Fx, Fx) {
+        (
+            self.x[i].mul(&Fx::new(nx, 0)),
+            self.y[i].mul(&Fx::new(ny, 0)),
+        )
+    }
+
+    /// Whether `Bᵢ = 0` (see the module docs), exactly.
+    pub fn b_is_zero(&self, i: usize, nx: i64, ny: i64) -> bool {
+        let (a, b) = self.parts(i, nx, ny);
+        match (a.signum(), b.signum()) {
+            (0, 0) => true,
+            (sa, sb) if sa == -sb && sa != 0 => a.mul(&a).mul(&self.ny) == b.mul(&b).mul(&self.nx),
+            _ => false,
+        }
+    }
+
+    /// An enclosure of `cᵢ` for the pixel numerators `nx`, `ny`.
+    pub fn component(&self, a: &Approx, i: usize, nx: i64, ny: i64) -> Iv {
+        let (ax, by) = self.parts(i, nx, ny);
+        let q = a.p;
+        let b = Iv::point(ax)
+            .mul(&a.ix, q)
+            .add(&Iv::point(by).mul(&a.iy, q), q);
+        b.mul(&a.k, q).add(&Iv::point(self.d[i].clone()), q)
+    }
+
+    /// Enclosures of `xᵢ/resX` and `yᵢ/resY`: the basis per unit of `nx`
+    /// and `ny`.
+    pub fn unit_basis(&self, a: &Approx, i: usize) -> (Iv, Iv) {
+        let q = a.p;
+        let k = |v: &Fx, inv: &Iv| Iv::point(v.clone()).mul(inv, q).mul(&a.k, q);
+        (k(&self.x[i], &a.ix), k(&self.y[i], &a.iy))
+    }
+
+    /// Component `i` at pixel numerators `nx`, `ny`, correctly rounded
+    /// (Ziv's strategy from `a`, doubling the precision).
+    pub fn round_component(&self, a: &Approx, i: usize, nx: i64, ny: i64) -> f32 {
+        if self.b_is_zero(i, nx, ny) {
+            return self.dir[i];
+        }
+        ziv(
+            a,
+            |a| self.approx(a.p * 2),
+            |a| self.component(a, i, nx, ny),
+        )
+    }
+
+    /// The basis `(xᵢ, yᵢ)`, each correctly rounded (0 where `Xᵢ`, or
+    /// `Yᵢ`, is).
+    pub fn round_basis(&self, a: &Approx, i: usize) -> (f32, f32) {
+        let rx = Fx::new(self.res[0], 0);
+        let ry = Fx::new(self.res[1], 0);
+        let one = |v: &Fx, r: &Fx, pick: fn((Iv, Iv)) -> Iv| {
+            if v.signum() == 0 {
+                return 0.0;
+            }
+            ziv(
+                a,
+                |a| self.approx(a.p * 2),
+                |a| pick(self.unit_basis(a, i)).mul(&Iv::point(r.clone()), a.p),
+            )
+        };
+        (one(&self.x[i], &rx, |b| b.0), one(&self.y[i], &ry, |b| b.1))
+    }
+}
+
+/// Ziv's loop: enclose at `a`'s precision, and at twice that until decided.
+fn ziv(a: &Approx, finer: impl Fn(&Approx) -> Approx, enclose: impl Fn(&Approx) -> Iv) -> f32 {
+    if let Some(c) = decide(&enclose(a)) {
+        return c;
+    }
+    let mut a = finer(a);
+    loop {
+        if let Some(c) = decide(&enclose(&a)) {
+            return c;
+        }
+        a = finer(&a);
+    }
+}
+
+/// `2X + 1 − res`, exact.
+pub fn numerator(p: u32, res: u32) -> i64 {
+    2 * p as i64 + 1 - res as i64
+}
+
+/// The ray for pixel `(px, py)`, each direction component correctly
+/// rounded (see the module docs). Fails exactly when the reference's
+/// construction does.
 pub fn ray(p: &CameraParams, px: u32, py: u32) -> Result<Ray, CameraError> {
     p.build()?;
-    let dir = p.dir.as_dvec3();
-    let up = p.up.as_dvec3();
-    let focus = dir.length();
-    let h = (p.angle as f64 / 2.0).tan();
-    let aspect = p.res[0] as f64 / p.res[1] as f64;
-    let x_hat = dir.cross(up).normalize();
-    let y_hat = dir.cross(x_hat).normalize();
-    let x = aspect * focus * h * x_hat;
-    let y = focus * h * y_hat;
-    let u = (2.0 * px as f64 + 1.0) / p.res[0] as f64 - 1.0;
-    let v = (2.0 * py as f64 + 1.0) / p.res[1] as f64 - 1.0;
-    let d: DVec3 = dir + u * x + v * y;
-    Ok(Ray::new(
-        p.position,
-        Vec3::new(d.x as f32, d.y as f32, d.z as f32),
-    ))
+    let e = Exact::new(p);
+    let a = e.approx(FIRST_BITS);
+    let (nx, ny) = (numerator(px, p.res[0]), numerator(py, p.res[1]));
+    let d = [0, 1, 2].map(|i| e.round_component(&a, i, nx, ny));
+    Ok(Ray::new(p.position, Vec3::from_array(d)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn b_is_zero_at_the_centre_and_where_the_terms_cancel() {
+        // dir = −z, up = y: X = (1, 0, 0), Y = (0, −1, 0).
+        let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [3, 3]);
+        let e = Exact::new(&p);
+        assert!(e.b_is_zero(2, 5, 7));
+        assert!(e.b_is_zero(0, 0, 7) && !e.b_is_zero(0, 1, 0));
+        // dir = −z, up = (1, 1, 0): X = (1, −1, 0)·…, Y ∥ (1, 1, 0):
+        // component x cancels where nx·X₀/|X| = −ny·Y₀/|Y|.
+        let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::new(1.0, 1.0, 0.0), 1.0, [3, 3]);
+        let e = Exact::new(&p);
+        let (s0, s1) = (e.b_is_zero(0, 1, 1), e.b_is_zero(0, 1, -1));
+        assert!(s0 != s1, "exactly one of the diagonals cancels x");
+        assert!(!e.b_is_zero(0, 1, 2));
+    }
 }

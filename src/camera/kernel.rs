@@ -1,11 +1,74 @@
-//! The per-pixel camera arithmetic, written once over [`Lane`] and
-//! instantiated at `f32` by [`super::Camera::ray`] and at `f32x4` by the
+//! The per-pixel filter, written once over [`Real`] and run at `f64` by
+//! [`super::Camera::ray`] and at [`F64x4`](crate::num::real::F64x4) by the
 //! four-pixel functions in [`super::x4`].
+//!
+//! Component `i` is `cᵢ = dᵢ + nx·bxᵢ + ny·byᵢ` with `bxᵢ = xᵢ/resX` and
+//! `byᵢ = yᵢ/resY` the exact basis per unit of the pixel numerators
+//! ([`super::exact`]). The camera stores `b̂ = bxᵢ(1 + δ₁)`,
+//! `|δ₁| ≤ 2⁻⁵²` ([`BASIS_REL`]), nonzero only where `bxᵢ` is and then at
+//! least `2⁻¹⁰⁰⁰` (or NaN, which certifies nothing), so with `|nx| ≥ 1`
+//! nothing below underflows. In f64, `t = nx·b̂` is within
+//! `α|t|`, `α = (2⁻⁵² + u)(1 + 2⁻⁵⁰)`, of `nx·bxᵢ` (`u = 2⁻⁵³`), likewise
+//! `s`; `p = dᵢ + t` and `r = p + s` add roundings of at most `u|p|` and
+//! `u|r|` (a subnormal sum is exact). With `|p| ≤ (|dᵢ| + |t|)(1 + u)` and
+//! `|r| ≤ S(1 + u)²`, `S = |dᵢ| + |t| + |s|`,
+//!
+//! ```text
+//! |r − cᵢ| ≤ α(|t| + |s|) + u|p| + u|r| ≤ (2⁻⁵² + 3u)(1 + 2⁻⁵⁰)·S
+//! ```
+//!
+//! and [`certify`] decides the rounding from it (the two roundings of `S`
+//! itself are in [`SLACK`]). Where `t` and `s` are both exactly 0, so are
+//! `nx·bxᵢ` and `ny·byᵢ`, and `cᵢ = dᵢ` (its sign of zero kept, as
+//! [`super::exact`] defines). Elsewhere an undecided lane goes to
+//! [`super::exact`].
 
-use crate::num::Lane;
+use crate::num::Real;
+use crate::num::certify::{SLACK, U, certify};
 
-/// `(2p + 1 − res) / res`: the seed's `2((p + ½)/res − ½)` with an exact
-/// integer numerator (for `res ≤ 2²³`) and one rounding.
+/// The relative error of the stored basis per unit, `2⁻⁵²`: an enclosure
+/// at 96 bits or more, approximated in f64 (see [`super::tan::Fx::to_f64`]).
+pub const BASIS_REL: f64 = f64::EPSILON;
+
+/// `(2⁻⁵² + 3u)(1 + 2⁻⁵⁰)`, widened by [`SLACK`]: the bound per unit of `S`.
+const K: f64 = (BASIS_REL + 3.0 * U) * (1.0 + 1.0 / (1u64 << 50) as f64) * SLACK;
+
+/// `(value, decided)` for one component: see the module docs. `shrink`
+/// scales the bound (1 for the kernels; tests shrink it to show it is
+/// needed).
+///
+/// ```
+/// use rayoracle::camera::kernel::component;
+/// let (r, ok) = component(-1.0f64, 0.25, 0.5, 1.0, 0.0, 1.0);
+/// assert!(ok && r == -0.75);
+/// // Both terms exactly 0: dᵢ itself, −0 kept.
+/// let (r, ok) = component(-0.0f64, 0.25, 0.5, 0.0, 0.0, 1.0);
+/// assert!(ok && r.to_bits() == (-0.0f64).to_bits());
+/// ```
+#[inline(always)]
+pub fn component<L: Real>(d: L, bx: L, by: L, nx: L, ny: L, shrink: f64) -> (L, L::Mask) {
+    let (t, s) = (nx * bx, ny * by);
+    let r = (d + t) + s;
+    let ts = t.abs() + s.abs();
+    let k = K * shrink;
+    let exact = ts.eq(L::splat(0.0));
+    let ok = exact | certify(r, L::splat(0.0), (d.abs() + ts) * L::splat(k));
+    (L::select(exact, d, r), ok)
+}
+
+/// `2p + 1 − res`, exact in f64.
+///
+/// ```
+/// use rayoracle::camera::kernel::numerator;
+/// assert_eq!(numerator(0, 4), -3.0);
+/// ```
+#[inline(always)]
+pub fn numerator(p: u32, res: u32) -> f64 {
+    (2 * p as i64 + 1 - res as i64) as f64
+}
+
+/// `(2p + 1 − res)/res` rounded once to f32: the pixel offset `u` or `v`,
+/// for code that wants it as a number (the kernels never round it).
 ///
 /// ```
 /// use rayoracle::camera::kernel::offset;
@@ -14,20 +77,4 @@ use crate::num::Lane;
 #[inline(always)]
 pub fn offset(p: u32, res: u32) -> f32 {
     (2 * p as i64 + 1 - res as i64) as f32 / res as f32
-}
-
-/// `dir = (f + u·x) + v·y`, component by component, in that order.
-///
-/// ```
-/// use rayoracle::camera::kernel::pixel_dir;
-/// let d = pixel_dir([0.0f32, 0.0, -1.0], [1.0, 0.0, 0.0], [0.0, -1.0, 0.0], 0.5, -0.5);
-/// assert_eq!(d, [0.5, 0.5, -1.0]);
-/// ```
-#[inline(always)]
-pub fn pixel_dir<L: Lane>(f: [L; 3], x: [L; 3], y: [L; 3], u: L, v: L) -> [L; 3] {
-    [
-        (f[0] + u * x[0]) + v * y[0],
-        (f[1] + u * x[1]) + v * y[1],
-        (f[2] + u * x[2]) + v * y[2],
-    ]
 }

@@ -1,13 +1,16 @@
-//! The reference camera: a double-word basis built once, plain f32 per pixel.
+//! The reference camera: the basis enclosed once per camera, each pixel's
+//! direction in f64 with a proven bound ([`kernel`]), and the rare
+//! undecided component from the oracle ([`super::exact`]). Every component
+//! is correctly rounded.
 
+use super::exact::{Exact, FIRST_BITS};
 use super::{CameraError, CameraParams, MAX_RESOLUTION, kernel};
 use crate::Ray;
-use crate::num::Ff;
-use crate::num::scale::normalized3;
 use glam::Vec3;
 
 /// A validated camera with its basis: `x` (right, half-width) and `y` (down,
-/// half-height), in world units scaled by `|dir|`.
+/// half-height), in world units scaled by `|dir|`, each component correctly
+/// rounded from its real value.
 ///
 /// ```
 /// use rayoracle::camera::CameraParams;
@@ -21,7 +24,7 @@ use glam::Vec3;
 /// // Row 0 is the top: its ray points up.
 /// assert!(cam.ray(0, 0).dir.y > 0.0);
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug)]
 pub struct Camera {
     /// The inputs.
     pub params: CameraParams,
@@ -29,33 +32,17 @@ pub struct Camera {
     pub x: Vec3,
     /// The vertical half-extent vector (pointing down the image).
     pub y: Vec3,
+    /// `xᵢ/resX` and `yᵢ/resY` to within `2⁻⁵²` relatively, for
+    /// [`kernel::component`] (NaN where out of its range).
+    pub(super) unit: [[f64; 3]; 2],
 }
 
-fn ff3(v: [f32; 3]) -> [Ff<f32>; 3] {
-    v.map(Ff::from)
-}
-
-/// `a × b` of double-word vectors.
-fn cross_ff(a: [Ff<f32>; 3], b: [Ff<f32>; 3]) -> [Ff<f32>; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-/// `v/|v|` in double-word; `None` when `|v| = 0`. `v` is first scaled by
-/// the power of two of its largest component (exactly, and without changing
-/// `v/|v|`), so that `|v|²` is neither subnormal nor overflowing: a cross
-/// product of nearly parallel vectors can be `10⁻²¹` and its square `10⁻⁴²`.
-fn normalize_ff(v: [Ff<f32>; 3]) -> Option<[Ff<f32>; 3]> {
-    let s = crate::num::scale::Scale::of_max(&[v[0].hi, v[1].hi, v[2].hi]);
-    let v = v.map(|c| Ff {
-        hi: s.apply(c.hi),
-        lo: s.apply(c.lo),
-    });
-    let n = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    (n.hi > 0.0).then(|| v.map(|c| c / n))
+/// Cameras are equal when their inputs are: everything else is built from
+/// them (and the per-unit basis may hold NaN, which `==` would not match).
+impl PartialEq for Camera {
+    fn eq(&self, o: &Camera) -> bool {
+        self.params == o.params
+    }
 }
 
 fn check_vec(v: Vec3, zero: CameraError, nonfinite: CameraError) -> Result<(), CameraError> {
@@ -68,8 +55,9 @@ fn check_vec(v: Vec3, zero: CameraError, nonfinite: CameraError) -> Result<(), C
     }
 }
 
-/// `u = (2X + 1 − resX)/resX` and `v` likewise: the seed's
-/// `2((X + ½)/res − ½)` with an exact numerator and one rounding.
+/// `u = (2X + 1 − resX)/resX` and `v` likewise, rounded once to `f32`: the
+/// seed's `2((X + ½)/res − ½)` as numbers, for the scale `Sᵢ`
+/// ([`super::component_scale`]); the kernels use the exact values.
 ///
 /// ```
 /// use rayoracle::camera::reference::pixel_offsets;
@@ -103,45 +91,40 @@ impl Camera {
                 return Err(CameraError::ResolutionTooLarge(r));
             }
         }
-        // Exact prescaling: only the directions of dir and up matter for the
-        // axes; |dir| = |dir'|·2^kd.
-        let (d, sd) = normalized3(p.dir.to_array());
-        let kd = sd.k;
-        let dir = ff3(d);
-        let up = ff3(normalized3(p.up.to_array()).0);
-
-        let x_hat = normalize_ff(cross_ff(dir, up)).ok_or(CameraError::DirParallelToUp)?;
-        let y_hat = normalize_ff(cross_ff(dir, x_hat)).ok_or(CameraError::DirParallelToUp)?;
-
-        let focus = (dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]).sqrt();
-        // tan(angle/2) in f64, independent of the platform's tanf. Its
-        // binary exponent, together with the prescale 2^kd of |dir|, is kept
-        // apart from the double-word products (whose significand stays in
-        // [1, 2), never subnormal), and each basis component is rounded once,
-        // at its true magnitude, from the exact f64 value of its double-word.
-        let h64 = (p.angle as f64 / 2.0).tan();
-        let eh = ((h64.to_bits() >> 52) & 0x7ff) as i32 - 1023;
-        let hm = h64 * 2f64.powi(-eh);
-        let h = Ff {
-            hi: hm as f32,
-            lo: (hm - (hm as f32) as f64) as f32,
-        };
-        let aspect = Ff::from(p.res[0] as f32) / Ff::from(p.res[1] as f32);
-        let len_y = focus * h;
-        let len_x = len_y * aspect;
-        // The last product in f64, from the exact values of the double-words:
-        // f64's range keeps it out of the subnormals that a product at the
-        // prescaled magnitude could fall into; one rounding to f32.
-        let scale = 2f64.powi(kd + eh);
-        let f64_of = |v: Ff<f32>| v.hi as f64 + v.lo as f64;
-        let (lx, ly) = (f64_of(len_x) * scale, f64_of(len_y) * scale);
-        let x = x_hat.map(|c| (f64_of(c) * lx) as f32);
-        let y = y_hat.map(|c| (f64_of(c) * ly) as f32);
+        let e = Exact::new(p);
+        if e.parallel() {
+            return Err(CameraError::DirParallelToUp);
+        }
+        let a = e.approx(FIRST_BITS);
+        let mut unit = [[0.0; 3]; 2];
+        let (mut x, mut y) = ([0.0; 3], [0.0; 3]);
+        for i in 0..3 {
+            (x[i], y[i]) = e.round_basis(&a, i);
+            let (bx, by) = e.unit_basis(&a, i);
+            // Zero exactly where the real value is; NaN (never certified)
+            // where it is too small for the kernel's bound.
+            for (k, b) in [bx, by].iter().enumerate() {
+                let f = b.lo.to_f64();
+                let zero = b.lo.signum() == 0 && b.hi.signum() == 0;
+                unit[k][i] = if zero {
+                    0.0
+                } else if f.abs() >= 2f64.powi(-1000) {
+                    f
+                } else {
+                    f64::NAN
+                };
+            }
+        }
         let (x, y) = (Vec3::from_array(x), Vec3::from_array(y));
         if !(x.is_finite() && y.is_finite()) {
             return Err(CameraError::BasisOverflow);
         }
-        Ok(Camera { params: *p, x, y })
+        Ok(Camera {
+            params: *p,
+            x,
+            y,
+            unit,
+        })
     }
 
     /// The ray through the centre of pixel `(px, py)`; row 0 is the top.
@@ -156,14 +139,68 @@ impl Camera {
     /// assert_eq!(centre.dir, -Vec3::Z);
     /// ```
     pub fn ray(&self, px: u32, py: u32) -> Ray {
-        let (u, v) = pixel_offsets(self.params.res, px, py);
-        let dir = kernel::pixel_dir(
-            self.params.dir.to_array(),
-            self.x.to_array(),
-            self.y.to_array(),
-            u,
-            v,
+        Ray::new(
+            self.params.position,
+            Vec3::from_array(self.dir(px, py, 1.0)),
+        )
+    }
+
+    /// The direction for pixel `(px, py)`, with the filter's bound scaled by
+    /// `shrink` (1 in [`Camera::ray`]).
+    pub(crate) fn dir(&self, px: u32, py: u32, shrink: f64) -> [f32; 3] {
+        let [rx, ry] = self.params.res;
+        let (nx, ny) = (kernel::numerator(px, rx), kernel::numerator(py, ry));
+        let d = self.params.dir.to_array();
+        let mut out = [0.0; 3];
+        let mut undecided = [false; 3];
+        for i in 0..3 {
+            let (r, ok) = kernel::component(
+                d[i] as f64,
+                self.unit[0][i],
+                self.unit[1][i],
+                nx,
+                ny,
+                shrink,
+            );
+            out[i] = r as f32;
+            undecided[i] = !ok;
+        }
+        if undecided.contains(&true) {
+            self.escalate(&mut out, undecided, px, py);
+        }
+        out
+    }
+
+    /// The undecided components of one pixel, from the oracle.
+    #[cold]
+    #[inline(never)]
+    pub(crate) fn escalate(&self, out: &mut [f32; 3], undecided: [bool; 3], px: u32, py: u32) {
+        let e = Exact::new(&self.params);
+        let a = e.approx(FIRST_BITS);
+        let [rx, ry] = self.params.res;
+        let (nx, ny) = (
+            super::exact::numerator(px, rx),
+            super::exact::numerator(py, ry),
         );
-        Ray::new(self.params.position, Vec3::from_array(dir))
+        for i in (0..3).filter(|&i| undecided[i]) {
+            out[i] = e.round_component(&a, i, nx, ny);
+        }
+    }
+
+    /// [`Camera::ray`] with the filter's bound multiplied by `shrink`: with
+    /// `shrink < 1` it certifies what the bound does not, and some
+    /// components come out wrong (`tests/props_camera.rs` finds them).
+    ///
+    /// ```
+    /// use rayoracle::camera::CameraParams;
+    /// use glam::Vec3;
+    /// let cam = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [8, 6]).build().unwrap();
+    /// assert_eq!(cam.ray_shrunk(3, 2, 1.0), cam.ray(3, 2));
+    /// ```
+    pub fn ray_shrunk(&self, px: u32, py: u32, shrink: f64) -> Ray {
+        Ray::new(
+            self.params.position,
+            Vec3::from_array(self.dir(px, py, shrink)),
+        )
     }
 }

@@ -30,12 +30,12 @@
 //! * the pixel offset rounds `(X + 0.5)/resX` before subtracting `0.5`, an
 //!   absolute error of up to `2⁻²⁴` in `u`, large against a small `u` near
 //!   the centre column; where `|x| ≫ |f|` (wide angles, wide images) it is
-//!   many ulps of `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|`, the scale
-//!   [`super::COMPONENT_ULPS`] is relative to.
+//!   many ulps of `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|`
+//!   ([`super::component_scale`]).
 //!
 //! `tests/variants.rs` measures up to 6 ulps of `Sᵢ` for fields of view of
 //! 0.2 to 2 rad and aspect ratios of ½ to 2, and up to 32 for angles up to 3
-//! rad and any aspect ratio (the reference is bounded by 4).
+//! rad and any aspect ratio (the reference is correctly rounded: 0).
 
 use super::{CameraError, CameraParams};
 use crate::Ray;

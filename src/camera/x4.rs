@@ -1,7 +1,9 @@
-//! Four camera rays at once (`wide::f32x4`), bit-identical to
-//! [`super::Camera::ray`]: the same [`super::kernel`] at `f32x4`.
+//! Four camera rays at once, bit-identical to [`super::Camera::ray`]: the
+//! same [`super::kernel`] filter at [`F64x4`], undecided lanes from the
+//! oracle (correct rounding is unique, so the two agree by construction).
 
 use super::{Camera, kernel};
+use crate::num::real::F64x4;
 use crate::ray4::Ray4;
 use wide::f32x4;
 
@@ -18,10 +20,35 @@ impl Camera {
     #[inline]
     pub fn ray4(&self, pixels: [[u32; 2]; 4]) -> Ray4 {
         let [w, h] = self.params.res;
-        let u = f32x4::from(pixels.map(|p| kernel::offset(p[0], w)));
-        let v = f32x4::from(pixels.map(|p| kernel::offset(p[1], h)));
+        let nx = F64x4::from(pixels.map(|p| kernel::numerator(p[0], w)));
+        let ny = F64x4::from(pixels.map(|p| kernel::numerator(p[1], h)));
+        let d = self.params.dir.to_array();
+        let mut out = [[0.0f32; 4]; 3];
+        let mut undecided = [[false; 3]; 4];
+        for i in 0..3 {
+            let s = |x: f64| <F64x4 as crate::num::Real>::splat(x);
+            let (r, ok) = kernel::component(
+                s(d[i] as f64),
+                s(self.unit[0][i]),
+                s(self.unit[1][i]),
+                nx,
+                ny,
+                1.0,
+            );
+            out[i] = r.to_f32();
+            for (lane, ok) in ok.lanes().into_iter().enumerate() {
+                undecided[lane][i] = !ok;
+            }
+        }
+        for (lane, [px, py]) in pixels.into_iter().enumerate() {
+            if undecided[lane].contains(&true) {
+                let mut dir = [0, 1, 2].map(|i| out[i][lane]);
+                self.escalate(&mut dir, undecided[lane], px, py);
+                (0..3).for_each(|i| out[i][lane] = dir[i]);
+            }
+        }
         let splat = |v: glam::Vec3| v.to_array().map(f32x4::splat);
-        let dir = kernel::pixel_dir(splat(self.params.dir), splat(self.x), splat(self.y), u, v);
+        let dir = out.map(f32x4::from);
         Ray4 {
             origin: splat(self.params.position),
             dir,

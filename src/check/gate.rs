@@ -44,6 +44,13 @@ mod tests;
 
 use crate::Ray;
 use crate::camera::{CameraParams, component_scale};
+
+/// The least allowance for a gated camera's direction components, in ulps
+/// of `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|` ([`component_scale`]): what a plain
+/// `f32` camera `(f + u·x) + v·y` reaches from a correctly rounded basis
+/// (½ ulp for the basis, ½ for the offset, ½ for each of the two products
+/// and two sums, rounded up, plus ½ for the oracle's own rounding).
+pub const CAMERA_ULPS: f64 = 4.0;
 use crate::case::{Case, parse_line};
 use crate::exact::dyadic::{dot, vec3};
 use crate::hit::Intersection;
@@ -1175,7 +1182,7 @@ fn judge_camera(d: &Declared, p: &CameraParams, px: [u32; 2], got: Option<Ray>) 
             let scale = component_scale(&cam, px[0], px[1]);
             // The camera's components are judged like rayoracle's own (in
             // ulps of Sᵢ), with at least its reference's bound.
-            let allowed = d.allowed_ulps(4.0).max(crate::camera::COMPONENT_ULPS);
+            let allowed = d.allowed_ulps(4.0).max(CAMERA_ULPS);
             let same_origin =
                 g.origin.to_array().map(f32::to_bits) == x.origin.to_array().map(f32::to_bits);
             for (i, s) in scale.iter().enumerate() {

@@ -51,8 +51,6 @@ pub trait Lane:
     fn recip_pow2(self) -> Self;
     /// For a power of two `2^k` (normal): `k`.
     fn pow2_exponent(self) -> Self::Int;
-    /// The magnitude of `self` with the sign bit of `sign`.
-    fn copysign(self, sign: Self) -> Self;
     /// `x · 2^e`, exact unless the result overflows or is subnormal.
     ///
     /// `e` may lie anywhere in `[-600, 600]`: the scale is applied as three
@@ -114,10 +112,6 @@ impl Lane for f32 {
     #[inline]
     fn pow2_exponent(self) -> i32 {
         (self.to_bits() >> 23) as i32 - 127
-    }
-    #[inline]
-    fn copysign(self, sign: Self) -> Self {
-        f32::from_bits((self.to_bits() & !SIGN) | (sign.to_bits() & SIGN))
     }
     #[inline]
     fn ldexp(self, e: i32) -> Self {
@@ -190,11 +184,6 @@ impl Lane for f32x4 {
     fn pow2_exponent(self) -> i32x4 {
         let b: i32x4 = wide::bytemuck::cast(self);
         (b >> 23) - i32x4::splat(127)
-    }
-    #[inline]
-    fn copysign(self, sign: Self) -> Self {
-        let s: f32x4 = wide::bytemuck::cast(wide::u32x4::splat(SIGN));
-        (self & !s) | (sign & s)
     }
     #[inline]
     fn ldexp(self, e: i32x4) -> Self {

@@ -1,6 +1,6 @@
 //! Numerical building blocks.
 //!
-//! The plane, sphere and quadric kernels evaluate in f64 with a proven error
+//! The plane, sphere, quadric and camera kernels evaluate in f64 with a proven error
 //! bound ([`real`], [`certify`]), then in f64 checked to be exact
 //! operation by operation ([`tracked`]): the [`Real`] trait runs the same
 //! expression on one lane (`f64`) or four ([`real::F64x4`]), and every
@@ -11,23 +11,15 @@
 //! bits; and since what a kernel returns is correctly rounded, scalar and
 //! SIMD agree by construction.
 //!
-//! The camera still evaluates in double-word f32 arithmetic, written once
-//! over [`Lane`] (implemented for `f32` and `wide::f32x4`):
+//! The render normals are plain `f32` (and `wide::f32x4`), written once
+//! over [`Lane`]:
 //!
 //! * [`lane`]: the [`Lane`] trait and its two implementations.
-//! * [`eft`]: error-free transformations (Knuth's TwoSum, Dekker's
-//!   FastTwoSum, Veltkamp's split and Dekker's TwoProduct without FMA).
 //! * [`scale`]: exact power-of-two prescaling for range.
-//! * [`ff`]: double-word ("float-float") arithmetic built on them, after
-//!   Joldes, Muller & Popescu, *Tight and rigorous error bounds for basic
-//!   building blocks of double-word arithmetic* (ACM TOMS 44(2), 2017).
 
-pub mod eft;
-pub mod ff;
 pub mod lane;
 pub mod scale;
 
-pub use ff::Ff;
 pub use lane::Lane;
 pub use real::Real;
 pub mod certify;

@@ -1,18 +1,15 @@
-//! Exact power-of-two prescaling, so that the double-word arithmetic never
-//! overflows, never sinks into the subnormal range, and never splits a number
-//! above `2^115` (see [`super::eft::split`]).
+//! Exact power-of-two prescaling, so that `f32` arithmetic on a vector
+//! neither overflows nor sinks into the subnormal range (the render normals
+//! use it before normalising).
 //!
 //! Scaling by `2^k` is exact (barring underflow of components that are
-//! negligible anyway next to the largest one), and every kernel knows how its
-//! roots transform: a plane's `t` is unchanged by scaling `n`, every root
-//! scales by `2^−k` when `d` is scaled by `2^k`, and by `2^k` when all
-//! positions and lengths are.
+//! negligible anyway next to the largest one), and leaves a direction
+//! unchanged.
 //!
 //! The scale is read off the largest magnitude's exponent bits and applied
 //! as one multiplication by a power of two; the only integer work is one
 //! subtraction, which matters for the SIMD path on baseline x86-64 (SSE2
-//! has no packed 32-bit min/max). The roots are put back into the caller's
-//! units once, at the end, with [`Lane::ldexp`].
+//! has no packed 32-bit min/max).
 
 use super::Lane;
 
@@ -87,46 +84,4 @@ impl<L: Lane> Scale<L> {
 pub fn normalized3<L: Lane>(v: [L; 3]) -> ([L; 3], Scale<L>) {
     let s = Scale::of_max(&v);
     (s.apply3(v), s)
-}
-
-/// Whether a magnitude is zero or within `[2^lo, 2^hi]`: the camera's
-/// domain ([`crate::camera::in_domain`]) is stated with it.
-/// A product of f32 values is formed exactly by Dekker's TwoProduct only
-/// while it is above about `2⁻¹⁰³` (its error term must not underflow).
-///
-/// ```
-/// use rayoracle::num::scale::in_range;
-/// assert!(in_range(0.0, -50, 50) && in_range(1e-15, -50, 50));
-/// assert!(!in_range(1e-16, -50, 50) && !in_range(1e16, -50, 50));
-/// ```
-pub fn in_range(s: f64, lo: i32, hi: i32) -> bool {
-    s == 0.0 || (2f64.powi(lo)..=2f64.powi(hi)).contains(&s)
-}
-
-/// What scaling `x` by `s` in f32 loses: `|x·2^−k − fl(x·2^−k)|`, zero
-/// unless a value far below the largest one of its group is pushed into the
-/// subnormal range and rounded. The kernels' domains require the total loss
-/// to be negligible (`≤ 2⁻⁶⁰`) against the sums it feeds.
-///
-/// ```
-/// use rayoracle::num::scale::{Scale, crush_loss};
-/// let s = Scale::of_max(&[1.7e38f32, 4.9e-39]);
-/// assert_eq!(crush_loss(1.7e38, s), 0.0);
-/// assert!(crush_loss(4.9e-39, s) > 0.0);
-/// ```
-pub fn crush_loss(x: f32, s: Scale<f32>) -> f64 {
-    if !x.is_finite() {
-        return 0.0;
-    }
-    (x as f64 * 2f64.powi(-s.k) - s.apply(x) as f64).abs()
-}
-
-/// `loss ≤ 2⁻⁶⁰ · scale`: a prescaling loss that cannot matter.
-///
-/// ```
-/// assert!(rayoracle::num::scale::negligible(1e-30, 1.0));
-/// assert!(!rayoracle::num::scale::negligible(1e-10, 1.0));
-/// ```
-pub fn negligible(loss: f64, scale: f64) -> bool {
-    loss <= scale * 2f64.powi(-60)
 }

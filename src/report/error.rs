@@ -20,9 +20,10 @@ pub enum CaseError {
 ///
 /// Roots are measured in ulps of the correctly rounded root. A camera ray
 /// is measured per component in ulps of `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|`
-/// ([`crate::camera::component_scale`]), the scale its bound is stated in:
-/// the terms of a component may cancel, and an error relative to the
-/// cancelled result would blame the kernel for the cancellation.
+/// ([`crate::camera::component_scale`]), the scale the gate's allowance
+/// for other cameras is stated in: the terms of a component may cancel,
+/// and an error relative to the cancelled result would blame the kernel
+/// for the cancellation.
 ///
 /// ```
 /// use rayoracle::case::parse_line;
