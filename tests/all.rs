@@ -5,6 +5,7 @@
 //! own `#![cfg(feature = ...)]`.
 
 mod bounds;
+mod bounds_search;
 mod cli;
 mod determinism;
 mod eval_cli;
