@@ -8,7 +8,8 @@
 //! from seeds that sit on the edge of a decision by construction (roots by
 //! an f32 rounding midpoint, margins `d·n`, `Δ`, `β² − 4αγ` near 0), by
 //! moving single inputs by a few ulps or by powers of two, keeping every
-//! move that does not lower the factor.
+//! move that does not lower the factor. The committed cases are seeds too,
+//! so each run goes on from the best found so far.
 //!
 //! Regenerate the cases (a few minutes) with
 //!
@@ -260,8 +261,9 @@ pub fn quadric_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
         .collect()
 }
 
-/// The seeds of a kind: its generated cases and the stiff catalogue's.
-pub fn seeds(kind: &str, rng: &mut SmallRng, n: usize) -> Vec<Case> {
+/// The seeds of a kind: its generated cases, the stiff catalogue's, and
+/// (if `go_on`) the committed ones.
+pub fn seeds(kind: &str, rng: &mut SmallRng, n: usize, go_on: bool) -> Vec<Case> {
     let mut out = match kind {
         "plane" => plane_seeds(rng, n),
         "sphere" => sphere_seeds(rng, n),
@@ -271,7 +273,22 @@ pub fn seeds(kind: &str, rng: &mut SmallRng, n: usize) -> Vec<Case> {
     for f in cat.families.iter().filter(|f| f.name.starts_with(kind)) {
         out.extend(f.cases.iter().cloned());
     }
+    if go_on {
+        out.extend(committed(kind));
+    }
     out
+}
+
+/// The cases of `fixtures/bounds/{kind}.jsonl`, so that a new search goes
+/// on from the best found so far.
+pub fn committed(kind: &str) -> Vec<Case> {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join(format!("fixtures/bounds/{kind}.jsonl"));
+    let text = std::fs::read_to_string(path).unwrap_or_default();
+    text.lines()
+        .filter_map(|l| rayoracle::case::parse_line(l).ok())
+        .map(|c| c.case)
+        .collect()
 }
 
 /// One move: a random input nudged by a few ulps (up to 2²⁴), scaled by
@@ -286,7 +303,8 @@ fn mutate(rng: &mut SmallRng, v: &mut [f32]) {
             f32::from_bits(x.to_bits() ^ rng.random_range(0..1u32 << bits))
         }
         _ => {
-            let width = rng.random_range(0..24);
+            let top = rng.random_range(0..24);
+            let width = rng.random_range(0..=top);
             let k = 1i64 << width;
             let step = rng.random_range(1..=k) * if rng.random() { 1 } else { -1 };
             f32::from_bits((x.to_bits() as i64 + step).clamp(0, u32::MAX as i64) as u32)
@@ -358,12 +376,17 @@ pub fn quantities(kind: &str) -> &'static [Quantity] {
     }
 }
 
-/// The search for one kind: seeds scored per quantity, the best `starts`
-/// of each climbed for `steps` moves; every improvement found, best first
-/// per quantity.
-pub fn search(kind: &str, seed: u64, pool: usize, starts: usize, steps: usize) -> Vec<Found> {
+/// The search for one kind: seeds (the committed cases among them if
+/// `go_on`) scored per quantity, the best `starts` of each climbed for
+/// `steps` moves; every improvement found, best first per quantity.
+pub fn search(
+    kind: &str,
+    seed: u64,
+    (pool, starts, steps): (usize, usize, usize),
+    go_on: bool,
+) -> Vec<Found> {
     let mut rng = SmallRng::seed_from_u64(seed);
-    let seeds = seeds(kind, &mut rng, pool);
+    let seeds = seeds(kind, &mut rng, pool, go_on);
     let mut out = Vec::new();
     for &q in quantities(kind) {
         let mut scored: Vec<(f64, &Case)> = seeds
@@ -394,7 +417,12 @@ fn the_search_climbs_and_regenerates_the_fixtures_on_request() {
             Some(n) => (8192, 8, n),
             None => (256, 1, 150),
         };
-        let found = search(kind, 0x5eed + i as u64, pool, starts, steps);
+        let found = search(
+            kind,
+            0x5eed + i as u64,
+            (pool, starts, steps),
+            budget.is_some(),
+        );
         for &q in quantities(kind) {
             let of_q: Vec<&Found> = found.iter().filter(|f| f.quantity == q).collect();
             let best = of_q.first().map_or(f64::NEG_INFINITY, |f| f.log2);
