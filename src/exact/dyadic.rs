@@ -721,30 +721,26 @@ fn add_shifted(acc: &mut [u64], m: i128, shift: usize) {
             (mag >> (128 - bit)) as u64
         },
     ];
-    if m > 0 {
-        let mut carry = 0u64;
-        for (i, w) in acc[limb..].iter_mut().enumerate() {
-            let p = parts.get(i).copied().unwrap_or(0);
-            if i >= 3 && carry == 0 {
-                break;
-            }
+    // Add with carry, or subtract with borrow.
+    let step: fn(u64, u64, u64) -> (u64, u64) = if m > 0 {
+        |w, p, c| {
             let (v, c1) = w.overflowing_add(p);
-            let (v, c2) = v.overflowing_add(carry);
-            *w = v;
-            carry = u64::from(c1 | c2);
+            let (v, c2) = v.overflowing_add(c);
+            (v, u64::from(c1 | c2))
         }
     } else {
-        let mut borrow = 0u64;
-        for (i, w) in acc[limb..].iter_mut().enumerate() {
-            let p = parts.get(i).copied().unwrap_or(0);
-            if i >= 3 && borrow == 0 {
-                break;
-            }
+        |w, p, b| {
             let (v, b1) = w.overflowing_sub(p);
-            let (v, b2) = v.overflowing_sub(borrow);
-            *w = v;
-            borrow = u64::from(b1 | b2);
+            let (v, b2) = v.overflowing_sub(b);
+            (v, u64::from(b1 | b2))
         }
+    };
+    let mut carry = 0;
+    for (i, w) in acc[limb..].iter_mut().enumerate() {
+        if i >= 3 && carry == 0 {
+            break;
+        }
+        (*w, carry) = step(*w, parts.get(i).copied().unwrap_or(0), carry);
     }
 }
 
