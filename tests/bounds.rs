@@ -12,7 +12,7 @@
 //! quadric's first root: a constant cut to a sixteenth is caught here. A
 //! cut to a quarter is left to the derivations in `kernel.rs`: each
 //! constant carries at least twice the proof's value, and the searched
-//! cases reach errors of 1/7.3 to 1/15 of their bounds. Run with
+//! cases reach errors of 1/6.6 to 1/15 of their bounds. Run with
 //! `--nocapture` for the counts per family and the factor each committed
 //! case reaches.
 #![cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
@@ -159,7 +159,7 @@ fn found(kind: &str) -> Vec<Case> {
 /// test notices. The bounds are the proofs' constants at least doubled,
 /// and a wrong answer needs every rounding of the proof's worst case near
 /// its maximum and in the same direction, with the exact value next to a
-/// decision; the search gets within about 2^2.9 to 2^3.9 of the bound
+/// decision; the search gets within about 2^2.7 to 2^3.9 of the bound
 /// (run with `--nocapture` for the factor each case reaches), so these
 /// are 1/16, and 1/8 for the quadric's first root. Not listed: the
 /// plane's class, which no factor makes wrong (see
