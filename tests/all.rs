@@ -5,6 +5,7 @@
 //! own `#![cfg(feature = ...)]`.
 
 mod bounds;
+mod bounds_search;
 mod determinism;
 mod fixtures;
 mod known_wrong;

@@ -2,33 +2,39 @@
 //! tests must notice a bound that is too small. Each kernel is run with
 //! every bound of its filter multiplied by a factor below 1
 //! (`reference::intersect_shrunk`) over cases made to sit on the edge of a
-//! decision: the stiff catalogue, the gate's families, and generated cases
+//! decision: the stiff catalogue, the gate's families, generated cases
 //! whose roots lie next to an f32 rounding midpoint or whose margin is
-//! nearly 0. At the factor 1 every answer is the oracle's; shrunk to 1/64,
-//! wrong answers appear for every kind (near-parallel planes, huge spheres
-//! seen from close by, double planes). At 1/16 none do yet: each constant
-//! carries at least twice the proof's value, and the proof's worst case
-//! (every rounding of a sum in the same direction) is rarely approached, so
-//! between 1 and 1/16 the derivations in `kernel.rs`, not these tests,
-//! guard the constants. Run with `--nocapture` for the counts per family.
+//! nearly 0, and the cases of `fixtures/bounds/`, which the seeded search
+//! of [`crate::bounds_search`] found by maximising the factor at which
+//! each certified quantity comes out wrong. At the factor 1 every answer
+//! is the oracle's. At 1/16 every kernel's roots, and the sphere's and the
+//! quadric's class, come out wrong on some committed case, and at 1/8 the
+//! quadric's first root: a constant cut to a sixteenth is caught here. A
+//! cut to a quarter is left to the derivations in `kernel.rs`: each
+//! constant carries at least twice the proof's value, and the searched
+//! cases reach errors of 1/6.6 to 1/15 of their bounds. Run with
+//! `--nocapture` for the counts per family and the factor each committed
+//! case reaches.
 #![cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 
-use glam::Vec3;
+use crate::bounds_search::{
+    critical_log2, exact, plane_seeds, quadric_seeds, quantities, sphere_seeds, wrong_in,
+};
+use rand::SeedableRng;
 use rand::rngs::SmallRng;
-use rand::{Rng, SeedableRng};
-use rayoracle::Ray;
-use rayoracle::case::Case;
+use rayoracle::case::{Case, parse_line};
 use rayoracle::check::gate::{Declared, Gate, Semantics};
 use rayoracle::hit::same_bits;
-use rayoracle::plane::{self, Plane};
-use rayoracle::quadric::{self, Quadric};
+use rayoracle::plane;
+use rayoracle::quadric;
 use rayoracle::report::Catalogue;
-use rayoracle::sphere::{self, Sphere};
+use rayoracle::sphere;
 
-/// The factors tried: 1, then down by fours to 4⁻¹², then 0.
-const FACTORS: [f64; 8] = [
+/// The factors tried: 1, 1/4, 1/8, then down by fours to 4⁻¹², then 0.
+const FACTORS: [f64; 9] = [
     1.0,
     0.25,
+    0.125,
     1.0 / 16.0,
     1.0 / 64.0,
     1.0 / 256.0,
@@ -36,6 +42,9 @@ const FACTORS: [f64; 8] = [
     1.0 / 16777216.0,
     0.0,
 ];
+
+/// Where 1/64 is in [`FACTORS`].
+const AT_1_64: usize = 4;
 
 /// Whether the kernel, with its bounds shrunk by `s`, gives the oracle's
 /// answer (a non-finite case always does: nothing is certified).
@@ -57,65 +66,6 @@ fn right(case: &Case, s: f64) -> bool {
     }
 }
 
-/// An f32 with a random 24-bit significand in `[2^e, 2^(e+1))`.
-fn mant(rng: &mut SmallRng, e: i32) -> f32 {
-    (1.0 + rng.random_range(0..1u32 << 23) as f32 / 8388608.0) * 2f32.powi(e)
-}
-
-/// Planes whose root is an f32 rounding midpoint plus a tiny offset: `d =
-/// x̂`, `n = (1, ulp/2, ε)`, `a = (x, 1, ±1)`, so `t = x + ulp(x)/2 ± ε`.
-fn plane_midpoints(rng: &mut SmallRng, n: usize) -> Vec<Case> {
-    (0..n)
-        .map(|_| {
-            let e = rng.random_range(-20..20);
-            let x = mant(rng, e);
-            let half_ulp = 2f32.powi(e - 24);
-            let k = rng.random_range(40..56);
-            let eps = mant(rng, e - k);
-            let sign = if rng.random() { 1.0 } else { -1.0 };
-            let o = Vec3::new(rng.random_range(-4.0..4.0), 0.0, 0.0);
-            let ray = Ray::new(o, Vec3::X);
-            let p = Plane::new(Vec3::new(x + o.x, 1.0, sign), Vec3::new(1.0, half_ulp, eps));
-            Case::Plane(ray, p)
-        })
-        .collect()
-}
-
-/// Spheres grazed at a relative miss distance of 10⁻² to 10⁻⁹, from
-/// distances of 1 to 10⁶ radii.
-fn sphere_grazes(rng: &mut SmallRng, n: usize) -> Vec<Case> {
-    (0..n)
-        .map(|_| {
-            let r = 10f32.powf(rng.random_range(-3.0..3.0));
-            let dist = r * 10f32.powf(rng.random_range(0.3..6.0));
-            let miss = 1.0 + rng.random_range(-1.0..1.0) * 10f32.powf(rng.random_range(-9.0..-2.0));
-            let c = Vec3::new(rng.random_range(-10.0..10.0), 0.0, 0.0);
-            let o = c + Vec3::new(0.0, r * miss, -dist);
-            let d = Vec3::new(rng.random_range(-1e-3..1e-3), 0.0, 1.0);
-            Case::Sphere(Ray::new(o, d), Sphere::new(c, r))
-        })
-        .collect()
-}
-
-/// Cylinders `x² + y² = 1` grazed at a relative miss of 10⁻² to 10⁻⁹, and
-/// rays nearly along their axis.
-fn quadric_grazes(rng: &mut SmallRng, n: usize) -> Vec<Case> {
-    let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
-    (0..n)
-        .map(|i| {
-            let miss = 1.0 + rng.random_range(-1.0..1.0) * 10f32.powf(rng.random_range(-9.0..-2.0));
-            let ray = if i % 2 == 0 {
-                let o = Vec3::new(-10f32.powf(rng.random_range(0.5..5.0)), miss, 0.0);
-                Ray::new(o, Vec3::new(1.0, 0.0, rng.random_range(-1.0..1.0)))
-            } else {
-                let tilt = 10f32.powf(rng.random_range(-8.0..-1.0));
-                Ray::new(Vec3::new(0.0, miss * 0.5, 0.0), Vec3::new(tilt, 0.0, 1.0))
-            };
-            Case::Quadric(ray, cyl)
-        })
-        .collect()
-}
-
 fn cases(kind: &str) -> Vec<(String, Vec<Case>)> {
     let mut out: Vec<(String, Vec<Case>)> = Vec::new();
     let cat = Catalogue::builtin().expect("the built-in catalogue");
@@ -128,11 +78,12 @@ fn cases(kind: &str) -> Vec<(String, Vec<Case>)> {
     }
     let mut rng = SmallRng::seed_from_u64(0xb0_0d5);
     let generated = match kind {
-        "plane" => ("generated plane/midpoint", plane_midpoints(&mut rng, 4096)),
-        "sphere" => ("generated sphere/graze", sphere_grazes(&mut rng, 4096)),
-        _ => ("generated quadric/graze", quadric_grazes(&mut rng, 4096)),
+        "plane" => plane_seeds(&mut rng, 4096),
+        "sphere" => sphere_seeds(&mut rng, 4096),
+        _ => quadric_seeds(&mut rng, 4096),
     };
-    out.push((generated.0.to_string(), generated.1));
+    out.push((format!("generated {kind}"), generated));
+    out.push((format!("fixtures/bounds/{kind}"), found(kind)));
     out
 }
 
@@ -162,7 +113,10 @@ fn wrong_per_factor(kind: &str) -> [usize; FACTORS.len()] {
 fn assert_caught(kind: &str) {
     let w = wrong_per_factor(kind);
     assert_eq!(w[0], 0, "{kind}: wrong answers with the bounds as derived");
-    assert!(w[3] > 0, "{kind}: bounds shrunk to 1/64 went unnoticed");
+    assert!(
+        w[AT_1_64] > 0,
+        "{kind}: bounds shrunk to 1/64 went unnoticed"
+    );
     assert!(w.windows(2).all(|p| p[0] <= p[1]), "{kind}: {w:?}");
 }
 
@@ -179,4 +133,78 @@ fn shrunk_sphere_bounds_give_wrong_answers() {
 #[test]
 fn shrunk_quadric_bounds_give_wrong_answers() {
     assert_caught("quadric");
+}
+
+/// The committed cases of `fixtures/bounds/{kind}.jsonl`, found by
+/// [`crate::bounds_search`] (each line's family names its quantity).
+fn found_lines(kind: &str) -> Vec<(String, Case)> {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join(format!("fixtures/bounds/{kind}.jsonl"));
+    let text = std::fs::read_to_string(&path).expect("fixtures/bounds");
+    text.lines()
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| {
+            let c = parse_line(l).unwrap_or_else(|e| panic!("{}: {e}: {l}", path.display()));
+            (c.family.expect("a family naming the quantity"), c.case)
+        })
+        .collect()
+}
+
+fn found(kind: &str) -> Vec<Case> {
+    found_lines(kind).into_iter().map(|(_, c)| c).collect()
+}
+
+/// The largest factor at which the committed cases must show each
+/// quantity wrong, and so the smallest shrinking of its bound that this
+/// test notices. The bounds are the proofs' constants at least doubled,
+/// and a wrong answer needs every rounding of the proof's worst case near
+/// its maximum and in the same direction, with the exact value next to a
+/// decision; the search gets within about 2^2.7 to 2^3.9 of the bound
+/// (run with `--nocapture` for the factor each case reaches), so these
+/// are 1/16, and 1/8 for the quadric's first root. Not listed: the
+/// plane's class, which no factor makes wrong (see
+/// `bounds_search::quantities`).
+const CAUGHT_AT: [(&str, f64); 7] = [
+    ("bounds/plane/root0", 1.0 / 16.0),
+    ("bounds/sphere/class", 1.0 / 16.0),
+    ("bounds/sphere/root0", 1.0 / 16.0),
+    ("bounds/sphere/root1", 1.0 / 16.0),
+    ("bounds/quadric/class", 1.0 / 16.0),
+    ("bounds/quadric/root0", 0.125),
+    ("bounds/quadric/root1", 1.0 / 16.0),
+];
+
+/// Each committed case: right with the bounds as derived, wrong in its
+/// quantity with them shrunk to 0; and for each quantity, some case
+/// wrong in it at its factor of [`CAUGHT_AT`].
+#[test]
+fn the_found_cases_catch_each_bound_shrunk() {
+    for kind in ["plane", "sphere", "quadric"] {
+        let lines = found_lines(kind);
+        assert!(!lines.is_empty(), "{kind}: no cases");
+        for (family, case) in &lines {
+            let e = exact(case).expect("finite");
+            assert_eq!(wrong_in(case, &e, 1.0), None, "{family}: {case:?}");
+            assert!(wrong_in(case, &e, 0.0).is_some(), "{family}: {case:?}");
+        }
+        for &q in quantities(kind) {
+            let family = format!("bounds/{kind}/{}", q.name());
+            let factor = CAUGHT_AT
+                .iter()
+                .find(|(f, _)| *f == family)
+                .map(|&(_, s)| s);
+            let best = lines
+                .iter()
+                .filter(|(f, _)| *f == family)
+                .filter_map(|(_, c)| critical_log2(c, &exact(c)?, q))
+                .fold(f64::NEG_INFINITY, f64::max);
+            println!("{family}: wrong up to the factor 2^{best:.2}");
+            if let Some(s) = factor {
+                let caught = lines.iter().any(|(f, c)| {
+                    *f == family && exact(c).is_some_and(|e| wrong_in(c, &e, s) == Some(q))
+                });
+                assert!(caught, "{family}: nothing wrong at {s}");
+            }
+        }
+    }
 }

@@ -610,7 +610,138 @@ impl Neg for Dyadic {
 /// assert_eq!(dot(&a, &a), Dyadic::new(14, 0));
 /// ```
 pub fn dot(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> Dyadic {
-    &(&(&a[0] * &b[0]) + &(&a[1] * &b[1])) + &(&a[2] * &b[2])
+    sum(&[&a[0] * &b[0], &a[1] * &b[1], &a[2] * &b[2]])
+}
+
+/// Limbs of [`sum`]'s accumulator: 2048 bits, enough for any sum of
+/// products of up to four f32 values (their exponents span under 1,200
+/// bits).
+const ACC_LIMBS: usize = 32;
+
+/// The exact sum of dyadics. Where every mantissa is an `i128` and the
+/// terms span at most 2,040 bits, they are added into one two's-complement
+/// accumulator on the stack, aligned at the smallest exponent, and only
+/// the total is normalised: no intermediate sum is formed, stored wide or
+/// allocated. Otherwise the terms are added in turn.
+///
+/// ```
+/// use rayoracle::exact::{Dyadic, dyadic::sum};
+/// let t = [Dyadic::new(3, 400), Dyadic::new(-1, -300), Dyadic::new(-3, 400)];
+/// assert_eq!(sum(&t), Dyadic::new(-1, -300));
+/// assert_eq!(sum(&[]), Dyadic::ZERO);
+/// ```
+pub fn sum(terms: &[Dyadic]) -> Dyadic {
+    sum_fixed(terms).unwrap_or_else(|| terms.iter().fold(Dyadic::ZERO, |acc, x| &acc + x))
+}
+
+/// [`sum`] on the stack accumulator, if the terms allow it: an `i128`
+/// where the aligned total has room in one, else limbs.
+fn sum_fixed(terms: &[Dyadic]) -> Option<Dyadic> {
+    let mut lo = i64::MAX;
+    let mut hi = i64::MIN;
+    for t in terms {
+        let m = t.fixed()?;
+        if m != 0 {
+            lo = lo.min(t.exp as i64);
+            hi = hi.max(t.exp as i64 + 128 - m.unsigned_abs().leading_zeros() as i64);
+        }
+    }
+    if lo == i64::MAX {
+        return Some(Dyadic::ZERO);
+    }
+    // Room for the terms, the carries of up to 2⁶ of them, and the sign.
+    if hi - lo + 8 > (ACC_LIMBS * 64) as i64 || terms.len() > 64 {
+        return None;
+    }
+    let width = (hi - lo + 8) as usize;
+    if width <= 127 {
+        // The aligned terms and their total fit in an i128 as they are.
+        let mut total = 0i128;
+        for t in terms {
+            let m = t.fixed()?;
+            if m != 0 {
+                total += m << (t.exp as i64 - lo);
+            }
+        }
+        return Some(Dyadic::small(total, i32::try_from(lo).ok()?));
+    }
+    let mut full = [0u64; ACC_LIMBS];
+    let acc = &mut full[..width.div_ceil(64)];
+    for t in terms {
+        let m = t.fixed()?;
+        if m != 0 {
+            add_shifted(acc, m, (t.exp as i64 - lo) as usize);
+        }
+    }
+    let negative = acc[acc.len() - 1] >> 63 == 1;
+    if negative {
+        // Two's complement negation: invert, add 1.
+        let mut carry = true;
+        for w in acc.iter_mut() {
+            let (v, c) = (!*w).overflowing_add(u64::from(carry));
+            *w = v;
+            carry = c;
+        }
+    }
+    let Some(first) = acc.iter().position(|&w| w != 0) else {
+        return Some(Dyadic::ZERO);
+    };
+    let last = acc.iter().rposition(|&w| w != 0).expect("a nonzero limb");
+    let exp = i32::try_from(lo + 64 * first as i64).ok()?;
+    let words = &acc[first..=last];
+    if words.len() <= 2 {
+        let mag = words[0] as u128 | (words.get(1).copied().unwrap_or(0) as u128) << 64;
+        if let Ok(m) = i128::try_from(mag) {
+            return Some(Dyadic::small(if negative { -m } else { m }, exp));
+        }
+    }
+    let sign = if negative {
+        dashu_int::Sign::Negative
+    } else {
+        dashu_int::Sign::Positive
+    };
+    Some(Dyadic::big(
+        IBig::from_parts(sign, dashu_int::UBig::from_words(words)),
+        exp,
+    ))
+}
+
+/// `acc += m · 2^shift` in two's complement, the accumulator wide enough
+/// (the limbs of `m · 2^shift` past its end are zero).
+fn add_shifted(acc: &mut [u64], m: i128, shift: usize) {
+    let (limb, bit) = (shift / 64, shift % 64);
+    let mag = m.unsigned_abs();
+    // The magnitude shifted by `bit`, in three limbs.
+    let parts = [
+        (mag << bit) as u64,
+        ((mag << bit) >> 64) as u64,
+        if bit == 0 {
+            0
+        } else {
+            (mag >> (128 - bit)) as u64
+        },
+    ];
+    // Add with carry, or subtract with borrow.
+    let step: fn(u64, u64, u64) -> (u64, u64) = if m > 0 {
+        |w, p, c| {
+            let (v, c1) = w.overflowing_add(p);
+            let (v, c2) = v.overflowing_add(c);
+            (v, u64::from(c1 | c2))
+        }
+    } else {
+        |w, p, b| {
+            let (v, b1) = w.overflowing_sub(p);
+            let (v, b2) = v.overflowing_sub(b);
+            (v, u64::from(b1 | b2))
+        }
+    };
+    let mut carry = 0;
+    for (i, w) in acc[limb..].iter_mut().enumerate() {
+        if i >= 3 && carry == 0 {
+            break;
+        }
+        (*w, carry) = step(*w, parts.get(i).copied().unwrap_or(0), carry);
+    }
 }
 
 /// The exact values of an `f32` 3-vector, or [`NonFinite`].
@@ -697,6 +828,33 @@ pub(crate) mod tests {
             _ => &Dyadic::new(m0, 70) + &Dyadic::new(m1, 0),
         };
         mant.mul_pow2(e)
+    }
+
+    /// [`sum`] on the stack accumulator gives, bit for bit, what adding
+    /// in turn on big integers gives: for 0 to 12 random terms (cancelling
+    /// ones included, and spans the accumulator cannot take), every term
+    /// also negated, so totals of either sign, zero among them.
+    #[test]
+    fn sum_matches_big_integers() {
+        let mut r = SmallRng::seed_from_u64(0x5u64 << 40 | 0x0123);
+        let (mut on_stack, mut zero) = (0, 0);
+        for _ in 0..20_000 {
+            let n = r.random_range(0..=12);
+            let mut terms: Vec<Dyadic> = (0..n).map(|_| random(&mut r)).collect();
+            if n > 1 && r.random_bool(0.3) {
+                let k = r.random_range(1..n);
+                terms[k] = -&terms[0];
+            }
+            let got = sum(&terms);
+            let want = big_only(|| terms.iter().fold(Dyadic::ZERO, |acc, x| &acc + x));
+            assert_eq!(parts(&got), parts(&want), "{terms:?}");
+            assert_eq!(got.to_f64().to_bits(), want.to_f64().to_bits());
+            on_stack += usize::from(sum_fixed(&terms).is_some());
+            zero += usize::from(got.is_zero());
+            let neg: Vec<Dyadic> = terms.iter().map(|t| -t).collect();
+            assert_eq!(parts(&sum(&neg)), parts(&-&want), "{terms:?}");
+        }
+        assert!(on_stack > 5_000 && zero > 100, "{on_stack} {zero}");
     }
 
     /// Every operation on random dyadics gives the same value, ordering,

@@ -2,7 +2,7 @@
 
 use super::{Quadric, QuadricHit};
 use crate::Ray;
-use crate::exact::dyadic::vec3;
+use crate::exact::dyadic::{sum, vec3};
 use crate::exact::{Dyadic, ExactQuadratic, NonFinite, Quadratic};
 
 /// The exact quadratic `α t² + β t + γ` of a ray and a quadric.
@@ -61,7 +61,6 @@ pub fn quadratic(ray: &Ray, quadric: &Quadric) -> Result<Quadratic, NonFinite> {
         &k[8] * &o[2],
         k[9].clone(),
     ];
-    let sum = |xs: &[Dyadic]| xs.iter().fold(Dyadic::ZERO, |acc, x| &acc + x);
     Ok(Quadratic::new(sum(&alpha), sum(&beta), sum(&gamma)))
 }
 

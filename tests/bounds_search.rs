@@ -1,0 +1,505 @@
+//! The search that finds the cases of `fixtures/bounds/`: inputs on which a
+//! kernel, with its filter's bounds multiplied by a factor `s < 1`, gives a
+//! wrong answer for `s` as large as it can be made. For a case and a
+//! certified quantity (the class, or one root), the *critical factor* is the
+//! largest `s` at which that quantity comes out wrong: the case's actual
+//! error, measured in units of the bound, where it crosses a decision (a
+//! sign, or an f32 rounding boundary). A seeded hill-climb maximises it,
+//! from seeds that sit on the edge of a decision by construction (roots by
+//! an f32 rounding midpoint, margins `d·n`, `Δ`, `β² − 4αγ` near 0), by
+//! moving single inputs by a few ulps or by powers of two, keeping every
+//! move that does not lower the factor; exact sphere tangents, which no
+//! one-input move keeps tangent, are sampled instead. The committed cases
+//! are seeds too, so each run goes on from the best found so far.
+//!
+//! Regenerate the cases (about ten minutes) with
+//!
+//! ```text
+//! RAYORACLE_BOUNDS_SEARCH=300000 cargo test --test all bounds_search -- --nocapture
+//! ```
+//!
+//! which writes `fixtures/bounds/{plane,sphere,quadric}.jsonl`: the best
+//! case found per kernel and quantity, and up to seven more whose factor
+//! is at least 1/8. Without the variable the test runs a short search and
+//! checks that it climbs.
+#![cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+
+use glam::Vec3;
+use rand::rngs::SmallRng;
+use rand::{Rng, SeedableRng};
+use rayoracle::Ray;
+use rayoracle::case::Case;
+use rayoracle::hit::Intersection;
+use rayoracle::plane::{self, Plane};
+use rayoracle::quadric::{self, Quadric};
+use rayoracle::sphere::{self, Sphere};
+
+/// What a wrong answer got wrong first: the class, or root `i` (ascending).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Quantity {
+    /// The class.
+    Class,
+    /// A root, the class being right.
+    Root(usize),
+}
+
+impl Quantity {
+    /// `class`, `root0` or `root1`.
+    pub fn name(self) -> String {
+        match self {
+            Quantity::Class => "class".into(),
+            Quantity::Root(i) => format!("root{i}"),
+        }
+    }
+}
+
+/// A class and root bits.
+type Answer = (&'static str, Vec<u32>);
+
+fn answer(h: &impl Intersection) -> Answer {
+    let r = h.roots();
+    (
+        h.class(),
+        r.as_slice().iter().map(|t| t.to_bits()).collect(),
+    )
+}
+
+/// The oracle's answer (`None` for a non-finite case).
+pub fn exact(case: &Case) -> Option<Answer> {
+    match case {
+        Case::Plane(r, p) => plane::exact::intersect(r, p).ok().map(|h| answer(&h)),
+        Case::Sphere(r, s) => sphere::exact::intersect(r, s).ok().map(|h| answer(&h)),
+        Case::Quadric(r, q) => quadric::exact::intersect(r, q).ok().map(|h| answer(&h)),
+        Case::Camera(..) => None,
+    }
+}
+
+/// The reference's answer with its filter's bounds multiplied by `s`.
+fn shrunk(case: &Case, s: f64) -> Answer {
+    match case {
+        Case::Plane(r, p) => answer(&plane::reference::intersect_shrunk(r, p, s).0),
+        Case::Sphere(r, sp) => answer(&sphere::reference::intersect_shrunk(r, sp, s).0),
+        Case::Quadric(r, q) => answer(&quadric::reference::intersect_shrunk(r, q, s).0),
+        Case::Camera(..) => unreachable!("no camera filter"),
+    }
+}
+
+/// What the kernel with bounds times `s` gets wrong, if anything.
+pub fn wrong_in(case: &Case, exact: &Answer, s: f64) -> Option<Quantity> {
+    let got = shrunk(case, s);
+    if got.0 != exact.0 {
+        return Some(Quantity::Class);
+    }
+    (0..exact.1.len())
+        .find(|&i| got.1[i] != exact.1[i])
+        .map(Quantity::Root)
+}
+
+/// The critical factor's `log₂` for quantity `q`, to within 2⁻¹²: the
+/// largest `s` in `[2⁻⁴⁰, 1]` at which `q` comes out wrong (by bisection,
+/// as wrong answers grow with the shrinking); `None` if it is right at
+/// `2⁻⁴⁰`.
+pub fn critical_log2(case: &Case, exact: &Answer, q: Quantity) -> Option<f64> {
+    let wrong = |l: f64| wrong_in(case, exact, l.exp2()) == Some(q);
+    let (mut lo, mut hi) = (-40.0, 0.0);
+    if !wrong(lo) {
+        return None;
+    }
+    if wrong(hi) {
+        return Some(0.0);
+    }
+    while hi - lo > 1.0 / 4096.0 {
+        let mid = 0.5 * (lo + hi);
+        if wrong(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(lo)
+}
+
+/// A case's inputs, in the order of the `eval` fields.
+pub fn fields(case: &Case) -> Vec<f32> {
+    let flat = |vs: &[Vec3]| vs.iter().flat_map(|x| x.to_array()).collect::<Vec<f32>>();
+    match case {
+        Case::Plane(r, p) => flat(&[r.origin, r.dir, p.point, p.normal]),
+        Case::Sphere(r, s) => [flat(&[r.origin, r.dir, s.center]), vec![s.radius]].concat(),
+        Case::Quadric(r, q) => [flat(&[r.origin, r.dir]), q.coeffs.to_vec()].concat(),
+        Case::Camera(..) => Vec::new(),
+    }
+}
+
+/// The case of `kind` with these inputs.
+pub fn from_fields(kind: &str, v: &[f32]) -> Case {
+    let at = |i: usize| Vec3::new(v[i], v[i + 1], v[i + 2]);
+    let ray = Ray::new(at(0), at(3));
+    match kind {
+        "plane" => Case::Plane(ray, Plane::new(at(6), at(9))),
+        "sphere" => Case::Sphere(ray, Sphere::new(at(6), v[9])),
+        _ => Case::Quadric(ray, Quadric::new(v[6..16].try_into().expect("ten"))),
+    }
+}
+
+/// The case as one `eval` line, every input as its bits.
+pub fn to_line(case: &Case, family: &str) -> String {
+    let v = fields(case);
+    let hex = |xs: &[f32]| {
+        let s: Vec<String> = xs
+            .iter()
+            .map(|x| format!("\"{:#010x}\"", x.to_bits()))
+            .collect();
+        format!("[{}]", s.join(","))
+    };
+    let head = format!(
+        r#"{{"kind":"{}","family":"{family}","origin":{},"dir":{}"#,
+        case.kind(),
+        hex(&v[0..3]),
+        hex(&v[3..6])
+    );
+    match case {
+        Case::Plane(..) => format!(
+            r#"{head},"point":{},"normal":{}}}"#,
+            hex(&v[6..9]),
+            hex(&v[9..12])
+        ),
+        Case::Sphere(..) => format!(
+            r#"{head},"center":{},"radius":"{:#010x}"}}"#,
+            hex(&v[6..9]),
+            v[9].to_bits()
+        ),
+        _ => format!(r#"{head},"coeffs":{}}}"#, hex(&v[6..16])),
+    }
+}
+
+/// An f32 with a random 24-bit significand in `[2^e, 2^(e+1))`.
+fn mant(rng: &mut SmallRng, e: i32) -> f32 {
+    (1.0 + rng.random_range(0..1u32 << 23) as f32 / 8388608.0) * 2f32.powi(e)
+}
+
+/// [`mant`] with `e` drawn from `lo..hi`.
+fn mant_in(rng: &mut SmallRng, lo: i32, hi: i32) -> f32 {
+    let e = rng.random_range(lo..hi);
+    mant(rng, e)
+}
+
+/// Planes whose root is an f32 rounding midpoint plus a tiny offset: `d =
+/// x̂`, `n = (1, ulp/2, ε)`, `a = (x, 1, ±1)`, so `t = x + ulp(x)/2 ± ε`;
+/// and near-parallel planes, `d·n` a few roundings of its terms from 0.
+pub fn plane_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
+    (0..n)
+        .map(|i| {
+            if i % 2 == 0 {
+                let e = rng.random_range(-20..20);
+                let x = mant(rng, e);
+                let half_ulp = 2f32.powi(e - 24);
+                let k = rng.random_range(40..56);
+                let eps = mant(rng, e - k);
+                let sign = if rng.random() { 1.0 } else { -1.0 };
+                let o = Vec3::new(rng.random_range(-4.0..4.0), 0.0, 0.0);
+                let ray = Ray::new(o, Vec3::X);
+                let p = Plane::new(Vec3::new(x + o.x, 1.0, sign), Vec3::new(1.0, half_ulp, eps));
+                Case::Plane(ray, p)
+            } else {
+                // d·n = x·y − x·y' + z·w with y − y' one ulp and z·w tiny.
+                let (x, y) = (mant(rng, 0), mant(rng, 0));
+                let y2 = f32::from_bits(y.to_bits() + 1);
+                let e = rng.random_range(-60..-40);
+                let w = mant(rng, e);
+                let d = Vec3::new(x, x, 1.0);
+                let n = Vec3::new(y, -y2, w);
+                let o = Vec3::new(mant(rng, 2), mant(rng, 2), mant(rng, 2));
+                Case::Plane(Ray::new(o, d), Plane::new(Vec3::ZERO, n))
+            }
+        })
+        .collect()
+}
+
+/// Spheres grazed at a relative miss distance of 10⁻² to 10⁻⁹, from
+/// distances of 1 to 10⁶ radii; and exact tangents: `f = o − C = (R, 0,
+/// z)` along `d = (0, 0, d_z)`, where `Δ = 0` but `|f|²` rounds, and
+/// `f = (R, 3k, 4k)` along `(0, 3, 4)`, where `f̂` rounds too.
+pub fn sphere_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
+    (0..n)
+        .map(|i| {
+            if i % 4 == 3 {
+                return sphere_tangent(rng);
+            }
+            if i % 2 == 1 {
+                let e = rng.random_range(-10..10);
+                let r = mant(rng, e);
+                let cx = mant_in(rng, e - 3, e + 3);
+                let c = Vec3::new(cx, mant(rng, e), 0.0);
+                let oz = mant_in(rng, e + 5, e + 25);
+                let o = Vec3::new(c.x + r, c.y, -oz);
+                let r = o.x - c.x;
+                let d = Vec3::new(0.0, 0.0, mant_in(rng, -5, 5));
+                return Case::Sphere(Ray::new(o, d), Sphere::new(c, r));
+            }
+            let r = 10f32.powf(rng.random_range(-3.0..3.0));
+            let dist = r * 10f32.powf(rng.random_range(0.3..6.0));
+            let miss = 1.0 + rng.random_range(-1.0..1.0) * 10f32.powf(rng.random_range(-9.0..-2.0));
+            let c = Vec3::new(rng.random_range(-10.0..10.0), 0.0, 0.0);
+            let o = c + Vec3::new(0.0, r * miss, -dist);
+            let d = Vec3::new(rng.random_range(-1e-3..1e-3), 0.0, 1.0);
+            Case::Sphere(Ray::new(o, d), Sphere::new(c, r))
+        })
+        .collect()
+}
+
+/// An exact tangent whose `f̂` rounds: `f = (R, 3k, 4k)` and `d = (0, 3s,
+/// 4s)` give `f × d = (0, −4Rs, 3Rs)`, so `|f × d| = R|d|` and `Δ = 0`;
+/// `k = w − m` with `w` and `m` 2²⁰ to 2⁶⁰ apart, so that `f̂ = fl(o − C)`
+/// rounds, and differently in `y` and `z`.
+pub fn sphere_tangent(rng: &mut SmallRng) -> Case {
+    let small = |rng: &mut SmallRng, e: i32| {
+        (rng.random_range(1u32 << 20..1 << 21) as f32) * 2f32.powi(e - 20)
+    };
+    let (eo, ec) = (rng.random_range(-30..-10), rng.random_range(10..30));
+    let (w, m, sd) = (small(rng, eo), small(rng, ec), small(rng, 0));
+    let (er, ex) = (rng.random_range(-5..5), rng.random_range(-5..5));
+    let (r, cx) = (small(rng, er), small(rng, ex));
+    let o = Vec3::new(cx + r, 3.0 * w, 4.0 * w);
+    let c = Vec3::new(cx, 3.0 * m, 4.0 * m);
+    let d = Vec3::new(0.0, 3.0 * sd, 4.0 * sd);
+    Case::Sphere(Ray::new(o, d), Sphere::new(c, o.x - cx))
+}
+
+/// The best of `n` [`sphere_tangent`]s for the sphere's class: moving one
+/// input by an ulp would leave the tangent, so this family is sampled,
+/// not climbed.
+pub fn sphere_tangent_search(seed: u64, n: usize) -> Vec<Found> {
+    let mut rng = SmallRng::seed_from_u64(seed);
+    let q = Quantity::Class;
+    let mut out: Vec<Found> = (0..n)
+        .filter_map(|_| {
+            let c = sphere_tangent(&mut rng);
+            let log2 = critical_log2(&c, &exact(&c)?, q)?;
+            Some(Found {
+                case: c,
+                quantity: q,
+                log2,
+            })
+        })
+        .collect();
+    out.sort_by(|a, b| b.log2.total_cmp(&a.log2));
+    out.truncate(8);
+    out
+}
+
+/// Cylinders `x² + y² = 1` grazed at a relative miss of 10⁻² to 10⁻⁹, and
+/// rays nearly along their axis.
+pub fn quadric_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
+    let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+    (0..n)
+        .map(|i| {
+            let miss = 1.0 + rng.random_range(-1.0..1.0) * 10f32.powf(rng.random_range(-9.0..-2.0));
+            let ray = if i % 2 == 0 {
+                let o = Vec3::new(-10f32.powf(rng.random_range(0.5..5.0)), miss, 0.0);
+                Ray::new(o, Vec3::new(1.0, 0.0, rng.random_range(-1.0..1.0)))
+            } else {
+                let tilt = 10f32.powf(rng.random_range(-8.0..-1.0));
+                Ray::new(Vec3::new(0.0, miss * 0.5, 0.0), Vec3::new(tilt, 0.0, 1.0))
+            };
+            Case::Quadric(ray, cyl)
+        })
+        .collect()
+}
+
+/// The seeds of a kind: its generated cases, the stiff catalogue's, and
+/// (if `go_on`) the committed ones.
+pub fn seeds(kind: &str, rng: &mut SmallRng, n: usize, go_on: bool) -> Vec<Case> {
+    let mut out = match kind {
+        "plane" => plane_seeds(rng, n),
+        "sphere" => sphere_seeds(rng, n),
+        _ => quadric_seeds(rng, n),
+    };
+    let cat = rayoracle::report::Catalogue::builtin().expect("the built-in catalogue");
+    for f in cat.families.iter().filter(|f| f.name.starts_with(kind)) {
+        out.extend(f.cases.iter().cloned());
+    }
+    if go_on {
+        out.extend(committed(kind));
+    }
+    out
+}
+
+/// The cases of `fixtures/bounds/{kind}.jsonl`, so that a new search goes
+/// on from the best found so far.
+pub fn committed(kind: &str) -> Vec<Case> {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join(format!("fixtures/bounds/{kind}.jsonl"));
+    let text = std::fs::read_to_string(path).unwrap_or_default();
+    text.lines()
+        .filter_map(|l| rayoracle::case::parse_line(l).ok())
+        .map(|c| c.case)
+        .collect()
+}
+
+/// One move: a random input nudged by a few ulps (up to 2²⁴), scaled by
+/// a power of two, or given fresh low bits.
+fn mutate(rng: &mut SmallRng, v: &mut [f32]) {
+    let i = rng.random_range(0..v.len());
+    let x = v[i];
+    v[i] = match rng.random_range(0..8) {
+        0 => x * 2f32.powi(rng.random_range(-2..=2)),
+        1 => {
+            let bits = rng.random_range(1..12);
+            f32::from_bits(x.to_bits() ^ rng.random_range(0..1u32 << bits))
+        }
+        _ => {
+            let top = rng.random_range(0..24);
+            let width = rng.random_range(0..=top);
+            let k = 1i64 << width;
+            let step = rng.random_range(1..=k) * if rng.random() { 1 } else { -1 };
+            f32::from_bits((x.to_bits() as i64 + step).clamp(0, u32::MAX as i64) as u32)
+        }
+    };
+}
+
+/// A case found for a quantity, with its critical factor's `log₂`.
+#[derive(Clone, Debug)]
+pub struct Found {
+    /// The case.
+    pub case: Case,
+    /// The quantity it gets wrong.
+    pub quantity: Quantity,
+    /// `log₂` of the largest factor at which it is wrong.
+    pub log2: f64,
+}
+
+/// Hill-climbs from `start` for `steps` moves, maximising the critical
+/// factor of `q`; returns every improvement (the last is the best).
+pub fn climb(rng: &mut SmallRng, start: &Case, q: Quantity, steps: usize) -> Vec<Found> {
+    let kind = start.kind();
+    let score = |c: &Case| exact(c).and_then(|e| critical_log2(c, &e, q));
+    let Some(mut best) = score(start) else {
+        return Vec::new();
+    };
+    let mut cur = fields(start);
+    let mut out = vec![Found {
+        case: start.clone(),
+        quantity: q,
+        log2: best,
+    }];
+    for _ in 0..steps {
+        let mut next = cur.clone();
+        for _ in 0..rng.random_range(1..=2) {
+            mutate(rng, &mut next);
+        }
+        if next.iter().any(|x| !x.is_finite()) {
+            continue;
+        }
+        let c = from_fields(kind, &next);
+        if let Some(s) = score(&c).filter(|&s| s >= best) {
+            if s > best {
+                out.push(Found {
+                    case: c,
+                    quantity: q,
+                    log2: s,
+                });
+            }
+            best = s;
+            cur = next;
+        }
+    }
+    out
+}
+
+/// The quantities each kernel certifies with a bound that can be too
+/// small. The plane's class is not among them: its products `dᵢnᵢ` are
+/// exact in f64, so only the two additions of `d·n` round, and a computed
+/// `d·n` never has the wrong sign. (For the sum `fl(fl(p₀ + p₁) + p₂)` to
+/// cross 0, `p₂` must nearly cancel `F = fl(p₀ + p₁)`; a product of two
+/// f32 values has 48 significant bits, so then `F + p₂` is a multiple of
+/// `ulp(F)`, and either it is 0, computed exactly as 0, or it outweighs
+/// the rounding of `F`, at most `ulp(F)/2`.)
+pub fn quantities(kind: &str) -> &'static [Quantity] {
+    match kind {
+        "plane" => &[Quantity::Root(0)],
+        _ => &[Quantity::Class, Quantity::Root(0), Quantity::Root(1)],
+    }
+}
+
+/// The search for one kind: seeds (the committed cases among them if
+/// `go_on`) scored per quantity, the best `starts` of each climbed for
+/// `steps` moves; every improvement found, best first per quantity.
+pub fn search(
+    kind: &str,
+    seed: u64,
+    (pool, starts, steps): (usize, usize, usize),
+    go_on: bool,
+) -> Vec<Found> {
+    let mut rng = SmallRng::seed_from_u64(seed);
+    let seeds = seeds(kind, &mut rng, pool, go_on);
+    let mut out = Vec::new();
+    for &q in quantities(kind) {
+        let mut scored: Vec<(f64, &Case)> = seeds
+            .iter()
+            .filter_map(|c| Some((critical_log2(c, &exact(c)?, q)?, c)))
+            .collect();
+        scored.sort_by(|a, b| b.0.total_cmp(&a.0));
+        let mut found: Vec<Found> = scored
+            .iter()
+            .take(starts)
+            .flat_map(|(_, c)| climb(&mut rng, c, q, steps))
+            .collect();
+        found.sort_by(|a, b| b.log2.total_cmp(&a.log2));
+        out.extend(found);
+    }
+    out
+}
+
+/// A short search climbs: from the seeds' best, each root reaches a
+/// higher critical factor, at least 1/128.
+#[test]
+fn the_search_climbs_and_regenerates_the_fixtures_on_request() {
+    let budget: Option<usize> = std::env::var("RAYORACLE_BOUNDS_SEARCH")
+        .ok()
+        .and_then(|v| v.parse().ok());
+    for (i, kind) in ["plane", "sphere", "quadric"].into_iter().enumerate() {
+        let (pool, starts, steps) = match budget {
+            Some(n) => (8192, 8, n),
+            None => (256, 1, 150),
+        };
+        let mut found = search(
+            kind,
+            0x5eed + i as u64,
+            (pool, starts, steps),
+            budget.is_some(),
+        );
+        if kind == "sphere" {
+            found.extend(sphere_tangent_search(
+                0x7a9,
+                budget.map_or(2_000, |n| n * 2),
+            ));
+            found.sort_by(|a, b| b.log2.total_cmp(&a.log2));
+        }
+        for &q in quantities(kind) {
+            let of_q: Vec<&Found> = found.iter().filter(|f| f.quantity == q).collect();
+            let best = of_q.first().map_or(f64::NEG_INFINITY, |f| f.log2);
+            let first = of_q.iter().map(|f| f.log2).fold(f64::INFINITY, f64::min);
+            println!("{kind} {}: from 2^{first:.2} to 2^{best:.2}", q.name());
+            if q != Quantity::Class {
+                assert!(best >= -7.0, "{kind} {}: best 2^{best}", q.name());
+                assert!(best > first, "{kind} {}: no climb", q.name());
+            }
+        }
+        if budget.is_some() {
+            let mut lines = Vec::new();
+            for &q in quantities(kind) {
+                let of_q = found.iter().filter(|f| f.quantity == q);
+                for (j, f) in of_q.enumerate() {
+                    if j == 0 || (j < 8 && f.log2 >= -3.0) {
+                        lines.push(to_line(&f.case, &format!("bounds/{kind}/{}", q.name())));
+                    }
+                }
+            }
+            lines.dedup();
+            let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/bounds");
+            std::fs::create_dir_all(&dir).expect("fixtures/bounds");
+            std::fs::write(dir.join(format!("{kind}.jsonl")), lines.join("\n") + "\n")
+                .expect("write the cases");
+        }
+    }
+}
