@@ -30,6 +30,8 @@ pub mod scale;
 pub use ff::Ff;
 pub use lane::Lane;
 pub use real::Real;
+#[cfg(target_arch = "x86_64")]
+pub mod avx;
 pub mod certify;
 pub mod real;
 pub mod tracked;

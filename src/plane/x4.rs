@@ -3,9 +3,12 @@
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
 use super::{Plane, PlaneHit, kernel, reference};
+#[cfg(target_arch = "x86_64")]
+use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
-use crate::num::real::{F64x4, M4, Real};
+use crate::num::real::{F64x4, Real4};
 use crate::ray4::{Ray4, gather3, scatter3};
+use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
 
 /// Four planes, structure-of-arrays.
@@ -84,56 +87,97 @@ pub struct PlaneHit4 {
 /// ```
 #[inline]
 pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
-    let w = |v: f32x4| F64x4::from_f32(v.to_array());
+    #[cfg(target_arch = "x86_64")]
+    if let Some(avx2) = Avx2::detect() {
+        return intersect_avx2(avx2, ray, p);
+    }
+    intersect_baseline(ray, p)
+}
+
+/// [`intersect`] on the baseline lanes, [`F64x4`]: two SSE2 registers in a
+/// default x86-64 build.
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, plane::{Plane, PlaneHit, x4}};
+/// use glam::Vec3;
+/// let r = Ray4::splat(Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::new(1.0, -4.0, 0.0)));
+/// let h = x4::intersect_baseline(&r, &x4::Plane4::splat(&Plane::new(Vec3::ZERO, Vec3::Y)));
+/// assert_eq!(h.lanes(), [PlaneHit::Hit(0.5); 4]);
+/// ```
+#[inline]
+pub fn intersect_baseline(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+    intersect_in::<F64x4>(ray, p)
+}
+
+/// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
+/// and entered with the token that proves them. The same bits as
+/// [`intersect_baseline`].
+///
+/// ```
+/// use rayoracle::{Ray, num::avx::Avx2, ray4::Ray4, plane::{Plane, x4}};
+/// use glam::Vec3;
+/// let r = Ray4::splat(Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::new(0.1, -3.0, 0.0)));
+/// let p = x4::Plane4::splat(&Plane::new(Vec3::ZERO, Vec3::Y));
+/// if let Some(avx2) = Avx2::detect() {
+///     assert_eq!(x4::intersect_avx2(avx2, &r, &p).lanes(), x4::intersect_baseline(&r, &p).lanes());
+/// }
+/// ```
+#[cfg(target_arch = "x86_64")]
+#[inline]
+pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+    #[target_feature(enable = "avx2,fma")]
+    fn run(_: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+        intersect_in::<Avx4>(ray, p)
+    }
+    // SAFETY: the token exists only where AVX2 and FMA were detected.
+    unsafe { run(avx2, ray, p) }
+}
+
+/// The kernel over any four-lane [`Real4`].
+#[inline(always)]
+fn intersect_in<L: Real4>(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
     let f = kernel::filter(
-        ray.origin.map(w),
-        ray.dir.map(w),
-        p.point.map(w),
-        p.normal.map(w),
+        ray.origin.map(L::widen),
+        ray.dir.map(L::widen),
+        p.point.map(L::widen),
+        p.normal.map(L::widen),
         1.0,
     );
     let hit = f.hit & certify(f.t, f.r, f.a);
-    let (h, par) = (hit.lanes(), f.parallel.lanes());
-    let class = |i: usize| {
-        if h[i] {
-            0
-        } else if par[i] {
-            1
-        } else {
-            2
-        }
-    };
-    let mut out = PlaneHit4 {
-        class: i32x4::from([0, 1, 2, 3].map(class)),
-        t: f32x4::from(F64x4::select(hit, f.t, F64x4::splat(f64::NAN)).to_f32()),
-    };
-    let done = (hit | f.parallel | f.in_plane).only_if(subnormals_work());
-    if !done.all() {
-        out.settle(done, ray, p);
+    let (h, par) = (L::mask_i32(hit), L::mask_i32(f.parallel));
+    // 0 where hit, else 1 where parallel, else 2.
+    let class = h.select(i32x4::ZERO, i32x4::splat(2) + par);
+    let t = L::select(hit, f.t, L::splat(f64::NAN)).narrow();
+    let done = hit | f.parallel | f.in_plane;
+    if L::all(done) && subnormals_work() {
+        PlaneHit4 { class, t }
+    } else {
+        PlaneHit4::settle([class, cast(t)], L::mask_i32(done), ray, p)
     }
-    out
 }
 
 impl PlaneHit4 {
-    /// Replaces every lane not `done` with the scalar stages' answer.
+    /// Replaces every lane not `done` (and, with subnormals flushed, every
+    /// lane) with the scalar stages' answer.
     #[cold]
     #[inline(never)]
-    fn settle(&mut self, done: M4, ray: &Ray4, p: &Plane4) {
+    fn settle(h: [i32x4; 2], done: i32x4, ray: &Ray4, p: &Plane4) -> Self {
+        let (class, t): (i32x4, f32x4) = (h[0], cast(h[1]));
         let rays = ray.to_rays();
         let (a, n) = (scatter3(p.point), scatter3(p.normal));
-        let (mut class, mut t) = (self.class.to_array(), self.t.to_array());
-        let done = done.lanes();
-        for i in (0..4).filter(|&i| !done[i]) {
+        let (mut class, mut t) = (class.to_array(), t.to_array());
+        let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
+        for i in (0..4).filter(|&i| done[i] == 0) {
             (class[i], t[i]) = match reference::escalate(&rays[i], &Plane::new(a[i], n[i])).0 {
                 PlaneHit::Hit(x) => (0, x),
                 PlaneHit::Parallel => (1, f32::NAN),
                 PlaneHit::InPlane => (2, f32::NAN),
             };
         }
-        *self = PlaneHit4 {
+        PlaneHit4 {
             class: i32x4::from(class),
             t: f32x4::from(t),
-        };
+        }
     }
 
     /// The four results as scalar values.

@@ -3,9 +3,12 @@
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
 use super::{Quadric, QuadricHit, kernel, reference};
+#[cfg(target_arch = "x86_64")]
+use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
-use crate::num::real::{F64x4, M4, Real};
+use crate::num::real::{F64x4, Real4};
 use crate::ray4::Ray4;
+use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
 
 /// Four quadrics, structure-of-arrays: one `f32x4` per coefficient.
@@ -86,55 +89,105 @@ pub struct QuadricHit4 {
 /// ```
 #[inline]
 pub fn intersect(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
-    let w = |v: f32x4| F64x4::from_f32(v.to_array());
-    let f = kernel::filter(&q.coeffs.map(w), ray.origin.map(w), ray.dir.map(w), 1.0);
+    #[cfg(target_arch = "x86_64")]
+    if let Some(avx2) = Avx2::detect() {
+        return intersect_avx2(avx2, ray, q);
+    }
+    intersect_baseline(ray, q)
+}
+
+/// [`intersect`] on the baseline lanes, [`F64x4`]: two SSE2 registers in a
+/// default x86-64 build.
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, quadric::{Quadric, QuadricHit, x4}};
+/// use glam::Vec3;
+/// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+/// let r = Ray4::splat(Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X));
+/// assert_eq!(x4::intersect_baseline(&r, &x4::Quadric4::splat(&cyl)).lanes(), [QuadricHit::Two(4.0, 6.0); 4]);
+/// ```
+#[inline]
+pub fn intersect_baseline(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
+    intersect_in::<F64x4>(ray, q)
+}
+
+/// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
+/// and entered with the token that proves them. The same bits as
+/// [`intersect_baseline`].
+///
+/// ```
+/// use rayoracle::{Ray, num::avx::Avx2, ray4::Ray4, quadric::{Quadric, x4}};
+/// use glam::Vec3;
+/// let cyl = x4::Quadric4::splat(&Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]));
+/// let r = Ray4::splat(Ray::new(Vec3::new(-5.0, 0.3, 0.0), Vec3::new(1.0, 0.1, 0.0)));
+/// if let Some(avx2) = Avx2::detect() {
+///     assert_eq!(x4::intersect_avx2(avx2, &r, &cyl).lanes(), x4::intersect_baseline(&r, &cyl).lanes());
+/// }
+/// ```
+#[cfg(target_arch = "x86_64")]
+#[inline]
+pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
+    #[target_feature(enable = "avx2,fma")]
+    fn run(_: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
+        intersect_in::<Avx4>(ray, q)
+    }
+    // SAFETY: the token exists only where AVX2 and FMA were detected.
+    unsafe { run(avx2, ray, q) }
+}
+
+/// The kernel over any four-lane [`Real4`].
+#[inline(always)]
+fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
+    let (w, c) = (L::widen, &q.coeffs);
+    // Written out: `map` over ten lanes is not always inlined, and out of
+    // line the AVX conversion would be a call.
+    let k = [
+        w(c[0]),
+        w(c[1]),
+        w(c[2]),
+        w(c[3]),
+        w(c[4]),
+        w(c[5]),
+        w(c[6]),
+        w(c[7]),
+        w(c[8]),
+        w(c[9]),
+    ];
+    let f = kernel::filter(&k, ray.origin.map(w), ray.dir.map(w), 1.0);
     let ok1 = certify(f.t1, f.r1, f.a1);
     let two = f.two & certify(f.t0, f.r0, f.a0) & ok1;
     let one = f.linear & ok1;
     // Disjoint enclosures are in the exact order; overlapping ones round
     // to the same f32. The linear root is t1.
     let swap = (two & f.t0.gt(f.t1)) | one;
-    let nan = F64x4::splat(f64::NAN);
-    let lo = F64x4::select(two | one, F64x4::select(swap, f.t1, f.t0), nan);
-    let hi = F64x4::select(two, F64x4::select(swap, f.t0, f.t1), lo);
-    let (t, o, a) = (two.lanes(), one.lanes(), f.all.lanes());
-    let class = |i: usize| {
-        if t[i] {
-            2
-        } else if o[i] {
-            1
-        } else if a[i] {
-            3
-        } else {
-            0
-        }
-    };
-    let mut out = QuadricHit4 {
-        class: i32x4::from([0, 1, 2, 3].map(class)),
-        t0: f32x4::from(lo.to_f32()),
-        t1: f32x4::from(hi.to_f32()),
-    };
-    let done = (two | one | f.none | f.all).only_if(subnormals_work());
-    if !done.all() {
-        out.settle(done, ray, q);
+    let nan = L::splat(f64::NAN);
+    let lo = L::select(two | one, L::select(swap, f.t1, f.t0), nan);
+    let hi = L::select(two, L::select(swap, f.t0, f.t1), lo);
+    let (t, o, a) = (L::mask_i32(two), L::mask_i32(one), L::mask_i32(f.all));
+    let k = i32x4::splat;
+    let class = t.select(k(2), o.select(k(1), a & k(3)));
+    let (t0, t1) = (lo.narrow(), hi.narrow());
+    let done = two | one | f.none | f.all;
+    if L::all(done) && subnormals_work() {
+        QuadricHit4 { class, t0, t1 }
+    } else {
+        QuadricHit4::settle([class, cast(t0), cast(t1)], L::mask_i32(done), ray, q)
     }
-    out
 }
 
 impl QuadricHit4 {
-    /// Replaces every lane not `done` with the scalar stages' answer.
+    /// Replaces every lane not `done` (and, with subnormals flushed, every
+    /// lane) with the scalar stages' answer.
     #[cold]
     #[inline(never)]
-    fn settle(&mut self, done: M4, ray: &Ray4, q: &Quadric4) {
+    fn settle(h: [i32x4; 3], done: i32x4, ray: &Ray4, q: &Quadric4) -> Self {
+        let [class, t0, t1] = h;
+        let (t0, t1): (f32x4, f32x4) = (cast(t0), cast(t1));
         let rays = ray.to_rays();
         let k = q.coeffs.map(|c| c.to_array());
-        let (mut class, mut t0, mut t1) = (
-            self.class.to_array(),
-            self.t0.to_array(),
-            self.t1.to_array(),
-        );
-        let done = done.lanes();
-        for i in (0..4).filter(|&i| !done[i]) {
+        let (mut class, mut t0, mut t1) = (class.to_array(), t0.to_array(), t1.to_array());
+        let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
+        for i in (0..4).filter(|&i| done[i] == 0) {
             let quadric = Quadric::new(k.map(|c| c[i]));
             (class[i], t0[i], t1[i]) = match reference::escalate(&rays[i], &quadric).0 {
                 QuadricHit::None => (0, f32::NAN, f32::NAN),
@@ -143,11 +196,11 @@ impl QuadricHit4 {
                 QuadricHit::All => (3, f32::NAN, f32::NAN),
             };
         }
-        *self = QuadricHit4 {
+        QuadricHit4 {
             class: i32x4::from(class),
             t0: f32x4::from(t0),
             t1: f32x4::from(t1),
-        };
+        }
     }
 
     /// The four results as scalar values.

@@ -3,9 +3,12 @@
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
 use super::{Sphere, SphereHit, kernel, reference};
+#[cfg(target_arch = "x86_64")]
+use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
-use crate::num::real::{F64x4, M4, Real};
+use crate::num::real::{F64x4, Real4};
 use crate::ray4::{Ray4, gather3, scatter3};
+use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
 
 /// Four spheres, structure-of-arrays (often the same sphere four times).
@@ -86,47 +89,91 @@ pub struct SphereHit4 {
 /// ```
 #[inline]
 pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-    let w = |v: f32x4| F64x4::from_f32(v.to_array());
+    #[cfg(target_arch = "x86_64")]
+    if let Some(avx2) = Avx2::detect() {
+        return intersect_avx2(avx2, ray, s);
+    }
+    intersect_baseline(ray, s)
+}
+
+/// [`intersect`] on the baseline lanes, [`F64x4`]: two SSE2 registers in a
+/// default x86-64 build.
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, sphere::{Sphere, SphereHit, x4}};
+/// use glam::Vec3;
+/// let r = Ray4::splat(Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z));
+/// let h = x4::intersect_baseline(&r, &x4::Sphere4::splat(&Sphere::new(Vec3::ZERO, 1.0)));
+/// assert_eq!(h.lanes(), [SphereHit::Two(4.0, 6.0); 4]);
+/// ```
+#[inline]
+pub fn intersect_baseline(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+    intersect_in::<F64x4>(ray, s)
+}
+
+/// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
+/// and entered with the token that proves them. The same bits as
+/// [`intersect_baseline`].
+///
+/// ```
+/// use rayoracle::{Ray, num::avx::Avx2, ray4::Ray4, sphere::{Sphere, x4}};
+/// use glam::Vec3;
+/// let r = Ray4::splat(Ray::new(Vec3::new(0.3, 0.1, -5.0), Vec3::Z));
+/// let s = x4::Sphere4::splat(&Sphere::new(Vec3::ZERO, 1.0));
+/// if let Some(avx2) = Avx2::detect() {
+///     assert_eq!(x4::intersect_avx2(avx2, &r, &s).lanes(), x4::intersect_baseline(&r, &s).lanes());
+/// }
+/// ```
+#[cfg(target_arch = "x86_64")]
+#[inline]
+pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+    #[target_feature(enable = "avx2,fma")]
+    fn run(_: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+        intersect_in::<Avx4>(ray, s)
+    }
+    // SAFETY: the token exists only where AVX2 and FMA were detected.
+    unsafe { run(avx2, ray, s) }
+}
+
+/// The kernel over any four-lane [`Real4`].
+#[inline(always)]
+fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
     let f = kernel::filter(
-        ray.origin.map(w),
-        ray.dir.map(w),
-        s.center.map(w),
-        w(s.radius),
+        ray.origin.map(L::widen),
+        ray.dir.map(L::widen),
+        s.center.map(L::widen),
+        L::widen(s.radius),
         1.0,
     );
     let two = f.two & certify(f.t0, f.r0, f.a0) & certify(f.t1, f.r1, f.a1);
     // Disjoint enclosures are in the exact order; overlapping ones round
     // to the same f32.
     let swap = f.t0.gt(f.t1);
-    let nan = F64x4::splat(f64::NAN);
-    let lo = F64x4::select(two, F64x4::select(swap, f.t1, f.t0), nan);
-    let hi = F64x4::select(two, F64x4::select(swap, f.t0, f.t1), nan);
-    let mut out = SphereHit4 {
-        class: i32x4::from(two.lanes().map(|m| if m { 2 } else { 0 })),
-        t0: f32x4::from(lo.to_f32()),
-        t1: f32x4::from(hi.to_f32()),
-    };
-    let done = (f.none | two).only_if(subnormals_work());
-    if !done.all() {
-        out.settle(done, ray, s);
+    let nan = L::splat(f64::NAN);
+    let lo = L::select(two, L::select(swap, f.t1, f.t0), nan);
+    let hi = L::select(two, L::select(swap, f.t0, f.t1), nan);
+    let (class, t0, t1) = (L::mask_i32(two) & i32x4::splat(2), lo.narrow(), hi.narrow());
+    let done = f.none | two;
+    if L::all(done) && subnormals_work() {
+        SphereHit4 { class, t0, t1 }
+    } else {
+        SphereHit4::settle([class, cast(t0), cast(t1)], L::mask_i32(done), ray, s)
     }
-    out
 }
 
 impl SphereHit4 {
-    /// Replaces every lane not `done` with the scalar stages' answer.
+    /// Replaces every lane not `done` (and, with subnormals flushed, every
+    /// lane) with the scalar stages' answer.
     #[cold]
     #[inline(never)]
-    fn settle(&mut self, done: M4, ray: &Ray4, s: &Sphere4) {
+    fn settle(h: [i32x4; 3], done: i32x4, ray: &Ray4, s: &Sphere4) -> Self {
+        let [class, t0, t1] = h;
+        let (t0, t1): (f32x4, f32x4) = (cast(t0), cast(t1));
         let rays = ray.to_rays();
         let (c, r) = (scatter3(s.center), s.radius.to_array());
-        let (mut class, mut t0, mut t1) = (
-            self.class.to_array(),
-            self.t0.to_array(),
-            self.t1.to_array(),
-        );
-        let done = done.lanes();
-        for i in (0..4).filter(|&i| !done[i]) {
+        let (mut class, mut t0, mut t1) = (class.to_array(), t0.to_array(), t1.to_array());
+        let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
+        for i in (0..4).filter(|&i| done[i] == 0) {
             let (k, a, b) = match reference::escalate(&rays[i], &Sphere::new(c[i], r[i])).0 {
                 SphereHit::None => (0, f32::NAN, f32::NAN),
                 SphereHit::Tangent(t) => (1, t, t),
@@ -134,11 +181,11 @@ impl SphereHit4 {
             };
             (class[i], t0[i], t1[i]) = (k, a, b);
         }
-        *self = SphereHit4 {
+        SphereHit4 {
             class: i32x4::from(class),
             t0: f32x4::from(t0),
             t1: f32x4::from(t1),
-        };
+        }
     }
 }
 
