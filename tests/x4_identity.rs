@@ -186,6 +186,48 @@ proptest! {
         }
     }
 
+    /// The batch entry points give, packet by packet, what `intersect`
+    /// gives, for any number of packets (odd ones included) and an output
+    /// slice of any length.
+    #[cfg(all(feature = "sphere", feature = "plane", feature = "quadric"))]
+    #[test]
+    fn packets_equal_one_packet_at_a_time(
+        spheres in prop::collection::vec(prop::array::uniform4(sphere_case()), 0..6),
+        planes in prop::collection::vec(prop::array::uniform4(plane_case()), 0..6),
+        quadrics in prop::collection::vec(prop::array::uniform4(quadric_case()), 0..6),
+        short in 0usize..2,
+    ) {
+        let r4 = |c: &[(Ray, Sphere); 4]| Ray4::from_rays(c.map(|c| c.0));
+        let rays: Vec<Ray4> = spheres.iter().map(r4).collect();
+        let s4 = sphere::x4::Sphere4::from_spheres(spheres.first().map_or([Sphere::new(Vec3::ZERO, 1.0); 4], |c| c.map(|c| c.1)));
+        let n = rays.len().saturating_sub(short);
+        let mut out = vec![sphere::x4::intersect(&Ray4::splat(Ray::new(Vec3::ZERO, Vec3::Z)), &s4); n];
+        sphere::x4::intersect_packets(&rays, &s4, &mut out);
+        for (r, h) in rays.iter().zip(&out) {
+            let want = sphere::x4::intersect(r, &s4);
+            prop_assert!(h.lanes().iter().zip(want.lanes().iter()).all(|(a, b)| same_bits(a, b)));
+        }
+
+        let rays: Vec<Ray4> = planes.iter().map(|c| Ray4::from_rays(c.map(|c| c.0))).collect();
+        let p4 = plane::x4::Plane4::from_planes(planes.first().map_or([Plane::new(Vec3::ZERO, Vec3::Y); 4], |c| c.map(|c| c.1)));
+        let mut out = vec![plane::x4::intersect(&Ray4::splat(Ray::new(Vec3::ZERO, Vec3::Z)), &p4); rays.len()];
+        plane::x4::intersect_packets(&rays, &p4, &mut out);
+        for (r, h) in rays.iter().zip(&out) {
+            let want = plane::x4::intersect(r, &p4);
+            prop_assert!(h.lanes().iter().zip(want.lanes().iter()).all(|(a, b)| same_bits(a, b)));
+        }
+
+        let rays: Vec<Ray4> = quadrics.iter().map(|c| Ray4::from_rays(c.map(|c| c.0))).collect();
+        let unit = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+        let q4 = quadric::x4::Quadric4::from_quadrics(quadrics.first().map_or([unit; 4], |c| c.map(|c| c.1)));
+        let mut out = vec![quadric::x4::intersect(&Ray4::splat(Ray::new(Vec3::ZERO, Vec3::Z)), &q4); rays.len()];
+        quadric::x4::intersect_packets(&rays, &q4, &mut out);
+        for (r, h) in rays.iter().zip(&out) {
+            let want = quadric::x4::intersect(r, &q4);
+            prop_assert!(h.lanes().iter().zip(want.lanes().iter()).all(|(a, b)| same_bits(a, b)));
+        }
+    }
+
     /// Tails of 1 to 3 rays: the helper must give exactly one result per ray,
     /// equal to the reference, whatever the length.
     #[cfg(feature = "sphere")]

@@ -6,7 +6,7 @@ use super::{Sphere, SphereHit, kernel, reference};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
-use crate::num::real::{F64x4, Real4};
+use crate::num::real::{F64x4, Pair, Real, Real4};
 use crate::ray4::{Ray4, gather3, scatter3};
 use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
@@ -108,7 +108,7 @@ pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 /// ```
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-    intersect_in::<F64x4>(ray, s)
+    intersect_in::<F64x4>(ray, s, subnormals_work)
 }
 
 /// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
@@ -129,36 +129,144 @@ pub fn intersect_baseline(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
     #[target_feature(enable = "avx2,fma")]
     fn run(_: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-        intersect_in::<Avx4>(ray, s)
+        intersect_in::<Avx4>(ray, s, subnormals_work)
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.
     unsafe { run(avx2, ray, s) }
 }
 
-/// The kernel over any four-lane [`Real4`].
+/// [`intersect`] over many packets: `out[i] = intersect(&rays[i], s)` for
+/// every `i` below the shorter length. The packets go through two at a
+/// time as eight lanes ([`Pair`]), which interleaves two independent
+/// chains of operations, and the floating-point environment is read once.
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, sphere::{Sphere, x4}};
+/// use glam::Vec3;
+/// let s = x4::Sphere4::splat(&Sphere::new(Vec3::ZERO, 1.0));
+/// let rays: Vec<Ray4> = (0..3).map(|i| Ray4::splat(Ray::new(Vec3::new(0.0, 0.3 * i as f32, -5.0), Vec3::Z))).collect();
+/// let mut out = vec![x4::intersect(&rays[0], &s); 3];
+/// x4::intersect_packets(&rays, &s, &mut out);
+/// for (r, h) in rays.iter().zip(&out) {
+///     assert_eq!(h.lanes(), x4::intersect(r, &s).lanes());
+/// }
+/// ```
+pub fn intersect_packets(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(avx2) = Avx2::detect() {
+        #[target_feature(enable = "avx2,fma")]
+        fn run(_: Avx2, rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
+            packets_in::<Avx4>(rays, s, out)
+        }
+        // SAFETY: the token exists only where AVX2 and FMA were detected.
+        return unsafe { run(avx2, rays, s, out) };
+    }
+    packets_in::<F64x4>(rays, s, out)
+}
+
+/// [`intersect_packets`] over any four-lane [`Real4`].
 #[inline(always)]
-fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-    let f = kernel::filter(
-        ray.origin.map(L::widen),
-        ray.dir.map(L::widen),
-        s.center.map(L::widen),
+fn packets_in<L: Real4>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
+    let env = subnormals_work();
+    let c = s.center.map(L::widen);
+    let (c2, r, r2) = (
+        c.map(|x| Pair(x, x)),
         L::widen(s.radius),
-        1.0,
+        Pair(L::widen(s.radius), L::widen(s.radius)),
     );
+    let len = rays.len().min(out.len());
+    let mut pairs = rays[..len].chunks_exact(2);
+    let mut outs = out[..len].chunks_exact_mut(2);
+    for (pk, o) in (&mut pairs).zip(&mut outs) {
+        let (o2, d2) = (
+            Pair::widen3(&pk[0].origin, &pk[1].origin),
+            Pair::widen3(&pk[0].dir, &pk[1].dir),
+        );
+        let [x, y] = decide(o2, d2, c2, r2).halves();
+        o[0] = finish(x, || env, &pk[0], s);
+        o[1] = finish(y, || env, &pk[1], s);
+    }
+    if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
+        let (o1, d1) = (one.origin.map(L::widen), one.dir.map(L::widen));
+        *o = finish(decide(o1, d1, c, r), || env, one, s);
+    }
+}
+
+/// What the lanes decide, before any conversion: the certified two-root
+/// lanes, the lanes done, and the sorted roots (NaN where none).
+struct Decided<L: Real> {
+    two: L::Mask,
+    done: L::Mask,
+    lo: L,
+    hi: L,
+}
+
+impl<L: Real> Decided<Pair<L>> {
+    #[inline(always)]
+    fn halves(self) -> [Decided<L>; 2] {
+        [
+            Decided {
+                two: self.two.0,
+                done: self.done.0,
+                lo: self.lo.0,
+                hi: self.hi.0,
+            },
+            Decided {
+                two: self.two.1,
+                done: self.done.1,
+                lo: self.lo.1,
+                hi: self.hi.1,
+            },
+        ]
+    }
+}
+
+/// The filter and [`certify`] over any [`Real`].
+#[inline(always)]
+fn decide<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L> {
+    let f = kernel::filter(o, d, c, r, 1.0);
     let two = f.two & certify(f.t0, f.r0, f.a0) & certify(f.t1, f.r1, f.a1);
     // Disjoint enclosures are in the exact order; overlapping ones round
     // to the same f32.
     let swap = f.t0.gt(f.t1);
     let nan = L::splat(f64::NAN);
-    let lo = L::select(two, L::select(swap, f.t1, f.t0), nan);
-    let hi = L::select(two, L::select(swap, f.t0, f.t1), nan);
-    let (class, t0, t1) = (L::mask_i32(two) & i32x4::splat(2), lo.narrow(), hi.narrow());
-    let done = f.none | two;
-    if L::all(done) && subnormals_work() {
+    Decided {
+        two,
+        done: f.none | two,
+        lo: L::select(two, L::select(swap, f.t1, f.t0), nan),
+        hi: L::select(two, L::select(swap, f.t0, f.t1), nan),
+    }
+}
+
+/// The results of one packet; `env` says whether the floating-point
+/// environment keeps subnormals (read only where every lane is done).
+#[inline(always)]
+fn finish<L: Real4>(
+    x: Decided<L>,
+    env: impl FnOnce() -> bool,
+    ray: &Ray4,
+    s: &Sphere4,
+) -> SphereHit4 {
+    let class = L::mask_i32(x.two) & i32x4::splat(2);
+    let (t0, t1) = (x.lo.narrow(), x.hi.narrow());
+    if L::all(x.done) && env() {
         SphereHit4 { class, t0, t1 }
     } else {
-        SphereHit4::settle([class, cast(t0), cast(t1)], L::mask_i32(done), ray, s)
+        SphereHit4::settle([class, cast(t0), cast(t1)], L::mask_i32(x.done), ray, s)
     }
+}
+
+/// The kernel over any four-lane [`Real4`].
+#[inline(always)]
+fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl FnOnce() -> bool) -> SphereHit4 {
+    let w = L::widen;
+    let x = decide(
+        ray.origin.map(w),
+        ray.dir.map(w),
+        s.center.map(w),
+        w(s.radius),
+    );
+    finish(x, env, ray, s)
 }
 
 impl SphereHit4 {
@@ -254,4 +362,40 @@ pub fn intersect_slice(rays: &[crate::Ray], sphere: &Sphere) -> Vec<SphereHit> {
         &mut out,
     );
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::hit::same_bits;
+
+    /// The baseline copy of the batch (pairs of [`F64x4`]) gives what the
+    /// baseline one-packet kernel gives, odd tails included: where the CPU
+    /// has AVX2, [`intersect_packets`] never takes this copy.
+    #[test]
+    fn baseline_packets_equal_one_packet_at_a_time() {
+        let s = Sphere4::from_spheres(
+            [0.5, 1.0, 2.0, 1e-30].map(|r| Sphere::new(glam::Vec3::new(0.0, 0.5, 0.0), r)),
+        );
+        let rays: Vec<Ray4> = (0..7)
+            .map(|i| {
+                let d = [0, 1, 2, 3].map(|k| {
+                    glam::Vec3::new(0.1 * (i + k) as f32 - 0.3, 1.0 - 0.2 * k as f32, 0.05)
+                });
+                Ray4::from_rays(d.map(|d| crate::Ray::new(glam::Vec3::new(0.1, -3.0, 0.0), d)))
+            })
+            .collect();
+        let mut out = vec![intersect_baseline(&rays[0], &s); rays.len()];
+        packets_in::<F64x4>(&rays, &s, &mut out);
+        let mut classes = std::collections::BTreeSet::new();
+        for (r, h) in rays.iter().zip(&out) {
+            let want = intersect_baseline(r, &s).lanes();
+            assert!(
+                h.lanes().iter().zip(&want).all(|(x, y)| same_bits(x, y)),
+                "{r:?}"
+            );
+            classes.extend(want.map(|w| format!("{w:?}").chars().take(3).collect::<String>()));
+        }
+        assert!(classes.len() >= 2, "{classes:?}");
+    }
 }
