@@ -14,6 +14,9 @@
 //!   auto-vectorise.
 //! * `x4/packed`: the SIMD kernel over rays already packed four to a
 //!   `Ray4`, one `intersect(&Ray4, …)` call per packet.
+//! * `x4/baseline`: the per-packet call on the baseline copy of the
+//!   kernel (`wide::f64x4`, two SSE2 registers in a default build), which
+//!   `x4/packed` leaves for the AVX2 copy where the CPU has AVX2 and FMA.
 //! * `x4/batch`: the same packets through `intersect_packets`, which runs
 //!   them two at a time as eight lanes and dispatches once per batch.
 //! * `f64/per-ray`: the plain-f64 variant (`*::double`; `textbook` for the
@@ -80,6 +83,7 @@ fn bench_group<P: Copy>(
     scalar: impl Fn(&Ray, &P) -> Option<f32>,
     baseline: impl Fn(&Ray, &P) -> Option<f32>,
     simd: impl Fn(&Ray4) -> f32x4,
+    base: impl Fn(&Ray4) -> f32x4,
     mut batch: impl FnMut(&[Ray4]) -> f32x4,
 ) {
     let packed = pack(rays);
@@ -107,6 +111,15 @@ fn bench_group<P: Copy>(
             let mut acc = f32x4::ZERO;
             for r in black_box(&packed) {
                 acc += simd(r);
+            }
+            acc
+        })
+    });
+    g.bench_function(BenchmarkId::new("x4", "baseline"), |b| {
+        b.iter(|| {
+            let mut acc = f32x4::ZERO;
+            for r in black_box(&packed) {
+                acc += base(r);
             }
             acc
         })
@@ -192,6 +205,10 @@ fn benches(c: &mut Criterion) {
                 let (m, t) = sphere::x4::intersect(r, &s4).nearest(t_min, t_max);
                 finite(m, t)
             },
+            |r| {
+                let (m, t) = sphere::x4::intersect_baseline(r, &s4).nearest(t_min, t_max);
+                finite(m, t)
+            },
             |packed| {
                 sphere::x4::intersect_packets(packed, &s4, &mut sphere_out);
                 let mut acc = f32x4::ZERO;
@@ -217,6 +234,10 @@ fn benches(c: &mut Criterion) {
         |r, p| plane::double::intersect(r, p).nearest(0.0, f32::INFINITY),
         |r| {
             let (m, t) = plane::x4::intersect(r, &p4).nearest(t_min, t_max);
+            finite(m, t)
+        },
+        |r| {
+            let (m, t) = plane::x4::intersect_baseline(r, &p4).nearest(t_min, t_max);
             finite(m, t)
         },
         |packed| {
@@ -246,6 +267,10 @@ fn benches(c: &mut Criterion) {
         |r, q| quadric::double::intersect(r, q).nearest(0.0, f32::INFINITY),
         |r| {
             let (m, t) = quadric::x4::intersect(r, &q4).nearest(t_min, t_max);
+            finite(m, t)
+        },
+        |r| {
+            let (m, t) = quadric::x4::intersect_baseline(r, &q4).nearest(t_min, t_max);
             finite(m, t)
         },
         |packed| {
@@ -317,15 +342,16 @@ fn print_ratios() {
         _ => "–".into(),
     };
     let mut md = String::from(
-        "| kernel | rays | reference per-ray | reference slice | x4 | x4 batch | f64 per-ray | parry3d | x4 ÷ parry3d | x4 batch ÷ parry3d | x4 ÷ f64 | f64 ÷ reference per-ray |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| kernel | rays | reference per-ray | reference slice | x4 | x4 baseline | x4 batch | f64 per-ray | parry3d | x4 ÷ parry3d | x4 batch ÷ parry3d | x4 ÷ f64 | f64 ÷ reference per-ray |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     let mut json = Vec::new();
     for k in ["camera", "plane", "sphere", "sphere-shuffled", "quadric"] {
         let rate = |id: &str| ns(k, id).map(|t| N as f64 / t * 1e3);
-        let (pr, sl, x4, batch, f64r, peer) = (
+        let (pr, sl, x4, base, batch, f64r, peer) = (
             rate("reference/per-ray"),
             rate("reference/slice"),
             rate("x4/packed"),
+            rate("x4/baseline"),
             rate("x4/batch"),
             rate("f64/per-ray"),
             rate("parry3d/per-ray"),
@@ -336,10 +362,11 @@ fn print_ratios() {
             "4096 primary rays of a 64×64 camera"
         };
         md += &format!(
-            "| {k} | {rays} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+            "| {k} | {rays} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
             f(pr),
             f(sl),
             f(x4),
+            f(base),
             f(batch),
             f(f64r),
             f(peer),
@@ -354,6 +381,7 @@ fn print_ratios() {
             "reference_per_ray": pr,
             "reference_slice": sl,
             "x4": x4,
+            "x4_baseline": base,
             "x4_batch": batch,
             "f64": f64r,
         });

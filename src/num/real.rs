@@ -1,5 +1,7 @@
 //! The [`Real`] trait: what a filtered kernel needs from its number type,
-//! implemented for `f64` (the scalar reference) and [`F64x4`] (four lanes).
+//! implemented for `f64` (the scalar reference), [`F64x4`] (four lanes),
+//! the AVX lanes of [`super::avx`] on x86-64, and [`Pair`] of any of them
+//! (two packets at once).
 //!
 //! Every operation is one correctly rounded IEEE-754 operation per lane, so
 //! a lane of [`F64x4`] gives the bits `f64` gives, whatever target features
