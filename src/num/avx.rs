@@ -14,9 +14,9 @@
 //! 4,096 jittered primary rays of a 64×64 camera, AMD EPYC with AVX2, one
 //! run on a shared machine), one packet per call gave, in Mrays/s, for
 //! this copy (`x4/packed`) against the SSE2 one (`x4/baseline`): plane
-//! 152.5 against 79.6, sphere 60.5 against 42.2, quadric 28.3 against
-//! 25.5; and two packets per step (`x4/batch`): plane 162.3, sphere 93.7,
-//! quadric 41.4. That is what the `unsafe` blocks of this module and of
+//! 200.7 against 144.0, sphere 79.4 against 57.7, quadric 65.2 against
+//! 48.2; and two packets per step (`x4/batch`): plane 317.4, sphere 121.0,
+//! quadric 81.4. That is what the `unsafe` blocks of this module and of
 //! the x4 entry points buy.
 //!
 //! [`Avx4`] is crate-private: its [`Real`] methods run AVX instructions
@@ -77,7 +77,7 @@ macro_rules! avx {
         // SAFETY: AVX2 and FMA were detected (an `Avx2` token exists, see
         // the macro's documentation). Justified by the kernels bench
         // figures in the module documentation (x4/packed against
-        // x4/baseline, e.g. plane 152.5 against 79.6 Mrays/s).
+        // x4/baseline, e.g. plane 200.7 against 144.0 Mrays/s).
         unsafe { $e }
     };
 }
