@@ -12,7 +12,13 @@
 //!   cannot fuse calls across rays: the scalar code as written.
 //! * `reference/slice`: a plain loop over the slice, which LLVM may
 //!   auto-vectorise.
-//! * `x4`: the SIMD kernel over rays already packed four to a `Ray4`.
+//! * `x4/packed`: the SIMD kernel over rays already packed four to a
+//!   `Ray4`, one `intersect(&Ray4, …)` call per packet.
+//! * `x4/baseline`: the per-packet call on the baseline copy of the
+//!   kernel (`wide::f64x4`, two SSE2 registers in a default build), which
+//!   `x4/packed` leaves for the AVX2 copy where the CPU has AVX2 and FMA.
+//! * `x4/batch`: the same packets through `intersect_packets`, which runs
+//!   them two at a time as eight lanes and dispatches once per batch.
 //! * `f64/per-ray`: the plain-f64 variant (`*::double`; `textbook` for the
 //!   camera), one `black_box`ed call per ray.
 //! * `parry3d/per-ray` (sphere, plane): `Ball::cast_local_ray` and
@@ -68,6 +74,7 @@ fn pack(rays: &[Ray]) -> Vec<Ray4> {
         .collect()
 }
 
+#[allow(clippy::too_many_arguments)]
 fn bench_group<P: Copy>(
     c: &mut Criterion,
     name: &str,
@@ -76,6 +83,8 @@ fn bench_group<P: Copy>(
     scalar: impl Fn(&Ray, &P) -> Option<f32>,
     baseline: impl Fn(&Ray, &P) -> Option<f32>,
     simd: impl Fn(&Ray4) -> f32x4,
+    base: impl Fn(&Ray4) -> f32x4,
+    mut batch: impl FnMut(&[Ray4]) -> f32x4,
 ) {
     let packed = pack(rays);
     let mut g = c.benchmark_group(name);
@@ -105,6 +114,18 @@ fn bench_group<P: Copy>(
             }
             acc
         })
+    });
+    g.bench_function(BenchmarkId::new("x4", "baseline"), |b| {
+        b.iter(|| {
+            let mut acc = f32x4::ZERO;
+            for r in black_box(&packed) {
+                acc += base(r);
+            }
+            acc
+        })
+    });
+    g.bench_function(BenchmarkId::new("x4", "batch"), |b| {
+        b.iter(|| batch(black_box(&packed)))
     });
     g.bench_function(BenchmarkId::new("f64", "per-ray"), |b| {
         b.iter(|| {
@@ -168,6 +189,7 @@ fn benches(c: &mut Criterion) {
     let s = Sphere::new(Vec3::new(0.3, 0.5, -1.0), 1.2);
     let s4 = sphere::x4::Sphere4::splat(&s);
     let ball = parry3d::shape::Ball::new(s.radius);
+    let mut sphere_out = vec![sphere::x4::intersect(&Ray4::splat(rays[0]), &s4); N / 4];
     for (name, rays) in [
         ("sphere", rays.clone()),
         ("sphere-shuffled", shuffled(&rays)),
@@ -183,12 +205,26 @@ fn benches(c: &mut Criterion) {
                 let (m, t) = sphere::x4::intersect(r, &s4).nearest(t_min, t_max);
                 finite(m, t)
             },
+            |r| {
+                let (m, t) = sphere::x4::intersect_baseline(r, &s4).nearest(t_min, t_max);
+                finite(m, t)
+            },
+            |packed| {
+                sphere::x4::intersect_packets(packed, &s4, &mut sphere_out);
+                let mut acc = f32x4::ZERO;
+                for h in &sphere_out {
+                    let (m, t) = h.nearest(t_min, t_max);
+                    acc += finite(m, t);
+                }
+                acc
+            },
         );
         bench_peer(c, name, &ball, &local(&rays, s.center));
     }
 
     let p = Plane::new(Vec3::new(0.0, -1.0, 0.0), Vec3::new(0.05, 1.0, 0.02));
     let p4 = plane::x4::Plane4::splat(&p);
+    let mut plane_out = vec![plane::x4::intersect(&Ray4::splat(rays[0]), &p4); N / 4];
     bench_group(
         c,
         "plane",
@@ -200,6 +236,19 @@ fn benches(c: &mut Criterion) {
             let (m, t) = plane::x4::intersect(r, &p4).nearest(t_min, t_max);
             finite(m, t)
         },
+        |r| {
+            let (m, t) = plane::x4::intersect_baseline(r, &p4).nearest(t_min, t_max);
+            finite(m, t)
+        },
+        |packed| {
+            plane::x4::intersect_packets(packed, &p4, &mut plane_out);
+            let mut acc = f32x4::ZERO;
+            for h in &plane_out {
+                let (m, t) = h.nearest(t_min, t_max);
+                acc += finite(m, t);
+            }
+            acc
+        },
     );
     let n = p.normal.normalize().to_array();
     let half = parry3d::shape::HalfSpace::new(parry3d::math::Vector::new(n[0], n[1], n[2]));
@@ -208,6 +257,7 @@ fn benches(c: &mut Criterion) {
     // A one-sheet hyperboloid x² + z² − y² = 0.5, tilted by the mix of terms.
     let q = Quadric::new([1.0, -1.0, 1.0, 0.1, 0.0, 0.05, 0.0, 0.2, 0.0, -0.5]);
     let q4 = quadric::x4::Quadric4::splat(&q);
+    let mut quadric_out = vec![quadric::x4::intersect(&Ray4::splat(rays[0]), &q4); N / 4];
     bench_group(
         c,
         "quadric",
@@ -218,6 +268,19 @@ fn benches(c: &mut Criterion) {
         |r| {
             let (m, t) = quadric::x4::intersect(r, &q4).nearest(t_min, t_max);
             finite(m, t)
+        },
+        |r| {
+            let (m, t) = quadric::x4::intersect_baseline(r, &q4).nearest(t_min, t_max);
+            finite(m, t)
+        },
+        |packed| {
+            quadric::x4::intersect_packets(packed, &q4, &mut quadric_out);
+            let mut acc = f32x4::ZERO;
+            for h in &quadric_out {
+                let (m, t) = h.nearest(t_min, t_max);
+                acc += finite(m, t);
+            }
+            acc
         },
     );
 
@@ -279,15 +342,17 @@ fn print_ratios() {
         _ => "–".into(),
     };
     let mut md = String::from(
-        "| kernel | rays | reference per-ray | reference slice | x4 | f64 per-ray | parry3d | x4 ÷ parry3d | f64 ÷ reference per-ray |\n|---|---|---|---|---|---|---|---|---|\n",
+        "| kernel | rays | reference per-ray | reference slice | x4 | x4 baseline | x4 batch | f64 per-ray | parry3d | x4 ÷ parry3d | x4 batch ÷ parry3d | x4 ÷ f64 | f64 ÷ reference per-ray |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     let mut json = Vec::new();
     for k in ["camera", "plane", "sphere", "sphere-shuffled", "quadric"] {
         let rate = |id: &str| ns(k, id).map(|t| N as f64 / t * 1e3);
-        let (pr, sl, x4, f64r, peer) = (
+        let (pr, sl, x4, base, batch, f64r, peer) = (
             rate("reference/per-ray"),
             rate("reference/slice"),
             rate("x4/packed"),
+            rate("x4/baseline"),
+            rate("x4/batch"),
             rate("f64/per-ray"),
             rate("parry3d/per-ray"),
         );
@@ -297,13 +362,17 @@ fn print_ratios() {
             "4096 primary rays of a 64×64 camera"
         };
         md += &format!(
-            "| {k} | {rays} | {} | {} | {} | {} | {} | {} | {} |\n",
+            "| {k} | {rays} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
             f(pr),
             f(sl),
             f(x4),
+            f(base),
+            f(batch),
             f(f64r),
             f(peer),
             r(x4, peer),
+            r(batch, peer),
+            r(x4, f64r),
             r(f64r, pr),
         );
         let mut o = serde_json::json!({
@@ -312,6 +381,8 @@ fn print_ratios() {
             "reference_per_ray": pr,
             "reference_slice": sl,
             "x4": x4,
+            "x4_baseline": base,
+            "x4_batch": batch,
             "f64": f64r,
         });
         if let Some(p) = peer {

@@ -186,6 +186,48 @@ proptest! {
         }
     }
 
+    /// The batch entry points give, packet by packet, what `intersect`
+    /// gives, for any number of packets (odd ones included) and an output
+    /// slice of any length.
+    #[cfg(all(feature = "sphere", feature = "plane", feature = "quadric"))]
+    #[test]
+    fn packets_equal_one_packet_at_a_time(
+        spheres in prop::collection::vec(prop::array::uniform4(sphere_case()), 0..6),
+        planes in prop::collection::vec(prop::array::uniform4(plane_case()), 0..6),
+        quadrics in prop::collection::vec(prop::array::uniform4(quadric_case()), 0..6),
+        short in 0usize..2,
+    ) {
+        let r4 = |c: &[(Ray, Sphere); 4]| Ray4::from_rays(c.map(|c| c.0));
+        let rays: Vec<Ray4> = spheres.iter().map(r4).collect();
+        let s4 = sphere::x4::Sphere4::from_spheres(spheres.first().map_or([Sphere::new(Vec3::ZERO, 1.0); 4], |c| c.map(|c| c.1)));
+        let n = rays.len().saturating_sub(short);
+        let mut out = vec![sphere::x4::intersect(&Ray4::splat(Ray::new(Vec3::ZERO, Vec3::Z)), &s4); n];
+        sphere::x4::intersect_packets(&rays, &s4, &mut out);
+        for (r, h) in rays.iter().zip(&out) {
+            let want = sphere::x4::intersect(r, &s4);
+            prop_assert!(h.lanes().iter().zip(want.lanes().iter()).all(|(a, b)| same_bits(a, b)));
+        }
+
+        let rays: Vec<Ray4> = planes.iter().map(|c| Ray4::from_rays(c.map(|c| c.0))).collect();
+        let p4 = plane::x4::Plane4::from_planes(planes.first().map_or([Plane::new(Vec3::ZERO, Vec3::Y); 4], |c| c.map(|c| c.1)));
+        let mut out = vec![plane::x4::intersect(&Ray4::splat(Ray::new(Vec3::ZERO, Vec3::Z)), &p4); rays.len()];
+        plane::x4::intersect_packets(&rays, &p4, &mut out);
+        for (r, h) in rays.iter().zip(&out) {
+            let want = plane::x4::intersect(r, &p4);
+            prop_assert!(h.lanes().iter().zip(want.lanes().iter()).all(|(a, b)| same_bits(a, b)));
+        }
+
+        let rays: Vec<Ray4> = quadrics.iter().map(|c| Ray4::from_rays(c.map(|c| c.0))).collect();
+        let unit = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+        let q4 = quadric::x4::Quadric4::from_quadrics(quadrics.first().map_or([unit; 4], |c| c.map(|c| c.1)));
+        let mut out = vec![quadric::x4::intersect(&Ray4::splat(Ray::new(Vec3::ZERO, Vec3::Z)), &q4); rays.len()];
+        quadric::x4::intersect_packets(&rays, &q4, &mut out);
+        for (r, h) in rays.iter().zip(&out) {
+            let want = quadric::x4::intersect(r, &q4);
+            prop_assert!(h.lanes().iter().zip(want.lanes().iter()).all(|(a, b)| same_bits(a, b)));
+        }
+    }
+
     /// Tails of 1 to 3 rays: the helper must give exactly one result per ray,
     /// equal to the reference, whatever the length.
     #[cfg(feature = "sphere")]
@@ -222,5 +264,161 @@ fn tail_lanes_never_read_past_the_slice() {
         let mut out = Vec::new();
         for_each4(&items[..n], |p| p, &mut out);
         assert_eq!(out, items[..n].to_vec());
+    }
+}
+
+/// The two compiled copies of each x4 kernel, the AVX2 one (one 256-bit
+/// register per value) and the baseline one (`wide::f64x4`, two SSE2
+/// registers in a default build), give the same bits on the stiff
+/// catalogue (`fixtures/stiff/`) and on random packets. Where the CPU lacks
+/// AVX2, the dispatching `intersect` must be the baseline copy.
+#[cfg(all(
+    target_arch = "x86_64",
+    feature = "plane",
+    feature = "sphere",
+    feature = "quadric"
+))]
+mod avx2_against_baseline {
+    use super::*;
+    use rayoracle::case::{Case, parse_line};
+    use rayoracle::num::avx::Avx2;
+    use wide::i32x4;
+
+    /// The raw bits of each field, NaNs included.
+    fn bits(class: i32x4, ts: &[f32x4]) -> Vec<u32> {
+        let mut v: Vec<u32> = class.to_array().map(|c| c as u32).to_vec();
+        for t in ts {
+            v.extend(t.to_array().map(f32::to_bits));
+        }
+        v
+    }
+
+    fn sphere_bits(r: &Ray4, s: &sphere::x4::Sphere4, avx2: Option<Avx2>) -> Vec<u32> {
+        let h = match avx2 {
+            Some(t) => sphere::x4::intersect_avx2(t, r, s),
+            None => sphere::x4::intersect(r, s),
+        };
+        bits(h.class, &[h.t0, h.t1])
+    }
+
+    fn plane_bits(r: &Ray4, p: &plane::x4::Plane4, avx2: Option<Avx2>) -> Vec<u32> {
+        let h = match avx2 {
+            Some(t) => plane::x4::intersect_avx2(t, r, p),
+            None => plane::x4::intersect(r, p),
+        };
+        bits(h.class, &[h.t])
+    }
+
+    fn quadric_bits(r: &Ray4, q: &quadric::x4::Quadric4, avx2: Option<Avx2>) -> Vec<u32> {
+        let h = match avx2 {
+            Some(t) => quadric::x4::intersect_avx2(t, r, q),
+            None => quadric::x4::intersect(r, q),
+        };
+        bits(h.class, &[h.t0, h.t1])
+    }
+
+    fn sphere_same(cases: [(Ray, Sphere); 4]) -> bool {
+        let (r, s) = (
+            Ray4::from_rays(cases.map(|c| c.0)),
+            sphere::x4::Sphere4::from_spheres(cases.map(|c| c.1)),
+        );
+        let base = sphere::x4::intersect_baseline(&r, &s);
+        sphere_bits(&r, &s, Avx2::detect()) == bits(base.class, &[base.t0, base.t1])
+    }
+
+    fn plane_same(cases: [(Ray, Plane); 4]) -> bool {
+        let (r, p) = (
+            Ray4::from_rays(cases.map(|c| c.0)),
+            plane::x4::Plane4::from_planes(cases.map(|c| c.1)),
+        );
+        let base = plane::x4::intersect_baseline(&r, &p);
+        plane_bits(&r, &p, Avx2::detect()) == bits(base.class, &[base.t])
+    }
+
+    fn quadric_same(cases: [(Ray, Quadric); 4]) -> bool {
+        let (r, q) = (
+            Ray4::from_rays(cases.map(|c| c.0)),
+            quadric::x4::Quadric4::from_quadrics(cases.map(|c| c.1)),
+        );
+        let base = quadric::x4::intersect_baseline(&r, &q);
+        quadric_bits(&r, &q, Avx2::detect()) == bits(base.class, &[base.t0, base.t1])
+    }
+
+    /// The cases of one file of the catalogue.
+    fn catalogue(kernel: &str) -> Vec<Case> {
+        let path = format!(
+            "{}/fixtures/stiff/{kernel}.jsonl",
+            env!("CARGO_MANIFEST_DIR")
+        );
+        let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+        text.lines()
+            .map(|l| parse_line(l).unwrap_or_else(|e| panic!("{path}: {e}")).case)
+            .collect()
+    }
+
+    /// Packets of four consecutive cases, and of each case beside the ones
+    /// a quarter and a half of the file away (other families).
+    fn packets<T: Copy>(v: &[T]) -> Vec<[T; 4]> {
+        let n = v.len();
+        let mut out: Vec<[T; 4]> = v
+            .chunks_exact(4)
+            .map(|c| [c[0], c[1], c[2], c[3]])
+            .collect();
+        out.extend((0..n).map(|i| [0, n / 4, n / 2, 3 * n / 4].map(|k| v[(i + k) % n])));
+        out
+    }
+
+    #[test]
+    fn stiff_catalogue_gives_the_same_bits() {
+        let spheres: Vec<(Ray, Sphere)> = catalogue("sphere")
+            .into_iter()
+            .filter_map(|c| match c {
+                Case::Sphere(r, s) => Some((r, s)),
+                _ => None,
+            })
+            .collect();
+        let planes: Vec<(Ray, Plane)> = catalogue("plane")
+            .into_iter()
+            .filter_map(|c| match c {
+                Case::Plane(r, p) => Some((r, p)),
+                _ => None,
+            })
+            .collect();
+        let quadrics: Vec<(Ray, Quadric)> = catalogue("quadric")
+            .into_iter()
+            .filter_map(|c| match c {
+                Case::Quadric(r, q) => Some((r, q)),
+                _ => None,
+            })
+            .collect();
+        assert!(spheres.len() >= 1000 && planes.len() >= 1000 && quadrics.len() >= 1000);
+        for p in packets(&spheres) {
+            assert!(sphere_same(p), "{p:?}");
+        }
+        for p in packets(&planes) {
+            assert!(plane_same(p), "{p:?}");
+        }
+        for p in packets(&quadrics) {
+            assert!(quadric_same(p), "{p:?}");
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 1024, ..ProptestConfig::default() })]
+
+        #[test]
+        fn random_sphere_packets_give_the_same_bits(cases in prop::array::uniform4(sphere_case())) {
+            prop_assert!(sphere_same(cases));
+        }
+
+        #[test]
+        fn random_plane_packets_give_the_same_bits(cases in prop::array::uniform4(plane_case())) {
+            prop_assert!(plane_same(cases));
+        }
+
+        #[test]
+        fn random_quadric_packets_give_the_same_bits(cases in prop::array::uniform4(quadric_case())) {
+            prop_assert!(quadric_same(cases));
+        }
     }
 }

@@ -3,7 +3,8 @@
 //! The plane, sphere, quadric and camera kernels evaluate in f64 with a proven error
 //! bound ([`real`], [`certify`]), then in f64 checked to be exact
 //! operation by operation ([`tracked`]): the [`Real`] trait runs the same
-//! expression on one lane (`f64`) or four ([`real::F64x4`]), and every
+//! expression on one lane (`f64`) or four ([`real::F64x4`]; on x86-64 also
+//! one AVX register, chosen at run time, see `avx`), and every
 //! operation is one correctly rounded IEEE-754 operation (`+`, `−`, `×`,
 //! `÷`, `√`). Nothing here calls `mul_add` (fused on one build, unfused on
 //! another), `recip` or `recip_sqrt` (approximations), and rustc never
@@ -22,6 +23,8 @@ pub mod scale;
 
 pub use lane::Lane;
 pub use real::Real;
+#[cfg(target_arch = "x86_64")]
+pub mod avx;
 pub mod certify;
 pub mod real;
 pub mod tracked;

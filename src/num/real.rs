@@ -1,5 +1,7 @@
 //! The [`Real`] trait: what a filtered kernel needs from its number type,
-//! implemented for `f64` (the scalar reference) and [`F64x4`] (four lanes).
+//! implemented for `f64` (the scalar reference), [`F64x4`] (four lanes),
+//! the AVX lanes of [`super::avx`] on x86-64, and [`Pair`] of any of them
+//! (two packets at once).
 //!
 //! Every operation is one correctly rounded IEEE-754 operation per lane, so
 //! a lane of [`F64x4`] gives the bits `f64` gives, whatever target features
@@ -13,7 +15,7 @@
 //! ```
 
 use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
-use wide::f64x4;
+use wide::{f32x4, f64x4, i32x4};
 
 /// A lane type of f64 values: `f64` or [`F64x4`].
 pub trait Real:
@@ -144,12 +146,220 @@ impl F64x4 {
     pub fn to_f32(self) -> [f32; 4] {
         self.to_array().map(|x| x as f32)
     }
-    /// Each lane rounded to `f32` and widened back.
+}
+
+/// A four-lane [`Real`], with what the x4 kernels need besides arithmetic:
+/// moving between their `f32x4` inputs and outputs and the `f64` lanes,
+/// and reading masks. Implemented by [`F64x4`] and, on x86-64, by the AVX
+/// lanes of [`super::avx`].
+///
+/// ```
+/// use rayoracle::num::real::{F64x4, Real, Real4};
+/// use wide::f32x4;
+/// let x = F64x4::widen(f32x4::from([0.1, 2.0, -3.0, 1e-40]));
+/// assert_eq!(x.narrow().to_array(), [0.1, 2.0, -3.0, 1e-40]);
+/// let m = x.gt(F64x4::splat(1.0));
+/// assert_eq!(F64x4::mask_i32(m).to_array(), [0, -1, 0, 0]);
+/// assert!(!F64x4::all(m) && F64x4::all(m | !m));
+/// ```
+pub trait Real4: Real {
+    /// Widens four `f32` lanes, exactly.
+    fn widen(x: f32x4) -> Self;
+    /// Each lane rounded to `f32` (to nearest, ties to even, as `as f32`).
+    fn narrow(self) -> f32x4;
+    /// The mask as `i32` lanes: −1 where set, 0 where clear.
+    fn mask_i32(m: Self::Mask) -> i32x4;
+    /// Whether every lane of `m` is set.
+    fn all(m: Self::Mask) -> bool;
+}
+
+/// Two values of a lane type side by side, operated on together: eight
+/// lanes from two four-lane packets. Each operation is the two operations
+/// of `L`, so a lane gives the bits it gives in `L`; written as one
+/// expression, the two packets' chains of dependent operations interleave,
+/// which keeps more of the CPU's floating-point units busy.
+///
+/// ```
+/// use rayoracle::num::real::{F64x4, Pair, Real};
+/// let x = Pair(F64x4::splat(4.0), F64x4::splat(9.0));
+/// let y = x.sqrt();
+/// assert_eq!((y.0.to_array(), y.1.to_array()), ([2.0; 4], [3.0; 4]));
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct Pair<T>(pub T, pub T);
+
+macro_rules! pairwise {
+    ($tr:ident, $f:ident) => {
+        impl<T: $tr<Output = T>> $tr for Pair<T> {
+            type Output = Pair<T>;
+            #[inline(always)]
+            fn $f(self, o: Pair<T>) -> Pair<T> {
+                Pair(self.0.$f(o.0), self.1.$f(o.1))
+            }
+        }
+    };
+}
+pairwise!(Add, add);
+pairwise!(Sub, sub);
+pairwise!(Mul, mul);
+pairwise!(Div, div);
+pairwise!(BitAnd, bitand);
+pairwise!(BitOr, bitor);
+
+impl<T: Neg<Output = T>> Neg for Pair<T> {
+    type Output = Pair<T>;
     #[inline(always)]
-    fn round_f32(self) -> F64x4 {
-        F64x4::from(self.to_array().map(|x| x as f32 as f64))
+    fn neg(self) -> Pair<T> {
+        Pair(-self.0, -self.1)
     }
 }
+
+impl<T: Not<Output = T>> Not for Pair<T> {
+    type Output = Pair<T>;
+    #[inline(always)]
+    fn not(self) -> Pair<T> {
+        Pair(!self.0, !self.1)
+    }
+}
+
+impl<L: Real> Real for Pair<L> {
+    const FEW_DIVISIONS: bool = L::FEW_DIVISIONS;
+    type Mask = Pair<L::Mask>;
+    #[inline(always)]
+    fn splat(x: f64) -> Pair<L> {
+        Pair(L::splat(x), L::splat(x))
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Pair<L> {
+        Pair(self.0.sqrt(), self.1.sqrt())
+    }
+    #[inline(always)]
+    fn abs(self) -> Pair<L> {
+        Pair(self.0.abs(), self.1.abs())
+    }
+    #[inline(always)]
+    fn copysign(self, sign: Pair<L>) -> Pair<L> {
+        Pair(self.0.copysign(sign.0), self.1.copysign(sign.1))
+    }
+    #[inline(always)]
+    fn gt(self, other: Pair<L>) -> Pair<L::Mask> {
+        Pair(self.0.gt(other.0), self.1.gt(other.1))
+    }
+    #[inline(always)]
+    fn eq(self, other: Pair<L>) -> Pair<L::Mask> {
+        Pair(self.0.eq(other.0), self.1.eq(other.1))
+    }
+    #[inline(always)]
+    fn select(m: Pair<L::Mask>, a: Pair<L>, b: Pair<L>) -> Pair<L> {
+        Pair(L::select(m.0, a.0, b.0), L::select(m.1, a.1, b.1))
+    }
+    #[inline(always)]
+    fn same_f32(lo: Pair<L>, hi: Pair<L>) -> Pair<L::Mask> {
+        Pair(L::same_f32(lo.0, hi.0), L::same_f32(lo.1, hi.1))
+    }
+}
+
+impl<L: Real4> Pair<L> {
+    /// Two packets of three `f32x4` (a point or a direction of two
+    /// [`crate::ray4::Ray4`]) widened side by side.
+    ///
+    /// ```
+    /// use rayoracle::num::real::{F64x4, Pair};
+    /// use wide::f32x4;
+    /// let p = Pair::<F64x4>::widen3(&[f32x4::splat(1.0); 3], &[f32x4::splat(2.0); 3]);
+    /// assert_eq!((p[2].0.to_array(), p[2].1.to_array()), ([1.0; 4], [2.0; 4]));
+    /// ```
+    #[inline(always)]
+    pub fn widen3(a: &[f32x4; 3], b: &[f32x4; 3]) -> [Pair<L>; 3] {
+        let w = |x, y| Pair(L::widen(x), L::widen(y));
+        [w(a[0], b[0]), w(a[1], b[1]), w(a[2], b[2])]
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+mod sse2 {
+    //! [`Real4`] for [`F64x4`] by SSE2 conversions, part of baseline x86-64
+    //! (so the intrinsics are safe to call): `wide::f64x4` is two
+    //! `__m128d`, or one `__m256d` where the build enables AVX, 32 bytes
+    //! either way.
+    use super::*;
+    use safe_arch::{m128, m128d};
+    use wide::bytemuck::cast;
+
+    impl Real4 for F64x4 {
+        #[inline(always)]
+        fn widen(x: f32x4) -> F64x4 {
+            let v: m128 = cast(x);
+            let hi = safe_arch::move_high_low_m128(v, v);
+            let f = safe_arch::convert_to_m128d_from_lower2_m128;
+            F64x4(cast([f(v), f(hi)]))
+        }
+        #[inline(always)]
+        fn narrow(self) -> f32x4 {
+            let [lo, hi]: [m128d; 2] = cast(self.0);
+            let f = safe_arch::convert_to_m128_from_m128d;
+            cast(safe_arch::move_low_high_m128(f(lo), f(hi)))
+        }
+        #[inline(always)]
+        fn mask_i32(m: M4) -> i32x4 {
+            let [lo, hi]: [m128; 2] = cast(m.0);
+            cast(safe_arch::shuffle_abi_f32_all_m128::<0b10_00_10_00>(lo, hi))
+        }
+        #[inline(always)]
+        fn all(m: M4) -> bool {
+            m.0.to_bitmask() == 0b1111
+        }
+    }
+
+    /// Each 32-bit mask lane repeated to 64 bits.
+    #[inline(always)]
+    pub(super) fn widen_mask(m: i32x4) -> M4 {
+        let m: m128 = cast(m);
+        let (lo, hi) = (
+            safe_arch::unpack_low_m128(m, m),
+            safe_arch::unpack_high_m128(m, m),
+        );
+        M4(cast([lo, hi]))
+    }
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+mod portable {
+    //! [`Real4`] for [`F64x4`] lane by lane, off x86-64.
+    use super::*;
+
+    impl Real4 for F64x4 {
+        #[inline(always)]
+        fn widen(x: f32x4) -> F64x4 {
+            F64x4::from_f32(x.to_array())
+        }
+        #[inline(always)]
+        fn narrow(self) -> f32x4 {
+            f32x4::from(self.to_f32())
+        }
+        #[inline(always)]
+        fn mask_i32(m: M4) -> i32x4 {
+            i32x4::from(m.lanes().map(|b| -i32::from(b)))
+        }
+        #[inline(always)]
+        fn all(m: M4) -> bool {
+            m.all()
+        }
+    }
+
+    /// Each 32-bit mask lane repeated to 64 bits.
+    #[inline(always)]
+    pub(super) fn widen_mask(m: i32x4) -> M4 {
+        M4(f64x4::from(
+            m.to_array().map(|x| f64::from_bits(x as i64 as u64)),
+        ))
+    }
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+use portable::widen_mask;
+#[cfg(target_arch = "x86_64")]
+use sse2::widen_mask;
 
 macro_rules! lanewise {
     ($tr:ident, $f:ident, $op:tt) => {
@@ -262,10 +472,12 @@ impl Real for F64x4 {
     }
     #[inline(always)]
     fn same_f32(lo: F64x4, hi: F64x4) -> M4 {
-        // Equal as floats (so no NaN), and with the same sign bit (so not
-        // −0 against +0).
-        let (a, b) = (lo.round_f32().0, hi.round_f32().0);
-        M4(a.simd_eq(b) & (a ^ b).is_sign_positive())
+        // Equal as floats (so no NaN) and as bits (so not −0 against +0),
+        // compared as four f32 lanes.
+        let (a, b) = (lo.narrow(), hi.narrow());
+        let bits: i32x4 = wide::bytemuck::cast::<f32x4, i32x4>(a)
+            .simd_eq(wide::bytemuck::cast::<f32x4, i32x4>(b));
+        widen_mask(bits & wide::bytemuck::cast::<f32x4, i32x4>(a.simd_eq(b)))
     }
 }
 

@@ -3,9 +3,12 @@
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
 use super::{Plane, PlaneHit, kernel, reference};
+#[cfg(target_arch = "x86_64")]
+use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
-use crate::num::real::{F64x4, M4, Real};
+use crate::num::real::{F64x4, Pair, Real, Real4};
 use crate::ray4::{Ray4, gather3, scatter3};
+use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
 
 /// Four planes, structure-of-arrays.
@@ -84,56 +87,203 @@ pub struct PlaneHit4 {
 /// ```
 #[inline]
 pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
-    let w = |v: f32x4| F64x4::from_f32(v.to_array());
-    let f = kernel::filter(
+    #[cfg(target_arch = "x86_64")]
+    if let Some(avx2) = Avx2::detect() {
+        return intersect_avx2(avx2, ray, p);
+    }
+    intersect_baseline(ray, p)
+}
+
+/// [`intersect`] on the baseline lanes, [`F64x4`]: two SSE2 registers in a
+/// default x86-64 build.
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, plane::{Plane, PlaneHit, x4}};
+/// use glam::Vec3;
+/// let r = Ray4::splat(Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::new(1.0, -4.0, 0.0)));
+/// let h = x4::intersect_baseline(&r, &x4::Plane4::splat(&Plane::new(Vec3::ZERO, Vec3::Y)));
+/// assert_eq!(h.lanes(), [PlaneHit::Hit(0.5); 4]);
+/// ```
+#[inline]
+pub fn intersect_baseline(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+    intersect_in::<F64x4>(ray, p, subnormals_work)
+}
+
+/// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
+/// and entered with the token that proves them. The same bits as
+/// [`intersect_baseline`].
+///
+/// ```
+/// use rayoracle::{Ray, num::avx::Avx2, ray4::Ray4, plane::{Plane, x4}};
+/// use glam::Vec3;
+/// let r = Ray4::splat(Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::new(0.1, -3.0, 0.0)));
+/// let p = x4::Plane4::splat(&Plane::new(Vec3::ZERO, Vec3::Y));
+/// if let Some(avx2) = Avx2::detect() {
+///     assert_eq!(x4::intersect_avx2(avx2, &r, &p).lanes(), x4::intersect_baseline(&r, &p).lanes());
+/// }
+/// ```
+#[cfg(target_arch = "x86_64")]
+#[inline]
+pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+    #[target_feature(enable = "avx2,fma")]
+    fn run(_: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+        intersect_in::<Avx4>(ray, p, subnormals_work)
+    }
+    // SAFETY: the token exists only where AVX2 and FMA were detected.
+    // Justified by the kernels bench figures in `crate::num::avx`.
+    unsafe { run(avx2, ray, p) }
+}
+
+/// [`intersect`] over many packets: `out[i] = intersect(&rays[i], p)` for
+/// every `i` below the shorter length, two packets at a time as eight
+/// lanes ([`Pair`]), with the floating-point environment read once.
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, plane::{Plane, x4}};
+/// use glam::Vec3;
+/// let p = x4::Plane4::splat(&Plane::new(Vec3::ZERO, Vec3::Y));
+/// let rays: Vec<Ray4> = (0..3).map(|i| Ray4::splat(Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::new(1.0, i as f32 - 1.0, 0.0)))).collect();
+/// let mut out = vec![x4::intersect(&rays[0], &p); 3];
+/// x4::intersect_packets(&rays, &p, &mut out);
+/// for (r, h) in rays.iter().zip(&out) {
+///     assert_eq!(h.lanes(), x4::intersect(r, &p).lanes());
+/// }
+/// ```
+pub fn intersect_packets(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(avx2) = Avx2::detect() {
+        #[target_feature(enable = "avx2,fma")]
+        fn run(_: Avx2, rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
+            packets_in::<Avx4>(rays, p, out)
+        }
+        // SAFETY: the token exists only where AVX2 and FMA were detected.
+        // Justified by the kernels bench figures in `crate::num::avx`.
+        return unsafe { run(avx2, rays, p, out) };
+    }
+    packets_in::<F64x4>(rays, p, out)
+}
+
+/// [`intersect_packets`] over any four-lane [`Real4`].
+#[inline(always)]
+fn packets_in<L: Real4>(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
+    let env = subnormals_work();
+    let (a, n) = (p.point.map(L::widen), p.normal.map(L::widen));
+    let (a2, n2) = (a.map(|x| Pair(x, x)), n.map(|x| Pair(x, x)));
+    let len = rays.len().min(out.len());
+    let mut pairs = rays[..len].chunks_exact(2);
+    let mut outs = out[..len].chunks_exact_mut(2);
+    for (pk, o) in (&mut pairs).zip(&mut outs) {
+        let (o2, d2) = (
+            Pair::widen3(&pk[0].origin, &pk[1].origin),
+            Pair::widen3(&pk[0].dir, &pk[1].dir),
+        );
+        let [x, y] = decide(o2, d2, a2, n2).halves();
+        o[0] = finish(x, || env, &pk[0], p);
+        o[1] = finish(y, || env, &pk[1], p);
+    }
+    if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
+        let (o1, d1) = (one.origin.map(L::widen), one.dir.map(L::widen));
+        *o = finish(decide(o1, d1, a, n), || env, one, p);
+    }
+}
+
+/// What the lanes decide, before any conversion.
+struct Decided<L: Real> {
+    hit: L::Mask,
+    parallel: L::Mask,
+    done: L::Mask,
+    /// The root, NaN where there is none.
+    t: L,
+}
+
+impl<L: Real> Decided<Pair<L>> {
+    #[inline(always)]
+    fn halves(self) -> [Decided<L>; 2] {
+        [
+            Decided {
+                hit: self.hit.0,
+                parallel: self.parallel.0,
+                done: self.done.0,
+                t: self.t.0,
+            },
+            Decided {
+                hit: self.hit.1,
+                parallel: self.parallel.1,
+                done: self.done.1,
+                t: self.t.1,
+            },
+        ]
+    }
+}
+
+/// The filter and [`certify`] over any [`Real`].
+#[inline(always)]
+fn decide<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Decided<L> {
+    let f = kernel::filter(o, d, a, n, 1.0);
+    let hit = f.hit & certify(f.t, f.r, f.a);
+    Decided {
+        hit,
+        parallel: f.parallel,
+        done: hit | f.parallel | f.in_plane,
+        t: L::select(hit, f.t, L::splat(f64::NAN)),
+    }
+}
+
+/// The results of one packet; `env` says whether the floating-point
+/// environment keeps subnormals (read only where every lane is done).
+#[inline(always)]
+fn finish<L: Real4>(
+    x: Decided<L>,
+    env: impl FnOnce() -> bool,
+    ray: &Ray4,
+    p: &Plane4,
+) -> PlaneHit4 {
+    let (h, par) = (L::mask_i32(x.hit), L::mask_i32(x.parallel));
+    // 0 where hit, else 1 where parallel, else 2.
+    let class = h.select(i32x4::ZERO, i32x4::splat(2) + par);
+    let t = x.t.narrow();
+    if L::all(x.done) && env() {
+        PlaneHit4 { class, t }
+    } else {
+        PlaneHit4::settle([class, cast(t)], L::mask_i32(x.done), ray, p)
+    }
+}
+
+/// The kernel over any four-lane [`Real4`].
+#[inline(always)]
+fn intersect_in<L: Real4>(ray: &Ray4, p: &Plane4, env: impl FnOnce() -> bool) -> PlaneHit4 {
+    let w = L::widen;
+    let x = decide(
         ray.origin.map(w),
         ray.dir.map(w),
         p.point.map(w),
         p.normal.map(w),
-        1.0,
     );
-    let hit = f.hit & certify(f.t, f.r, f.a);
-    let (h, par) = (hit.lanes(), f.parallel.lanes());
-    let class = |i: usize| {
-        if h[i] {
-            0
-        } else if par[i] {
-            1
-        } else {
-            2
-        }
-    };
-    let mut out = PlaneHit4 {
-        class: i32x4::from([0, 1, 2, 3].map(class)),
-        t: f32x4::from(F64x4::select(hit, f.t, F64x4::splat(f64::NAN)).to_f32()),
-    };
-    let done = (hit | f.parallel | f.in_plane).only_if(subnormals_work());
-    if !done.all() {
-        out.settle(done, ray, p);
-    }
-    out
+    finish(x, env, ray, p)
 }
 
 impl PlaneHit4 {
-    /// Replaces every lane not `done` with the scalar stages' answer.
+    /// Replaces every lane not `done` (and, with subnormals flushed, every
+    /// lane) with the scalar stages' answer.
     #[cold]
     #[inline(never)]
-    fn settle(&mut self, done: M4, ray: &Ray4, p: &Plane4) {
+    fn settle(h: [i32x4; 2], done: i32x4, ray: &Ray4, p: &Plane4) -> Self {
+        let (class, t): (i32x4, f32x4) = (h[0], cast(h[1]));
         let rays = ray.to_rays();
         let (a, n) = (scatter3(p.point), scatter3(p.normal));
-        let (mut class, mut t) = (self.class.to_array(), self.t.to_array());
-        let done = done.lanes();
-        for i in (0..4).filter(|&i| !done[i]) {
+        let (mut class, mut t) = (class.to_array(), t.to_array());
+        let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
+        for i in (0..4).filter(|&i| done[i] == 0) {
             (class[i], t[i]) = match reference::escalate(&rays[i], &Plane::new(a[i], n[i])).0 {
                 PlaneHit::Hit(x) => (0, x),
                 PlaneHit::Parallel => (1, f32::NAN),
                 PlaneHit::InPlane => (2, f32::NAN),
             };
         }
-        *self = PlaneHit4 {
+        PlaneHit4 {
             class: i32x4::from(class),
             t: f32x4::from(t),
-        };
+        }
     }
 
     /// The four results as scalar values.
@@ -173,5 +323,47 @@ impl PlaneHit4 {
         let ok_all = every & t_min.simd_le(t_max);
         let t = ok.select(self.t, ok_all.select(t_min, f32x4::splat(f32::INFINITY)));
         (ok | ok_all, t)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::hit::same_bits;
+
+    /// The baseline copy of the batch (pairs of [`F64x4`]) gives what the
+    /// baseline one-packet kernel gives, odd tails included: where the CPU
+    /// has AVX2, [`intersect_packets`] never takes this copy.
+    #[test]
+    fn baseline_packets_equal_one_packet_at_a_time() {
+        let p = Plane4::from_planes(
+            [
+                glam::Vec3::Y,
+                glam::Vec3::X,
+                glam::Vec3::new(1.0, 1.0, 0.0),
+                glam::Vec3::ZERO,
+            ]
+            .map(|n| Plane::new(glam::Vec3::new(0.0, 0.5, 0.0), n)),
+        );
+        let rays: Vec<Ray4> = (0..7)
+            .map(|i| {
+                let d = [0, 1, 2, 3].map(|k| {
+                    glam::Vec3::new(0.1 * (i + k) as f32 - 0.3, 1.0 - 0.2 * k as f32, 0.05)
+                });
+                Ray4::from_rays(d.map(|d| crate::Ray::new(glam::Vec3::new(0.1, -3.0, 0.0), d)))
+            })
+            .collect();
+        let mut out = vec![intersect_baseline(&rays[0], &p); rays.len()];
+        packets_in::<F64x4>(&rays, &p, &mut out);
+        let mut classes = std::collections::BTreeSet::new();
+        for (r, h) in rays.iter().zip(&out) {
+            let want = intersect_baseline(r, &p).lanes();
+            assert!(
+                h.lanes().iter().zip(&want).all(|(x, y)| same_bits(x, y)),
+                "{r:?}"
+            );
+            classes.extend(want.map(|w| format!("{w:?}").chars().take(3).collect::<String>()));
+        }
+        assert!(classes.len() >= 2, "{classes:?}");
     }
 }

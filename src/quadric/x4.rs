@@ -3,9 +3,12 @@
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
 use super::{Quadric, QuadricHit, kernel, reference};
+#[cfg(target_arch = "x86_64")]
+use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
-use crate::num::real::{F64x4, M4, Real};
+use crate::num::real::{F64x4, Pair, Real, Real4};
 use crate::ray4::Ray4;
+use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
 
 /// Four quadrics, structure-of-arrays: one `f32x4` per coefficient.
@@ -86,55 +89,239 @@ pub struct QuadricHit4 {
 /// ```
 #[inline]
 pub fn intersect(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
-    let w = |v: f32x4| F64x4::from_f32(v.to_array());
-    let f = kernel::filter(&q.coeffs.map(w), ray.origin.map(w), ray.dir.map(w), 1.0);
+    #[cfg(target_arch = "x86_64")]
+    if let Some(avx2) = Avx2::detect() {
+        return intersect_avx2(avx2, ray, q);
+    }
+    intersect_baseline(ray, q)
+}
+
+/// [`intersect`] on the baseline lanes, [`F64x4`]: two SSE2 registers in a
+/// default x86-64 build.
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, quadric::{Quadric, QuadricHit, x4}};
+/// use glam::Vec3;
+/// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+/// let r = Ray4::splat(Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X));
+/// assert_eq!(x4::intersect_baseline(&r, &x4::Quadric4::splat(&cyl)).lanes(), [QuadricHit::Two(4.0, 6.0); 4]);
+/// ```
+#[inline]
+pub fn intersect_baseline(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
+    intersect_in::<F64x4>(ray, q, subnormals_work)
+}
+
+/// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
+/// and entered with the token that proves them. The same bits as
+/// [`intersect_baseline`].
+///
+/// ```
+/// use rayoracle::{Ray, num::avx::Avx2, ray4::Ray4, quadric::{Quadric, x4}};
+/// use glam::Vec3;
+/// let cyl = x4::Quadric4::splat(&Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]));
+/// let r = Ray4::splat(Ray::new(Vec3::new(-5.0, 0.3, 0.0), Vec3::new(1.0, 0.1, 0.0)));
+/// if let Some(avx2) = Avx2::detect() {
+///     assert_eq!(x4::intersect_avx2(avx2, &r, &cyl).lanes(), x4::intersect_baseline(&r, &cyl).lanes());
+/// }
+/// ```
+#[cfg(target_arch = "x86_64")]
+#[inline]
+pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
+    #[target_feature(enable = "avx2,fma")]
+    fn run(_: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
+        intersect_in::<Avx4>(ray, q, subnormals_work)
+    }
+    // SAFETY: the token exists only where AVX2 and FMA were detected.
+    // Justified by the kernels bench figures in `crate::num::avx`.
+    unsafe { run(avx2, ray, q) }
+}
+
+/// [`intersect`] over many packets: `out[i] = intersect(&rays[i], q)` for
+/// every `i` below the shorter length, two packets at a time as eight
+/// lanes ([`Pair`]), with the floating-point environment read once.
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, quadric::{Quadric, x4}};
+/// use glam::Vec3;
+/// let cyl = x4::Quadric4::splat(&Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]));
+/// let rays: Vec<Ray4> = (0..3).map(|i| Ray4::splat(Ray::new(Vec3::new(-5.0, 0.5 * i as f32, 0.0), Vec3::X))).collect();
+/// let mut out = vec![x4::intersect(&rays[0], &cyl); 3];
+/// x4::intersect_packets(&rays, &cyl, &mut out);
+/// for (r, h) in rays.iter().zip(&out) {
+///     assert_eq!(h.lanes(), x4::intersect(r, &cyl).lanes());
+/// }
+/// ```
+pub fn intersect_packets(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(avx2) = Avx2::detect() {
+        #[target_feature(enable = "avx2,fma")]
+        fn run(_: Avx2, rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
+            packets_in::<Avx4>(rays, q, out)
+        }
+        // SAFETY: the token exists only where AVX2 and FMA were detected.
+        // Justified by the kernels bench figures in `crate::num::avx`.
+        return unsafe { run(avx2, rays, q, out) };
+    }
+    packets_in::<F64x4>(rays, q, out)
+}
+
+/// The ten coefficients widened, written out: `map` over ten lanes is not
+/// always inlined, and out of line the AVX conversion would be a call.
+#[inline(always)]
+fn widen10<L: Real4>(c: &[f32x4; 10]) -> [L; 10] {
+    let w = L::widen;
+    [
+        w(c[0]),
+        w(c[1]),
+        w(c[2]),
+        w(c[3]),
+        w(c[4]),
+        w(c[5]),
+        w(c[6]),
+        w(c[7]),
+        w(c[8]),
+        w(c[9]),
+    ]
+}
+
+/// [`intersect_packets`] over any four-lane [`Real4`].
+#[inline(always)]
+fn packets_in<L: Real4>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
+    let env = subnormals_work();
+    let k = widen10::<L>(&q.coeffs);
+    let k2 = [
+        Pair(k[0], k[0]),
+        Pair(k[1], k[1]),
+        Pair(k[2], k[2]),
+        Pair(k[3], k[3]),
+        Pair(k[4], k[4]),
+        Pair(k[5], k[5]),
+        Pair(k[6], k[6]),
+        Pair(k[7], k[7]),
+        Pair(k[8], k[8]),
+        Pair(k[9], k[9]),
+    ];
+    let len = rays.len().min(out.len());
+    let mut pairs = rays[..len].chunks_exact(2);
+    let mut outs = out[..len].chunks_exact_mut(2);
+    for (pk, o) in (&mut pairs).zip(&mut outs) {
+        let (o2, d2) = (
+            Pair::widen3(&pk[0].origin, &pk[1].origin),
+            Pair::widen3(&pk[0].dir, &pk[1].dir),
+        );
+        let [x, y] = decide(&k2, o2, d2).halves();
+        o[0] = finish(x, || env, &pk[0], q);
+        o[1] = finish(y, || env, &pk[1], q);
+    }
+    if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
+        let (o1, d1) = (one.origin.map(L::widen), one.dir.map(L::widen));
+        *o = finish(decide(&k, o1, d1), || env, one, q);
+    }
+}
+
+/// What the lanes decide, before any conversion.
+struct Decided<L: Real> {
+    two: L::Mask,
+    one: L::Mask,
+    all: L::Mask,
+    done: L::Mask,
+    /// The smaller (or only) root, NaN where there is none.
+    lo: L,
+    /// The larger (or only) root, NaN where there is none.
+    hi: L,
+}
+
+impl<L: Real> Decided<Pair<L>> {
+    #[inline(always)]
+    fn halves(self) -> [Decided<L>; 2] {
+        [
+            Decided {
+                two: self.two.0,
+                one: self.one.0,
+                all: self.all.0,
+                done: self.done.0,
+                lo: self.lo.0,
+                hi: self.hi.0,
+            },
+            Decided {
+                two: self.two.1,
+                one: self.one.1,
+                all: self.all.1,
+                done: self.done.1,
+                lo: self.lo.1,
+                hi: self.hi.1,
+            },
+        ]
+    }
+}
+
+/// The filter and [`certify`] over any [`Real`].
+#[inline(always)]
+fn decide<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3]) -> Decided<L> {
+    let f = kernel::filter(k, o, d, 1.0);
     let ok1 = certify(f.t1, f.r1, f.a1);
     let two = f.two & certify(f.t0, f.r0, f.a0) & ok1;
     let one = f.linear & ok1;
     // Disjoint enclosures are in the exact order; overlapping ones round
     // to the same f32. The linear root is t1.
     let swap = (two & f.t0.gt(f.t1)) | one;
-    let nan = F64x4::splat(f64::NAN);
-    let lo = F64x4::select(two | one, F64x4::select(swap, f.t1, f.t0), nan);
-    let hi = F64x4::select(two, F64x4::select(swap, f.t0, f.t1), lo);
-    let (t, o, a) = (two.lanes(), one.lanes(), f.all.lanes());
-    let class = |i: usize| {
-        if t[i] {
-            2
-        } else if o[i] {
-            1
-        } else if a[i] {
-            3
-        } else {
-            0
-        }
-    };
-    let mut out = QuadricHit4 {
-        class: i32x4::from([0, 1, 2, 3].map(class)),
-        t0: f32x4::from(lo.to_f32()),
-        t1: f32x4::from(hi.to_f32()),
-    };
-    let done = (two | one | f.none | f.all).only_if(subnormals_work());
-    if !done.all() {
-        out.settle(done, ray, q);
+    let nan = L::splat(f64::NAN);
+    let lo = L::select(two | one, L::select(swap, f.t1, f.t0), nan);
+    Decided {
+        two,
+        one,
+        all: f.all,
+        done: two | one | f.none | f.all,
+        lo,
+        hi: L::select(two, L::select(swap, f.t0, f.t1), lo),
     }
-    out
+}
+
+/// The results of one packet; `env` says whether the floating-point
+/// environment keeps subnormals (read only where every lane is done).
+#[inline(always)]
+fn finish<L: Real4>(
+    x: Decided<L>,
+    env: impl FnOnce() -> bool,
+    ray: &Ray4,
+    q: &Quadric4,
+) -> QuadricHit4 {
+    let (t, o, a) = (L::mask_i32(x.two), L::mask_i32(x.one), L::mask_i32(x.all));
+    let k = i32x4::splat;
+    let class = t.select(k(2), o.select(k(1), a & k(3)));
+    let (t0, t1) = (x.lo.narrow(), x.hi.narrow());
+    if L::all(x.done) && env() {
+        QuadricHit4 { class, t0, t1 }
+    } else {
+        QuadricHit4::settle([class, cast(t0), cast(t1)], L::mask_i32(x.done), ray, q)
+    }
+}
+
+/// The kernel over any four-lane [`Real4`].
+#[inline(always)]
+fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4, env: impl FnOnce() -> bool) -> QuadricHit4 {
+    let k = widen10::<L>(&q.coeffs);
+    finish(
+        decide(&k, ray.origin.map(L::widen), ray.dir.map(L::widen)),
+        env,
+        ray,
+        q,
+    )
 }
 
 impl QuadricHit4 {
-    /// Replaces every lane not `done` with the scalar stages' answer.
+    /// Replaces every lane not `done` (and, with subnormals flushed, every
+    /// lane) with the scalar stages' answer.
     #[cold]
     #[inline(never)]
-    fn settle(&mut self, done: M4, ray: &Ray4, q: &Quadric4) {
+    fn settle(h: [i32x4; 3], done: i32x4, ray: &Ray4, q: &Quadric4) -> Self {
+        let [class, t0, t1] = h;
+        let (t0, t1): (f32x4, f32x4) = (cast(t0), cast(t1));
         let rays = ray.to_rays();
         let k = q.coeffs.map(|c| c.to_array());
-        let (mut class, mut t0, mut t1) = (
-            self.class.to_array(),
-            self.t0.to_array(),
-            self.t1.to_array(),
-        );
-        let done = done.lanes();
-        for i in (0..4).filter(|&i| !done[i]) {
+        let (mut class, mut t0, mut t1) = (class.to_array(), t0.to_array(), t1.to_array());
+        let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
+        for i in (0..4).filter(|&i| done[i] == 0) {
             let quadric = Quadric::new(k.map(|c| c[i]));
             (class[i], t0[i], t1[i]) = match reference::escalate(&rays[i], &quadric).0 {
                 QuadricHit::None => (0, f32::NAN, f32::NAN),
@@ -143,11 +330,11 @@ impl QuadricHit4 {
                 QuadricHit::All => (3, f32::NAN, f32::NAN),
             };
         }
-        *self = QuadricHit4 {
+        QuadricHit4 {
             class: i32x4::from(class),
             t0: f32x4::from(t0),
             t1: f32x4::from(t1),
-        };
+        }
     }
 
     /// The four results as scalar values.
@@ -195,5 +382,42 @@ impl QuadricHit4 {
         let inf = f32x4::splat(f32::INFINITY);
         let t = ok0.select(self.t0, ok1.select(self.t1, ok_all.select(t_min, inf)));
         (ok0 | ok1 | ok_all, t)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::hit::same_bits;
+
+    /// The baseline copy of the batch (pairs of [`F64x4`]) gives what the
+    /// baseline one-packet kernel gives, odd tails included: where the CPU
+    /// has AVX2, [`intersect_packets`] never takes this copy.
+    #[test]
+    fn baseline_packets_equal_one_packet_at_a_time() {
+        let q = Quadric4::from_quadrics(
+            [-1.0, 0.0, 1.0, 1e-30]
+                .map(|j| Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, j])),
+        );
+        let rays: Vec<Ray4> = (0..7)
+            .map(|i| {
+                let d = [0, 1, 2, 3].map(|k| {
+                    glam::Vec3::new(0.1 * (i + k) as f32 - 0.3, 1.0 - 0.2 * k as f32, 0.05)
+                });
+                Ray4::from_rays(d.map(|d| crate::Ray::new(glam::Vec3::new(0.1, -3.0, 0.0), d)))
+            })
+            .collect();
+        let mut out = vec![intersect_baseline(&rays[0], &q); rays.len()];
+        packets_in::<F64x4>(&rays, &q, &mut out);
+        let mut classes = std::collections::BTreeSet::new();
+        for (r, h) in rays.iter().zip(&out) {
+            let want = intersect_baseline(r, &q).lanes();
+            assert!(
+                h.lanes().iter().zip(&want).all(|(x, y)| same_bits(x, y)),
+                "{r:?}"
+            );
+            classes.extend(want.map(|w| format!("{w:?}").chars().take(3).collect::<String>()));
+        }
+        assert!(classes.len() >= 2, "{classes:?}");
     }
 }

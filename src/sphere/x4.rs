@@ -3,9 +3,12 @@
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
 use super::{Sphere, SphereHit, kernel, reference};
+#[cfg(target_arch = "x86_64")]
+use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
-use crate::num::real::{F64x4, M4, Real};
+use crate::num::real::{F64x4, Pair, Real, Real4};
 use crate::ray4::{Ray4, gather3, scatter3};
+use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
 
 /// Four spheres, structure-of-arrays (often the same sphere four times).
@@ -86,47 +89,201 @@ pub struct SphereHit4 {
 /// ```
 #[inline]
 pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-    let w = |v: f32x4| F64x4::from_f32(v.to_array());
-    let f = kernel::filter(
-        ray.origin.map(w),
-        ray.dir.map(w),
-        s.center.map(w),
-        w(s.radius),
-        1.0,
+    #[cfg(target_arch = "x86_64")]
+    if let Some(avx2) = Avx2::detect() {
+        return intersect_avx2(avx2, ray, s);
+    }
+    intersect_baseline(ray, s)
+}
+
+/// [`intersect`] on the baseline lanes, [`F64x4`]: two SSE2 registers in a
+/// default x86-64 build.
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, sphere::{Sphere, SphereHit, x4}};
+/// use glam::Vec3;
+/// let r = Ray4::splat(Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z));
+/// let h = x4::intersect_baseline(&r, &x4::Sphere4::splat(&Sphere::new(Vec3::ZERO, 1.0)));
+/// assert_eq!(h.lanes(), [SphereHit::Two(4.0, 6.0); 4]);
+/// ```
+#[inline]
+pub fn intersect_baseline(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+    intersect_in::<F64x4>(ray, s, subnormals_work)
+}
+
+/// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
+/// and entered with the token that proves them. The same bits as
+/// [`intersect_baseline`].
+///
+/// ```
+/// use rayoracle::{Ray, num::avx::Avx2, ray4::Ray4, sphere::{Sphere, x4}};
+/// use glam::Vec3;
+/// let r = Ray4::splat(Ray::new(Vec3::new(0.3, 0.1, -5.0), Vec3::Z));
+/// let s = x4::Sphere4::splat(&Sphere::new(Vec3::ZERO, 1.0));
+/// if let Some(avx2) = Avx2::detect() {
+///     assert_eq!(x4::intersect_avx2(avx2, &r, &s).lanes(), x4::intersect_baseline(&r, &s).lanes());
+/// }
+/// ```
+#[cfg(target_arch = "x86_64")]
+#[inline]
+pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+    #[target_feature(enable = "avx2,fma")]
+    fn run(_: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+        intersect_in::<Avx4>(ray, s, subnormals_work)
+    }
+    // SAFETY: the token exists only where AVX2 and FMA were detected.
+    // Justified by the kernels bench figures in `crate::num::avx`.
+    unsafe { run(avx2, ray, s) }
+}
+
+/// [`intersect`] over many packets: `out[i] = intersect(&rays[i], s)` for
+/// every `i` below the shorter length. The packets go through two at a
+/// time as eight lanes ([`Pair`]), which interleaves two independent
+/// chains of operations, and the floating-point environment is read once.
+///
+/// ```
+/// use rayoracle::{Ray, ray4::Ray4, sphere::{Sphere, x4}};
+/// use glam::Vec3;
+/// let s = x4::Sphere4::splat(&Sphere::new(Vec3::ZERO, 1.0));
+/// let rays: Vec<Ray4> = (0..3).map(|i| Ray4::splat(Ray::new(Vec3::new(0.0, 0.3 * i as f32, -5.0), Vec3::Z))).collect();
+/// let mut out = vec![x4::intersect(&rays[0], &s); 3];
+/// x4::intersect_packets(&rays, &s, &mut out);
+/// for (r, h) in rays.iter().zip(&out) {
+///     assert_eq!(h.lanes(), x4::intersect(r, &s).lanes());
+/// }
+/// ```
+pub fn intersect_packets(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(avx2) = Avx2::detect() {
+        #[target_feature(enable = "avx2,fma")]
+        fn run(_: Avx2, rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
+            packets_in::<Avx4>(rays, s, out)
+        }
+        // SAFETY: the token exists only where AVX2 and FMA were detected.
+        // Justified by the kernels bench figures in `crate::num::avx`.
+        return unsafe { run(avx2, rays, s, out) };
+    }
+    packets_in::<F64x4>(rays, s, out)
+}
+
+/// [`intersect_packets`] over any four-lane [`Real4`].
+#[inline(always)]
+fn packets_in<L: Real4>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
+    let env = subnormals_work();
+    let c = s.center.map(L::widen);
+    let (c2, r, r2) = (
+        c.map(|x| Pair(x, x)),
+        L::widen(s.radius),
+        Pair(L::widen(s.radius), L::widen(s.radius)),
     );
+    let len = rays.len().min(out.len());
+    let mut pairs = rays[..len].chunks_exact(2);
+    let mut outs = out[..len].chunks_exact_mut(2);
+    for (pk, o) in (&mut pairs).zip(&mut outs) {
+        let (o2, d2) = (
+            Pair::widen3(&pk[0].origin, &pk[1].origin),
+            Pair::widen3(&pk[0].dir, &pk[1].dir),
+        );
+        let [x, y] = decide(o2, d2, c2, r2).halves();
+        o[0] = finish(x, || env, &pk[0], s);
+        o[1] = finish(y, || env, &pk[1], s);
+    }
+    if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
+        let (o1, d1) = (one.origin.map(L::widen), one.dir.map(L::widen));
+        *o = finish(decide(o1, d1, c, r), || env, one, s);
+    }
+}
+
+/// What the lanes decide, before any conversion: the certified two-root
+/// lanes, the lanes done, and the sorted roots (NaN where none).
+struct Decided<L: Real> {
+    two: L::Mask,
+    done: L::Mask,
+    lo: L,
+    hi: L,
+}
+
+impl<L: Real> Decided<Pair<L>> {
+    #[inline(always)]
+    fn halves(self) -> [Decided<L>; 2] {
+        [
+            Decided {
+                two: self.two.0,
+                done: self.done.0,
+                lo: self.lo.0,
+                hi: self.hi.0,
+            },
+            Decided {
+                two: self.two.1,
+                done: self.done.1,
+                lo: self.lo.1,
+                hi: self.hi.1,
+            },
+        ]
+    }
+}
+
+/// The filter and [`certify`] over any [`Real`].
+#[inline(always)]
+fn decide<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L> {
+    let f = kernel::filter(o, d, c, r, 1.0);
     let two = f.two & certify(f.t0, f.r0, f.a0) & certify(f.t1, f.r1, f.a1);
     // Disjoint enclosures are in the exact order; overlapping ones round
     // to the same f32.
     let swap = f.t0.gt(f.t1);
-    let nan = F64x4::splat(f64::NAN);
-    let lo = F64x4::select(two, F64x4::select(swap, f.t1, f.t0), nan);
-    let hi = F64x4::select(two, F64x4::select(swap, f.t0, f.t1), nan);
-    let mut out = SphereHit4 {
-        class: i32x4::from(two.lanes().map(|m| if m { 2 } else { 0 })),
-        t0: f32x4::from(lo.to_f32()),
-        t1: f32x4::from(hi.to_f32()),
-    };
-    let done = (f.none | two).only_if(subnormals_work());
-    if !done.all() {
-        out.settle(done, ray, s);
+    let nan = L::splat(f64::NAN);
+    Decided {
+        two,
+        done: f.none | two,
+        lo: L::select(two, L::select(swap, f.t1, f.t0), nan),
+        hi: L::select(two, L::select(swap, f.t0, f.t1), nan),
     }
-    out
+}
+
+/// The results of one packet; `env` says whether the floating-point
+/// environment keeps subnormals (read only where every lane is done).
+#[inline(always)]
+fn finish<L: Real4>(
+    x: Decided<L>,
+    env: impl FnOnce() -> bool,
+    ray: &Ray4,
+    s: &Sphere4,
+) -> SphereHit4 {
+    let class = L::mask_i32(x.two) & i32x4::splat(2);
+    let (t0, t1) = (x.lo.narrow(), x.hi.narrow());
+    if L::all(x.done) && env() {
+        SphereHit4 { class, t0, t1 }
+    } else {
+        SphereHit4::settle([class, cast(t0), cast(t1)], L::mask_i32(x.done), ray, s)
+    }
+}
+
+/// The kernel over any four-lane [`Real4`].
+#[inline(always)]
+fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl FnOnce() -> bool) -> SphereHit4 {
+    let w = L::widen;
+    let x = decide(
+        ray.origin.map(w),
+        ray.dir.map(w),
+        s.center.map(w),
+        w(s.radius),
+    );
+    finish(x, env, ray, s)
 }
 
 impl SphereHit4 {
-    /// Replaces every lane not `done` with the scalar stages' answer.
+    /// Replaces every lane not `done` (and, with subnormals flushed, every
+    /// lane) with the scalar stages' answer.
     #[cold]
     #[inline(never)]
-    fn settle(&mut self, done: M4, ray: &Ray4, s: &Sphere4) {
+    fn settle(h: [i32x4; 3], done: i32x4, ray: &Ray4, s: &Sphere4) -> Self {
+        let [class, t0, t1] = h;
+        let (t0, t1): (f32x4, f32x4) = (cast(t0), cast(t1));
         let rays = ray.to_rays();
         let (c, r) = (scatter3(s.center), s.radius.to_array());
-        let (mut class, mut t0, mut t1) = (
-            self.class.to_array(),
-            self.t0.to_array(),
-            self.t1.to_array(),
-        );
-        let done = done.lanes();
-        for i in (0..4).filter(|&i| !done[i]) {
+        let (mut class, mut t0, mut t1) = (class.to_array(), t0.to_array(), t1.to_array());
+        let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
+        for i in (0..4).filter(|&i| done[i] == 0) {
             let (k, a, b) = match reference::escalate(&rays[i], &Sphere::new(c[i], r[i])).0 {
                 SphereHit::None => (0, f32::NAN, f32::NAN),
                 SphereHit::Tangent(t) => (1, t, t),
@@ -134,11 +291,11 @@ impl SphereHit4 {
             };
             (class[i], t0[i], t1[i]) = (k, a, b);
         }
-        *self = SphereHit4 {
+        SphereHit4 {
             class: i32x4::from(class),
             t0: f32x4::from(t0),
             t1: f32x4::from(t1),
-        };
+        }
     }
 }
 
@@ -207,4 +364,40 @@ pub fn intersect_slice(rays: &[crate::Ray], sphere: &Sphere) -> Vec<SphereHit> {
         &mut out,
     );
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::hit::same_bits;
+
+    /// The baseline copy of the batch (pairs of [`F64x4`]) gives what the
+    /// baseline one-packet kernel gives, odd tails included: where the CPU
+    /// has AVX2, [`intersect_packets`] never takes this copy.
+    #[test]
+    fn baseline_packets_equal_one_packet_at_a_time() {
+        let s = Sphere4::from_spheres(
+            [0.5, 1.0, 2.0, 1e-30].map(|r| Sphere::new(glam::Vec3::new(0.0, 0.5, 0.0), r)),
+        );
+        let rays: Vec<Ray4> = (0..7)
+            .map(|i| {
+                let d = [0, 1, 2, 3].map(|k| {
+                    glam::Vec3::new(0.1 * (i + k) as f32 - 0.3, 1.0 - 0.2 * k as f32, 0.05)
+                });
+                Ray4::from_rays(d.map(|d| crate::Ray::new(glam::Vec3::new(0.1, -3.0, 0.0), d)))
+            })
+            .collect();
+        let mut out = vec![intersect_baseline(&rays[0], &s); rays.len()];
+        packets_in::<F64x4>(&rays, &s, &mut out);
+        let mut classes = std::collections::BTreeSet::new();
+        for (r, h) in rays.iter().zip(&out) {
+            let want = intersect_baseline(r, &s).lanes();
+            assert!(
+                h.lanes().iter().zip(&want).all(|(x, y)| same_bits(x, y)),
+                "{r:?}"
+            );
+            classes.extend(want.map(|w| format!("{w:?}").chars().take(3).collect::<String>()));
+        }
+        assert!(classes.len() >= 2, "{classes:?}");
+    }
 }
