@@ -160,3 +160,84 @@ fn camera_construction_errors_are_not_in_the_catalogue() {
         }
     }
 }
+
+/// A candidate's check as a status or a message.
+fn status(out: Result<check::CaseReport, check::Violation>) -> Result<Status, String> {
+    out.map(|r| r.status).map_err(|v| v.to_string())
+}
+
+/// Each stage after the filter, called on its own on every plane, sphere
+/// and quadric case of the catalogue (not only the cases the earlier
+/// stages leave), answers the oracle's bits wherever it answers; and the
+/// double-word stage answers most of the cases of the families it is for.
+#[test]
+fn every_later_stage_alone_matches_the_oracle() {
+    use rayoracle::stage::Stage::{self, DoubleWord, Tracked};
+    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    let mut failures = Vec::new();
+    let mut answered = std::collections::BTreeMap::<(&str, Stage), (usize, usize)>::new();
+    let c = catalogue();
+    for family in &c.families {
+        for (i, case) in family.cases.iter().enumerate() {
+            let outs: Vec<(Stage, Option<Result<Status, String>>)> = match case {
+                Case::Plane(r, p) => {
+                    let (o, d, a, n) = (w(r.origin), w(r.dir), w(p.point), w(p.normal));
+                    let ck = |h: Option<_>| h.map(|h| status(check::check_plane(r, p, h)));
+                    vec![
+                        (Tracked, ck(plane::kernel::tracked(o, d, a, n))),
+                        (DoubleWord, ck(plane::kernel::double_word(o, d, a, n, 1.0))),
+                    ]
+                }
+                Case::Sphere(r, s) => {
+                    let (o, d, m, rr) = (w(r.origin), w(r.dir), w(s.center), f64::from(s.radius));
+                    let ck = |h: Option<_>| h.map(|h| status(check::check_sphere(r, s, h)));
+                    vec![
+                        (Tracked, ck(sphere::kernel::tracked(o, d, m, rr))),
+                        (
+                            DoubleWord,
+                            ck(sphere::kernel::double_word(o, d, m, rr, 1.0)),
+                        ),
+                    ]
+                }
+                Case::Quadric(r, q) => {
+                    let (k, o, d) = (q.coeffs.map(f64::from), w(r.origin), w(r.dir));
+                    let ck = |h: Option<_>| h.map(|h| status(check::check_quadric(r, q, h)));
+                    vec![
+                        (Tracked, ck(quadric::kernel::tracked(&k, o, d))),
+                        (DoubleWord, ck(quadric::kernel::double_word(&k, o, d, 1.0))),
+                    ]
+                }
+                Case::Camera(..) => continue,
+            };
+            for (stage, out) in outs {
+                let e = answered.entry((family.name.as_str(), stage)).or_default();
+                e.1 += 1;
+                match out {
+                    None => {}
+                    Some(Ok(Status::Checked)) => e.0 += 1,
+                    Some(other) => {
+                        failures.push(format!("{} #{i} {}: {other:?}", family.name, stage.name()))
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures[..failures.len().min(20)].join("\n")
+    );
+    for name in [
+        "sphere/far-tiny",
+        "plane/near-parallel",
+        "quadric/double-plane",
+        "quadric/alpha-near-zero-rotated",
+    ] {
+        let (ok, n) = answered[&(name, DoubleWord)];
+        assert!(
+            ok * 2 > n,
+            "{name}: the double-word stage answered {ok} of {n}"
+        );
+    }
+}

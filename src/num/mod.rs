@@ -31,5 +31,6 @@ pub use ff::Ff;
 pub use lane::Lane;
 pub use real::Real;
 pub mod certify;
+pub mod dd;
 pub mod real;
 pub mod tracked;

@@ -1,5 +1,6 @@
 //! The scalar reference: the [filter](super::kernel) at `f64`, then the
-//! exact oracle for whatever it leaves undecided.
+//! later stages ([`crate::stage`]) for whatever it leaves undecided, the
+//! exact oracle last.
 
 use super::{Plane, PlaneHit, exact, kernel};
 use crate::Ray;
@@ -39,7 +40,7 @@ pub fn intersect_staged(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
     intersect_shrunk(ray, plane, 1.0)
 }
 
-/// [`intersect_staged`] with the filter's bounds multiplied by `shrink`:
+/// [`intersect_staged`] with every stage's bounds multiplied by `shrink`:
 /// for the tests that show a bound too small gives wrong answers.
 #[doc(hidden)]
 #[inline(always)]
@@ -62,23 +63,35 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
     } else if f.in_plane {
         (PlaneHit::InPlane, Stage::Filter)
     } else {
-        escalate(ray, plane)
+        escalate_shrunk(ray, plane, shrink)
     }
 }
 
 /// The stages after the filter: f64 arithmetic that proves itself exact
-/// ([`kernel::tracked`]), then the exact oracle. The tracked stage, too,
-/// assumes subnormals work, so this checks for itself: x4 sends its
+/// ([`kernel::tracked`]), double-word arithmetic
+/// ([`kernel::double_word`]), then the exact oracle. The later stages,
+/// too, assume subnormals work, so this checks for itself: x4 sends its
 /// undecided lanes here, and all of them when FTZ or DAZ is on.
 #[cold]
 #[inline(never)]
 pub(crate) fn escalate(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
+    escalate_shrunk(ray, plane, 1.0)
+}
+
+/// [`escalate`] with the bounds of its stages multiplied by `shrink`.
+#[cold]
+#[inline(never)]
+fn escalate_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
     if !subnormals_work() {
         return (exact_stage(ray, plane), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.to_array().map(f64::from);
-    match kernel::tracked(w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal)) {
-        Some(h) => (h, Stage::Tracked),
+    let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
+    if let Some(h) = kernel::tracked(o, d, a, n) {
+        return (h, Stage::Tracked);
+    }
+    match kernel::double_word(o, d, a, n, shrink) {
+        Some(h) => (h, Stage::DoubleWord),
         None => (exact_stage(ray, plane), Stage::Exact),
     }
 }

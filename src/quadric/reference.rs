@@ -1,5 +1,6 @@
 //! The scalar reference: the [filter](super::kernel) at `f64`, then the
-//! exact oracle for whatever it leaves undecided.
+//! later stages ([`crate::stage`]) for whatever it leaves undecided, the
+//! exact oracle last.
 
 use super::{Quadric, QuadricHit, exact, kernel};
 use crate::Ray;
@@ -41,7 +42,7 @@ pub fn intersect_staged(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
     intersect_shrunk(ray, quadric, 1.0)
 }
 
-/// [`intersect_staged`] with the filter's bounds multiplied by `shrink`:
+/// [`intersect_staged`] with every stage's bounds multiplied by `shrink`:
 /// for the tests that show a bound too small gives wrong answers.
 #[doc(hidden)]
 #[inline(always)]
@@ -72,23 +73,35 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
     } else if f.all {
         (QuadricHit::All, Stage::Filter)
     } else {
-        escalate(ray, quadric)
+        escalate_shrunk(ray, quadric, shrink)
     }
 }
 
 /// The stages after the filter: f64 arithmetic that proves itself exact
-/// ([`kernel::tracked`]), then the exact oracle. The tracked stage, too,
-/// assumes subnormals work, so this checks for itself: x4 sends its
+/// ([`kernel::tracked`]), double-word arithmetic
+/// ([`kernel::double_word`]), then the exact oracle. The later stages,
+/// too, assume subnormals work, so this checks for itself: x4 sends its
 /// undecided lanes here, and all of them when FTZ or DAZ is on.
 #[cold]
 #[inline(never)]
 pub(crate) fn escalate(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
+    escalate_shrunk(ray, quadric, 1.0)
+}
+
+/// [`escalate`] with the bounds of its stages multiplied by `shrink`.
+#[cold]
+#[inline(never)]
+fn escalate_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
     if !subnormals_work() {
         return (exact_stage(ray, quadric), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.to_array().map(f64::from);
-    match kernel::tracked(&quadric.coeffs.map(f64::from), w(ray.origin), w(ray.dir)) {
-        Some(h) => (h, Stage::Tracked),
+    let (k, o, d) = (quadric.coeffs.map(f64::from), w(ray.origin), w(ray.dir));
+    if let Some(h) = kernel::tracked(&k, o, d) {
+        return (h, Stage::Tracked);
+    }
+    match kernel::double_word(&k, o, d, shrink) {
+        Some(h) => (h, Stage::DoubleWord),
         None => (exact_stage(ray, quadric), Stage::Exact),
     }
 }

@@ -73,6 +73,7 @@
 
 use super::SphereHit;
 use crate::num::certify::{SLACK, U, certify, quotient_bound};
+use crate::num::dd::{Acc, quotient, two_roots, two_sum};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
 
@@ -202,4 +203,69 @@ pub fn tracked(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Option<SphereHi
     let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
     let ok = certify(t0, 8.0 * U, 0.0) && certify(t1, 8.0 * U, 0.0);
     ok.then_some(SphereHit::Two(t0 as f32, t1 as f32))
+}
+
+/// The double-word stage ([`crate::num::dd`]): `f = o − C` split exactly
+/// into two words by TwoSum, then `a = Σdᵢ²`, `b = Σfᵢdᵢ` and `c = Σfᵢ² −
+/// R²` as sums of exact products, and `Δ = b² − ac` as the sum of the
+/// exact products of their words. Every value is a multiple of `2⁻²⁹⁸`
+/// (products of two f32 values and their sums), every product one of
+/// `2⁻⁵⁹⁶`, so TwoProduct is exact ([`crate::num::dd`]). Where no low word
+/// rounded, `Δ` is exact, and so is its sign and its zero; otherwise its
+/// bound (the low words' and, through [`Acc::add_dd_prod`], those of `a`,
+/// `b`, `c`) decides the sign or nothing. A tangent's root `−b/a`, and two
+/// roots ([`two_roots`]), are then certified from the words' leading
+/// values with `|lo| + err` as their bounds. Every bound is multiplied by
+/// `shrink`. `None` where the class or a root is undecided.
+///
+/// ```
+/// use rayoracle::sphere::{SphereHit, kernel::{double_word, tracked}};
+/// // Grazing R = 3 at (0, 3, 0) from z = 0.1f32 along 0.1f32: Δ = 0, but
+/// // b² and ac have 96 significant bits, so f64 rounds them.
+/// let (o, d) = ([0.0, 3.0, 0.1f32 as f64], [0.0, 0.0, 0.1f32 as f64]);
+/// assert_eq!(tracked(o, d, [0.0; 3], 3.0), None);
+/// assert_eq!(double_word(o, d, [0.0; 3], 3.0, 1.0), Some(SphereHit::Tangent(-1.0)));
+/// // A far tiny sphere, hit through its centre.
+/// let h = double_word([0.0, 0.0, -1e6], [0.0, 0.0, 1.0], [0.0; 3], 1.0, 1.0);
+/// assert_eq!(h, Some(SphereHit::Two(999_999.0, 1_000_001.0)));
+/// ```
+///
+/// [`Acc::add_dd_prod`]: crate::num::dd::Acc::add_dd_prod
+/// [`two_roots`]: crate::num::dd::two_roots
+pub fn double_word(
+    o: [f64; 3],
+    d: [f64; 3],
+    c: [f64; 3],
+    r: f64,
+    shrink: f64,
+) -> Option<SphereHit> {
+    let (mut a, mut b, mut cq) = (Acc::new(), Acc::new(), Acc::new());
+    for i in 0..3 {
+        let (fh, fl) = two_sum(o[i], -c[i]);
+        a.add(d[i] * d[i]);
+        b.add_prod(fh, d[i]);
+        b.add_prod(fl, d[i]);
+        cq.add_prod(fh, fh);
+        cq.add_prod(fh + fh, fl);
+        cq.add_prod(fl, fl);
+    }
+    cq.add(-(r * r));
+    let (a, b, cq) = (a.finish(shrink), b.finish(shrink), cq.finish(shrink));
+    let mut disc = Acc::new();
+    disc.add_dd_prod(b, b);
+    disc.add_dd_prod(a.scale(-1.0), cq);
+    let disc = disc.finish(shrink);
+    if a.hi == 0.0 || (disc.sign_known() && disc.hi < 0.0) {
+        // a = Σdᵢ² rounds to 0 only where every dᵢ is 0.
+        return Some(SphereHit::None);
+    }
+    if disc.is_zero() {
+        let t = quotient(b.approx(), a.approx(), shrink)?;
+        return Some(SphereHit::Tangent(-t + 0.0));
+    }
+    if !disc.sign_known() {
+        return None;
+    }
+    let (t0, t1) = two_roots(a.approx(), b.approx(), cq.approx(), disc.approx(), shrink)?;
+    Some(SphereHit::Two(t0, t1))
 }

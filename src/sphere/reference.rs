@@ -1,5 +1,6 @@
 //! The scalar reference: the [filter](super::kernel) at `f64`, then the
-//! exact oracle for whatever it leaves undecided.
+//! later stages ([`crate::stage`]) for whatever it leaves undecided, the
+//! exact oracle last.
 
 use super::{Sphere, SphereHit, exact, kernel};
 use crate::Ray;
@@ -43,7 +44,7 @@ pub fn intersect_staged(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
     intersect_shrunk(ray, sphere, 1.0)
 }
 
-/// [`intersect_staged`] with the filter's bounds multiplied by `shrink`:
+/// [`intersect_staged`] with every stage's bounds multiplied by `shrink`:
 /// for the tests that show a bound too small gives wrong answers.
 #[doc(hidden)]
 #[inline(always)]
@@ -72,27 +73,39 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
         };
         return (SphereHit::Two(t0 as f32, t1 as f32), Stage::Filter);
     }
-    escalate(ray, sphere)
+    escalate_shrunk(ray, sphere, shrink)
 }
 
 /// The stages after the filter: f64 arithmetic that proves itself exact
-/// ([`kernel::tracked`]), then the exact oracle. The tracked stage, too,
-/// assumes subnormals work, so this checks for itself: x4 sends its
+/// ([`kernel::tracked`]), double-word arithmetic
+/// ([`kernel::double_word`]), then the exact oracle. The later stages,
+/// too, assume subnormals work, so this checks for itself: x4 sends its
 /// undecided lanes here, and all of them when FTZ or DAZ is on.
 #[cold]
 #[inline(never)]
 pub(crate) fn escalate(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
+    escalate_shrunk(ray, sphere, 1.0)
+}
+
+/// [`escalate`] with the bounds of its stages multiplied by `shrink`.
+#[cold]
+#[inline(never)]
+fn escalate_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage) {
     if !subnormals_work() {
         return (exact_stage(ray, sphere), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.to_array().map(f64::from);
-    match kernel::tracked(
+    let (o, d, c, r) = (
         w(ray.origin),
         w(ray.dir),
         w(sphere.center),
         f64::from(sphere.radius),
-    ) {
-        Some(h) => (h, Stage::Tracked),
+    );
+    if let Some(h) = kernel::tracked(o, d, c, r) {
+        return (h, Stage::Tracked);
+    }
+    match kernel::double_word(o, d, c, r, shrink) {
+        Some(h) => (h, Stage::DoubleWord),
         None => (exact_stage(ray, sphere), Stage::Exact),
     }
 }
