@@ -172,7 +172,7 @@ fn status(out: Result<check::CaseReport, check::Violation>) -> Result<Status, St
 /// double-word stage answers most of the cases of the families it is for.
 #[test]
 fn every_later_stage_alone_matches_the_oracle() {
-    use rayoracle::stage::Stage::{self, DoubleWord, Tracked};
+    use rayoracle::stage::Stage::{self, DoubleWord, Tight, Tracked};
     let w = |v: glam::Vec3| v.to_array().map(f64::from);
     let mut failures = Vec::new();
     let mut answered = std::collections::BTreeMap::<(&str, Stage), (usize, usize)>::new();
@@ -192,6 +192,7 @@ fn every_later_stage_alone_matches_the_oracle() {
                     let (o, d, m, rr) = (w(r.origin), w(r.dir), w(s.center), f64::from(s.radius));
                     let ck = |h: Option<_>| h.map(|h| status(check::check_sphere(r, s, h)));
                     vec![
+                        (Tight, ck(sphere::kernel::tight(o, d, m, rr, 1.0))),
                         (Tracked, ck(sphere::kernel::tracked(o, d, m, rr))),
                         (
                             DoubleWord,
@@ -240,4 +241,72 @@ fn every_later_stage_alone_matches_the_oracle() {
             "{name}: the double-word stage answered {ok} of {n}"
         );
     }
+}
+
+/// The sphere's later stages, each on its own, on seeded random spheres
+/// seen from afar and grazed: near tangents (the aim off the rim by
+/// `2⁻ᵏ R`), exact-looking tangents with non-dyadic data, far tiny
+/// spheres. Wherever a stage answers, it answers the oracle's bits; and
+/// the tight and double-word stages answer a good share.
+#[test]
+fn sphere_stages_alone_match_the_oracle_on_grazing_rays() {
+    use glam::Vec3;
+    use rand::rngs::SmallRng;
+    use rand::{Rng, SeedableRng};
+    let mut rng = SmallRng::seed_from_u64(16);
+    let w = |v: Vec3| v.to_array().map(f64::from);
+    let (mut tight, mut dd, mut failures) = (0, 0, Vec::new());
+    let n = 3000;
+    for i in 0..n {
+        let c = Vec3::new(
+            rng.random_range(-1e3..1e3),
+            rng.random_range(-1e3..1e3),
+            rng.random_range(-1e3..1e3),
+        );
+        let r = 2f32.powi(rng.random_range(-6..6)) * rng.random_range(0.5f32..1.0);
+        let dist = r * 10f32.powi(rng.random_range(0..7));
+        let toward = Vec3::new(rng.random(), rng.random(), rng.random()) - 0.5;
+        let along = toward.normalize_or(Vec3::X);
+        let side = along.any_orthonormal_vector();
+        let off = match i % 3 {
+            0 => 1.0,
+            1 => 1.0 + 2f32.powi(-rng.random_range(1..24)),
+            _ => rng.random_range(0.0..1.2),
+        };
+        let o = c - along * dist;
+        let aim = c + side * (r * off);
+        let ray = rayoracle::Ray::new(o, aim - o);
+        let s = sphere::Sphere::new(c, r);
+        let args = (w(ray.origin), w(ray.dir), w(s.center), f64::from(s.radius));
+        for (stage, h) in [
+            (
+                "tight",
+                sphere::kernel::tight(args.0, args.1, args.2, args.3, 1.0),
+            ),
+            (
+                "dd",
+                sphere::kernel::double_word(args.0, args.1, args.2, args.3, 1.0),
+            ),
+        ] {
+            let Some(h) = h else { continue };
+            *if stage == "tight" {
+                &mut tight
+            } else {
+                &mut dd
+            } += 1;
+            match status(check::check_sphere(&ray, &s, h)) {
+                Ok(Status::Checked) => {}
+                other => failures.push(format!("#{i} {stage}: {ray:?} {s:?} {h:?}: {other:?}")),
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{}",
+        failures[..failures.len().min(10)].join("\n")
+    );
+    assert!(
+        tight * 2 > n && dd * 3 > 2 * n,
+        "tight {tight}, dd {dd} of {n}"
+    );
 }

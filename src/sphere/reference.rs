@@ -76,7 +76,8 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
     escalate_shrunk(ray, sphere, shrink)
 }
 
-/// The stages after the filter: f64 arithmetic that proves itself exact
+/// The stages after the filter: f64 arithmetic with a tighter bound
+/// ([`kernel::tight`]), f64 arithmetic that proves itself exact
 /// ([`kernel::tracked`]), double-word arithmetic
 /// ([`kernel::double_word`]), then the exact oracle. The later stages,
 /// too, assume subnormals work, so this checks for itself: x4 sends its
@@ -101,6 +102,9 @@ fn escalate_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage
         w(sphere.center),
         f64::from(sphere.radius),
     );
+    if let Some(h) = kernel::tight(o, d, c, r, shrink) {
+        return (h, Stage::Tight);
+    }
     if let Some(h) = kernel::tracked(o, d, c, r) {
         return (h, Stage::Tracked);
     }
