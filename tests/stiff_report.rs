@@ -310,3 +310,79 @@ fn sphere_stages_alone_match_the_oracle_on_grazing_rays() {
         "tight {tight}, dd {dd} of {n}"
     );
 }
+
+/// Under flush-to-zero and denormals-are-zero, the references return the
+/// same bits as without, on every catalogue case (its `plane/subnormal-
+/// normal` family has subnormal inputs) and on rays whose roots are
+/// subnormal f32 values from normal inputs, where only the result's
+/// rounding meets FTZ.
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn ftz_and_daz_change_no_answer() {
+    use glam::Vec3;
+    use rayoracle::num::certify::subnormals_work;
+    use rayoracle::ray::Ray;
+    fn csr() -> u32 {
+        let mut v = 0u32;
+        // SAFETY: stores the 32-bit MXCSR to `v`, a live aligned u32. Tests
+        // only: no benchmark is involved; a test cannot set the floating-
+        // point environment another way.
+        unsafe { core::arch::asm!("stmxcsr [{}]", in(reg) &mut v, options(nostack)) };
+        v
+    }
+    fn set_csr(v: u32) {
+        // SAFETY: loads MXCSR from `v`, a live aligned u32 holding the
+        // saved register with at most the FTZ and DAZ bits added: a valid
+        // value. Tests only, on this test's own thread.
+        unsafe { core::arch::asm!("ldmxcsr [{}]", in(reg) &v, options(nostack)) };
+    }
+    let mut cases: Vec<Case> = catalogue()
+        .families
+        .iter()
+        .flat_map(|f| f.cases.iter().cloned())
+        .filter(|c| !matches!(c, Case::Camera(..)))
+        .collect();
+    cases.push(Case::Plane(
+        Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1e10)),
+        plane::Plane::new(Vec3::new(0.0, 0.0, 1e-30), Vec3::Z),
+    ));
+    cases.push(Case::Sphere(
+        Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1e18)),
+        sphere::Sphere::new(Vec3::new(0.0, 0.0, 1e-20), 1e-21),
+    ));
+    let bits = |c: &Case| -> Vec<u32> {
+        let roots = |h: &dyn rayoracle::hit::Intersection| {
+            let mut v: Vec<u32> = h.roots().as_slice().iter().map(|t| t.to_bits()).collect();
+            v.push(h.class().len() as u32);
+            v
+        };
+        match c {
+            Case::Plane(r, p) => roots(&plane::reference::intersect(r, p)),
+            Case::Sphere(r, s) => roots(&sphere::reference::intersect(r, s)),
+            Case::Quadric(r, q) => roots(&quadric::reference::intersect(r, q)),
+            Case::Camera(..) => vec![],
+        }
+    };
+    let plain: Vec<Vec<u32>> = cases.iter().map(bits).collect();
+    let saved = csr();
+    set_csr(saved | 1 << 15 | 1 << 6);
+    let flushing = !subnormals_work();
+    let flushed: Vec<Vec<u32>> = cases.iter().map(bits).collect();
+    set_csr(saved);
+    assert!(flushing, "FTZ/DAZ did not take effect");
+    let tiny = plain
+        .iter()
+        .flatten()
+        .filter(|b| (1..0x0080_0000).contains(&(*b & 0x7fff_ffff)))
+        .count();
+    assert!(tiny >= 3, "only {tiny} subnormal roots");
+    let diffs: Vec<usize> = (0..cases.len())
+        .filter(|&i| plain[i] != flushed[i])
+        .collect();
+    assert!(
+        diffs.is_empty(),
+        "{} cases differ, first {:?}",
+        diffs.len(),
+        cases[diffs[0]]
+    );
+}

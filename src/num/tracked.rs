@@ -93,7 +93,11 @@ impl Tracked {
     /// `Σ xᵢyᵢ` over three pairs, noting whether it rounded.
     #[inline(always)]
     pub fn dot(&mut self, x: [f64; 3], y: [f64; 3]) -> f64 {
-        let p = [0, 1, 2].map(|i| self.mul(x[i], y[i]));
+        let p = [
+            self.mul(x[0], y[0]),
+            self.mul(x[1], y[1]),
+            self.mul(x[2], y[2]),
+        ];
         let s = self.add(p[0], p[1]);
         self.add(s, p[2])
     }

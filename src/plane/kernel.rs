@@ -108,7 +108,7 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) 
 /// ```
 pub fn tracked(o: [f64; 3], d: [f64; 3], a: [f64; 3], n: [f64; 3]) -> Option<PlaneHit> {
     let mut x = Tracked::new();
-    let w = [0, 1, 2].map(|i| x.sub(a[i], o[i]));
+    let w = [x.sub(a[0], o[0]), x.sub(a[1], o[1]), x.sub(a[2], o[2])];
     let num = x.dot(w, n);
     let den = x.dot(d, n);
     if !x.exact() {

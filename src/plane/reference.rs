@@ -4,7 +4,7 @@
 
 use super::{Plane, PlaneHit, exact, kernel};
 use crate::Ray;
-use crate::num::certify::{certify, subnormals_work};
+use crate::num::certify::{certify, needs_probe, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a plane: the exact class over `t ∈ ℝ`, and the
@@ -45,10 +45,16 @@ pub fn intersect_staged(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
 #[doc(hidden)]
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
-    if !subnormals_work() {
+    // FTZ and DAZ matter only on a subnormal input or result
+    // ([`needs_probe`]): the register is read only there.
+    let inputs = {
+        let (o, d, a, n) = (ray.origin, ray.dir, plane.point, plane.normal);
+        [o.x, o.y, o.z, d.x, d.y, d.z, a.x, a.y, a.z, n.x, n.y, n.z]
+    };
+    if needs_probe(&inputs, &[]) && !subnormals_work() {
         return (exact_stage(ray, plane), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let f = kernel::filter(
         w(ray.origin),
         w(ray.dir),
@@ -57,6 +63,9 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
         shrink,
     );
     if f.hit && certify(f.t, f.r, f.a) {
+        if needs_probe(&[], &[f.t]) && !subnormals_work() {
+            return (exact_stage(ray, plane), Stage::Exact);
+        }
         (PlaneHit::Hit(f.t as f32), Stage::Filter)
     } else if f.parallel {
         (PlaneHit::Parallel, Stage::Filter)
@@ -85,7 +94,7 @@ fn escalate_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
     if !subnormals_work() {
         return (exact_stage(ray, plane), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
     if let Some(h) = kernel::tracked(o, d, a, n) {
         return (h, Stage::Tracked);

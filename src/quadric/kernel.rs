@@ -309,6 +309,17 @@ impl core::ops::Add for Pair {
     }
 }
 
+/// Each value as a pair with a zero low word, by a plain loop (`array::map`
+/// is not always inlined).
+#[inline(always)]
+fn pairs<const N: usize>(x: &[f64; N]) -> [Pair; N] {
+    let mut p = [Pair(0.0, 0.0); N];
+    for (p, x) in p.iter_mut().zip(x) {
+        p.0 = *x;
+    }
+    p
+}
+
 /// The double-word stage ([`crate::num::dd`]): every term `k·x·y` of α, β
 /// and γ exactly as two words (a multiple of `2⁻⁴⁴⁷`), each coefficient
 /// their sum in two words, and `Δ/4 = (β/2)² − αγ` as the sum of the exact
@@ -332,8 +343,8 @@ impl core::ops::Add for Pair {
 /// assert!(matches!(h, Some(QuadricHit::One(t)) if t < 0.0));
 /// ```
 pub fn double_word(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<QuadricHit> {
-    let p = |x: f64| Pair(x, 0.0);
-    let (alpha, beta, gamma) = terms(&k.map(p), o.map(p), d.map(p), p(1.0), |c, x, y| {
+    let (kp, op, dp) = (pairs(k), pairs(&o), pairs(&d));
+    let (alpha, beta, gamma) = terms(&kp, op, dp, Pair(1.0, 0.0), |c, x, y| {
         let (h, l) = two_prod(c.0 * x.0, y.0);
         Pair(h, l)
     });

@@ -4,7 +4,7 @@
 
 use super::{Quadric, QuadricHit, exact, kernel};
 use crate::Ray;
-use crate::num::certify::{certify, subnormals_work};
+use crate::num::certify::{certify, needs_probe, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a quadric: the exact class over `t ∈ ℝ`, and the
@@ -47,17 +47,24 @@ pub fn intersect_staged(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
 #[doc(hidden)]
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
-    if !subnormals_work() {
+    // FTZ and DAZ matter only on a subnormal input or result
+    // ([`needs_probe`]): the register is read only there.
+    let inputs = {
+        let (o, d, k) = (ray.origin, ray.dir, &quadric.coeffs);
+        [
+            o.x, o.y, o.z, d.x, d.y, d.z, k[0], k[1], k[2], k[3], k[4], k[5], k[6], k[7], k[8],
+            k[9],
+        ]
+    };
+    if needs_probe(&inputs, &[]) && !subnormals_work() {
         return (exact_stage(ray, quadric), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.to_array().map(f64::from);
-    let f = kernel::filter(
-        &quadric.coeffs.map(f64::from),
-        w(ray.origin),
-        w(ray.dir),
-        shrink,
-    );
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let f = kernel::filter(&widen(&quadric.coeffs), w(ray.origin), w(ray.dir), shrink);
     if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
+        if needs_probe(&[], &[f.t0, f.t1]) && !subnormals_work() {
+            return (exact_stage(ray, quadric), Stage::Exact);
+        }
         // Disjoint enclosures are in the exact order; overlapping ones
         // round to the same f32.
         let (t0, t1) = if f.t0 <= f.t1 {
@@ -67,6 +74,9 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
         };
         (QuadricHit::Two(t0 as f32, t1 as f32), Stage::Filter)
     } else if f.linear && certify(f.t1, f.r1, f.a1) {
+        if needs_probe(&[], &[f.t1]) && !subnormals_work() {
+            return (exact_stage(ray, quadric), Stage::Exact);
+        }
         (QuadricHit::One(f.t1 as f32), Stage::Filter)
     } else if f.none {
         (QuadricHit::None, Stage::Filter)
@@ -95,8 +105,8 @@ fn escalate_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, St
     if !subnormals_work() {
         return (exact_stage(ray, quadric), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.to_array().map(f64::from);
-    let (k, o, d) = (quadric.coeffs.map(f64::from), w(ray.origin), w(ray.dir));
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
     if let Some(h) = kernel::tracked(&k, o, d) {
         return (h, Stage::Tracked);
     }
@@ -104,6 +114,17 @@ fn escalate_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, St
         Some(h) => (h, Stage::DoubleWord),
         None => (exact_stage(ray, quadric), Stage::Exact),
     }
+}
+
+/// The coefficients in f64, by a plain loop: `array::map` is not always
+/// inlined, and a call per case costs a fifth of a fast path.
+#[inline(always)]
+fn widen(c: &[f32; 10]) -> [f64; 10] {
+    let mut k = [0.0; 10];
+    for (k, c) in k.iter_mut().zip(c) {
+        *k = f64::from(*c);
+    }
+    k
 }
 
 /// The last stage: the exact oracle; [`QuadricHit::None`] for a non-finite

@@ -273,7 +273,7 @@ pub fn tight(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64, shrink: f64) -> Opti
 /// ```
 pub fn tracked(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Option<SphereHit> {
     let mut x = Tracked::new();
-    let f = [0, 1, 2].map(|i| x.sub(o[i], c[i]));
+    let f = [x.sub(o[0], c[0]), x.sub(o[1], c[1]), x.sub(o[2], c[2])];
     let a = x.dot(d, d);
     let b = x.dot(f, d);
     let ff = x.dot(f, f);

@@ -4,7 +4,7 @@
 
 use super::{Sphere, SphereHit, exact, kernel};
 use crate::Ray;
-use crate::num::certify::{certify, subnormals_work};
+use crate::num::certify::{certify, needs_probe, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a sphere: the exact class and both roots over
@@ -49,10 +49,16 @@ pub fn intersect_staged(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
 #[doc(hidden)]
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage) {
-    if !subnormals_work() {
+    // FTZ and DAZ matter only on a subnormal input or result
+    // ([`needs_probe`]): the register is read only there.
+    let inputs = {
+        let (o, d, c) = (ray.origin, ray.dir, sphere.center);
+        [o.x, o.y, o.z, d.x, d.y, d.z, c.x, c.y, c.z, sphere.radius]
+    };
+    if needs_probe(&inputs, &[]) && !subnormals_work() {
         return (exact_stage(ray, sphere), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let f = kernel::filter(
         w(ray.origin),
         w(ray.dir),
@@ -64,6 +70,9 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
         return (SphereHit::None, Stage::Filter);
     }
     if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
+        if needs_probe(&[], &[f.t0, f.t1]) && !subnormals_work() {
+            return (exact_stage(ray, sphere), Stage::Exact);
+        }
         // Disjoint enclosures are in the exact order; overlapping ones
         // round to the same f32.
         let (t0, t1) = if f.t0 <= f.t1 {
@@ -95,7 +104,7 @@ fn escalate_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage
     if !subnormals_work() {
         return (exact_stage(ray, sphere), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (o, d, c, r) = (
         w(ray.origin),
         w(ray.dir),
