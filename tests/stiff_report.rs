@@ -386,3 +386,77 @@ fn ftz_and_daz_change_no_answer() {
         cases[diffs[0]]
     );
 }
+
+/// The plane's and quadric's double-word stages on their own, on seeded
+/// random lines nearly or exactly parallel to a plane with a non-dyadic
+/// normal (`d = n × e + εn`, ε 0 or tiny), and the same plane as the
+/// quadric `(n·p − n·a)(e·p) = 0` crossed by the same lines: wherever a
+/// stage answers, it answers the oracle's bits; and it answers most.
+#[test]
+fn plane_and_quadric_double_word_alone_match_the_oracle() {
+    use glam::Vec3;
+    use rand::rngs::SmallRng;
+    use rand::{Rng, SeedableRng};
+    let mut rng = SmallRng::seed_from_u64(7);
+    let w = |v: Vec3| v.to_array().map(f64::from);
+    let mut v3 = |r: f32| {
+        Vec3::new(
+            rng.random_range(-r..r),
+            rng.random_range(-r..r),
+            rng.random_range(-r..r),
+        )
+    };
+    let (mut answered, mut failures) = ([0; 2], Vec::new());
+    let n_cases = 2000;
+    for i in 0..n_cases {
+        let (n, e, a, o) = (v3(1.0), v3(1.0), v3(100.0), v3(100.0));
+        let eps = if i % 2 == 0 {
+            0.0
+        } else {
+            2f32.powi(-(i % 40) - 10)
+        };
+        let d = n.cross(e) + n * eps;
+        let ray = rayoracle::Ray::new(o, d);
+        let p = plane::Plane::new(a, n);
+        if let Some(h) = plane::kernel::double_word(w(o), w(d), w(a), w(n), 1.0) {
+            answered[0] += 1;
+            if !matches!(status(check::check_plane(&ray, &p, h)), Ok(Status::Checked)) {
+                failures.push(format!("plane #{i}: {ray:?} {p:?} {h:?}"));
+            }
+        }
+        // (n·p − k)·(e·p) with k = n·a rounded to f32: a hyperbolic
+        // paraboloid-like quadric pair, its coefficients rounded to f32.
+        let k = n.dot(a);
+        let q = quadric::Quadric::new([
+            n.x * e.x,
+            n.y * e.y,
+            n.z * e.z,
+            n.x * e.y + n.y * e.x,
+            n.x * e.z + n.z * e.x,
+            n.y * e.z + n.z * e.y,
+            -k * e.x,
+            -k * e.y,
+            -k * e.z,
+            0.0,
+        ]);
+        let kk = q.coeffs.map(f64::from);
+        if let Some(h) = quadric::kernel::double_word(&kk, w(o), w(d), 1.0) {
+            answered[1] += 1;
+            if !matches!(
+                status(check::check_quadric(&ray, &q, h)),
+                Ok(Status::Checked)
+            ) {
+                failures.push(format!("quadric #{i}: {ray:?} {q:?} {h:?}"));
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{}",
+        failures[..failures.len().min(10)].join("\n")
+    );
+    assert!(
+        answered.iter().all(|&x| x * 2 > n_cases),
+        "answered {answered:?} of {n_cases}"
+    );
+}

@@ -242,7 +242,8 @@ pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filter
 }
 
 /// The second stage: α, β, γ and `β² − 4αγ` tracked for exactness
-/// ([`Tracked`]), each term `k·x·y` as two checked products. Where no
+/// ([`Tracked`]), each term `k·x·y` as `k·x` (a product of two f32
+/// values, exact in f64) times `y`, checked. Where no
 /// operation rounded, the class follows from signs, as in pbrt-v4's
 /// `Quadratic` with its α = 0 branch: a linear root `−γ/β` or a double
 /// root `−β/2α` rounds once (certified with `2u`); two roots `q/α` and
@@ -260,10 +261,8 @@ pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filter
 /// ```
 pub fn tracked(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> Option<QuadricHit> {
     let mut x = Tracked::new();
-    let (alpha, beta, gamma) = terms(k, o, d, 1.0, |c, p, q| {
-        let cp = x.mul(c, p);
-        x.mul(cp, q)
-    });
+    // `c·p` is a product of two f32 values: exact in f64, unchecked.
+    let (alpha, beta, gamma) = terms(k, o, d, 1.0, |c, p, q| x.mul(c * p, q));
     let mut sum = |v: &[f64]| v.iter().fold(0.0, |s, &y| x.add(s, y));
     let (alpha, beta, gamma) = (sum(&alpha), sum(&beta), sum(&gamma));
     let b2 = x.mul(beta, beta);
