@@ -2,11 +2,11 @@
 //!
 //! Every kernel evaluates in stages, each certifying only what it can
 //! prove and passing the rest on: a filter in f64 with a bound from
-//! magnitude sums (the same arithmetic on one lane or four); for the
-//! sphere, a tight stage whose discriminant's error grows with `R·|f|`
-//! rather than `|f|²`; the filter's arithmetic checked to be exact,
-//! operation by operation (which settles the exact zeros of small-integer
-//! and dyadic data); double-word arithmetic, exact where no low word
+//! magnitude sums (the same arithmetic on one lane or four); the filter's
+//! arithmetic checked to be exact, operation by operation (which settles
+//! the exact zeros of small-integer and dyadic data); for the sphere, a
+//! tight stage whose discriminant's error grows with `R·|f|` rather than
+//! `|f|²`; double-word arithmetic, exact where no low word
 //! rounded (which settles most other exact zeros); then exact arithmetic
 //! on integers. The answer is the exact class and correctly
 //! rounded roots whichever stage gives it; the stage only says how much
@@ -39,12 +39,12 @@
 pub enum Stage {
     /// f64 arithmetic with a bound from magnitude sums; SIMD in x4.
     Filter,
-    /// f64 arithmetic in a better-conditioned form with a tighter bound
-    /// (the sphere's discriminant after Ray Tracing Gems ch. 7); scalar.
-    Tight,
     /// f64 arithmetic in which no operation rounded
     /// ([`crate::num::tracked`]).
     Tracked,
+    /// f64 arithmetic in a better-conditioned form with a tighter bound
+    /// (the sphere's discriminant after Ray Tracing Gems ch. 7); scalar.
+    Tight,
     /// Double-word arithmetic, exact where no low word rounded, with a
     /// bound otherwise ([`crate::num::dd`]).
     DoubleWord,
@@ -56,8 +56,8 @@ impl Stage {
     /// Every stage, in order.
     pub const ALL: [Stage; 5] = [
         Stage::Filter,
-        Stage::Tight,
         Stage::Tracked,
+        Stage::Tight,
         Stage::DoubleWord,
         Stage::Exact,
     ];

@@ -175,6 +175,22 @@ pub fn needs_probe(inputs: &[f32], t: &[f64]) -> bool {
     any
 }
 
+/// Whether any of these certified f32 results is 0 or subnormal (by its
+/// bits): the results of the later stages, which return f32 values, need
+/// [`subnormals_work`] only there. A result FTZ flushed is 0; one that
+/// certified only because FTZ flushed both ends of its enclosure is 0 too
+/// ([`needs_probe`]).
+///
+/// ```
+/// use rayoracle::num::certify::flush_prone;
+/// assert!(!flush_prone(&[1.0, -2.0]));
+/// assert!(flush_prone(&[1.0, 0.0]) && flush_prone(&[-1e-40]));
+/// ```
+#[inline(always)]
+pub fn flush_prone(roots: &[f32]) -> bool {
+    roots.iter().any(|t| t.to_bits() & 0x7f80_0000 == 0)
+}
+
 /// [`subnormals_work`] by arithmetic, on any target: halves the smallest
 /// normal f64 and doubles it back.
 ///

@@ -4,7 +4,8 @@
 
 use super::{Plane, PlaneHit, exact, kernel};
 use crate::Ray;
-use crate::num::certify::{certify, needs_probe, subnormals_work};
+use crate::hit::Intersection;
+use crate::num::certify::{certify, flush_prone, needs_probe, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a plane: the exact class over `t ∈ ℝ`, and the
@@ -47,10 +48,7 @@ pub fn intersect_staged(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
 pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
     // FTZ and DAZ matter only on a subnormal input or result
     // ([`needs_probe`]): the register is read only there.
-    let inputs = {
-        let (o, d, a, n) = (ray.origin, ray.dir, plane.point, plane.normal);
-        [o.x, o.y, o.z, d.x, d.y, d.z, a.x, a.y, a.z, n.x, n.y, n.z]
-    };
+    let inputs = inputs(ray, plane);
     if needs_probe(&inputs, &[]) && !subnormals_work() {
         return (exact_stage(ray, plane), Stage::Exact);
     }
@@ -79,8 +77,9 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
 /// The stages after the filter: f64 arithmetic that proves itself exact
 /// ([`kernel::tracked`]), double-word arithmetic
 /// ([`kernel::double_word`]), then the exact oracle. The later stages,
-/// too, assume subnormals work, so this checks for itself: x4 sends its
-/// undecided lanes here, and all of them when FTZ or DAZ is on.
+/// too, assume subnormals work where an input or a result is subnormal
+/// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
+/// its undecided lanes here, and all of them when FTZ or DAZ is on.
 #[cold]
 #[inline(never)]
 pub(crate) fn escalate(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
@@ -91,18 +90,27 @@ pub(crate) fn escalate(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
 #[cold]
 #[inline(never)]
 fn escalate_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
-    if !subnormals_work() {
+    if needs_probe(&inputs(ray, plane), &[]) && !subnormals_work() {
         return (exact_stage(ray, plane), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
-    if let Some(h) = kernel::tracked(o, d, a, n) {
-        return (h, Stage::Tracked);
-    }
-    match kernel::double_word(o, d, a, n, shrink) {
-        Some(h) => (h, Stage::DoubleWord),
+    let staged = (kernel::tracked(o, d, a, n).map(|h| (h, Stage::Tracked)))
+        .or_else(|| kernel::double_word(o, d, a, n, shrink).map(|h| (h, Stage::DoubleWord)));
+    match staged {
+        Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
+            (exact_stage(ray, plane), Stage::Exact)
+        }
+        Some(hs) => hs,
         None => (exact_stage(ray, plane), Stage::Exact),
     }
+}
+
+/// The inputs, for [`needs_probe`].
+#[inline(always)]
+fn inputs(ray: &Ray, plane: &Plane) -> [f32; 12] {
+    let (o, d, a, n) = (ray.origin, ray.dir, plane.point, plane.normal);
+    [o.x, o.y, o.z, d.x, d.y, d.z, a.x, a.y, a.z, n.x, n.y, n.z]
 }
 
 /// The last stage: the exact oracle; [`PlaneHit::Parallel`] for a

@@ -4,7 +4,8 @@
 
 use super::{Quadric, QuadricHit, exact, kernel};
 use crate::Ray;
-use crate::num::certify::{certify, needs_probe, subnormals_work};
+use crate::hit::Intersection;
+use crate::num::certify::{certify, flush_prone, needs_probe, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a quadric: the exact class over `t ∈ ℝ`, and the
@@ -49,13 +50,7 @@ pub fn intersect_staged(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
 pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
     // FTZ and DAZ matter only on a subnormal input or result
     // ([`needs_probe`]): the register is read only there.
-    let inputs = {
-        let (o, d, k) = (ray.origin, ray.dir, &quadric.coeffs);
-        [
-            o.x, o.y, o.z, d.x, d.y, d.z, k[0], k[1], k[2], k[3], k[4], k[5], k[6], k[7], k[8],
-            k[9],
-        ]
-    };
+    let inputs = inputs(ray, quadric);
     if needs_probe(&inputs, &[]) && !subnormals_work() {
         return (exact_stage(ray, quadric), Stage::Exact);
     }
@@ -90,8 +85,9 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
 /// The stages after the filter: f64 arithmetic that proves itself exact
 /// ([`kernel::tracked`]), double-word arithmetic
 /// ([`kernel::double_word`]), then the exact oracle. The later stages,
-/// too, assume subnormals work, so this checks for itself: x4 sends its
-/// undecided lanes here, and all of them when FTZ or DAZ is on.
+/// too, assume subnormals work where an input or a result is subnormal
+/// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
+/// its undecided lanes here, and all of them when FTZ or DAZ is on.
 #[cold]
 #[inline(never)]
 pub(crate) fn escalate(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
@@ -102,16 +98,18 @@ pub(crate) fn escalate(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
 #[cold]
 #[inline(never)]
 fn escalate_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
-    if !subnormals_work() {
+    if needs_probe(&inputs(ray, quadric), &[]) && !subnormals_work() {
         return (exact_stage(ray, quadric), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
-    if let Some(h) = kernel::tracked(&k, o, d) {
-        return (h, Stage::Tracked);
-    }
-    match kernel::double_word(&k, o, d, shrink) {
-        Some(h) => (h, Stage::DoubleWord),
+    let staged = (kernel::tracked(&k, o, d).map(|h| (h, Stage::Tracked)))
+        .or_else(|| kernel::double_word(&k, o, d, shrink).map(|h| (h, Stage::DoubleWord)));
+    match staged {
+        Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
+            (exact_stage(ray, quadric), Stage::Exact)
+        }
+        Some(hs) => hs,
         None => (exact_stage(ray, quadric), Stage::Exact),
     }
 }
@@ -125,6 +123,15 @@ fn widen(c: &[f32; 10]) -> [f64; 10] {
         *k = f64::from(*c);
     }
     k
+}
+
+/// The inputs, for [`needs_probe`].
+#[inline(always)]
+fn inputs(ray: &Ray, quadric: &Quadric) -> [f32; 16] {
+    let (o, d, k) = (ray.origin, ray.dir, &quadric.coeffs);
+    [
+        o.x, o.y, o.z, d.x, d.y, d.z, k[0], k[1], k[2], k[3], k[4], k[5], k[6], k[7], k[8], k[9],
+    ]
 }
 
 /// The last stage: the exact oracle; [`QuadricHit::None`] for a non-finite

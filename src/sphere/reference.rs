@@ -4,7 +4,8 @@
 
 use super::{Sphere, SphereHit, exact, kernel};
 use crate::Ray;
-use crate::num::certify::{certify, needs_probe, subnormals_work};
+use crate::hit::Intersection;
+use crate::num::certify::{certify, flush_prone, needs_probe, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a sphere: the exact class and both roots over
@@ -51,10 +52,7 @@ pub fn intersect_staged(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
 pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage) {
     // FTZ and DAZ matter only on a subnormal input or result
     // ([`needs_probe`]): the register is read only there.
-    let inputs = {
-        let (o, d, c) = (ray.origin, ray.dir, sphere.center);
-        [o.x, o.y, o.z, d.x, d.y, d.z, c.x, c.y, c.z, sphere.radius]
-    };
+    let inputs = inputs(ray, sphere);
     if needs_probe(&inputs, &[]) && !subnormals_work() {
         return (exact_stage(ray, sphere), Stage::Exact);
     }
@@ -85,12 +83,13 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
     escalate_shrunk(ray, sphere, shrink)
 }
 
-/// The stages after the filter: f64 arithmetic with a tighter bound
-/// ([`kernel::tight`]), f64 arithmetic that proves itself exact
-/// ([`kernel::tracked`]), double-word arithmetic
+/// The stages after the filter: f64 arithmetic that proves itself exact
+/// ([`kernel::tracked`]), f64 arithmetic with a tighter bound
+/// ([`kernel::tight`]), double-word arithmetic
 /// ([`kernel::double_word`]), then the exact oracle. The later stages,
-/// too, assume subnormals work, so this checks for itself: x4 sends its
-/// undecided lanes here, and all of them when FTZ or DAZ is on.
+/// too, assume subnormals work where an input or a result is subnormal
+/// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
+/// its undecided lanes here, and all of them when FTZ or DAZ is on.
 #[cold]
 #[inline(never)]
 pub(crate) fn escalate(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
@@ -101,7 +100,7 @@ pub(crate) fn escalate(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
 #[cold]
 #[inline(never)]
 fn escalate_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage) {
-    if !subnormals_work() {
+    if needs_probe(&inputs(ray, sphere), &[]) && !subnormals_work() {
         return (exact_stage(ray, sphere), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
@@ -111,16 +110,24 @@ fn escalate_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage
         w(sphere.center),
         f64::from(sphere.radius),
     );
-    if let Some(h) = kernel::tight(o, d, c, r, shrink) {
-        return (h, Stage::Tight);
-    }
-    if let Some(h) = kernel::tracked(o, d, c, r) {
-        return (h, Stage::Tracked);
-    }
-    match kernel::double_word(o, d, c, r, shrink) {
-        Some(h) => (h, Stage::DoubleWord),
+    // Cheapest and likeliest first: exact data, then far spheres.
+    let staged = (kernel::tracked(o, d, c, r).map(|h| (h, Stage::Tracked)))
+        .or_else(|| kernel::tight(o, d, c, r, shrink).map(|h| (h, Stage::Tight)))
+        .or_else(|| kernel::double_word(o, d, c, r, shrink).map(|h| (h, Stage::DoubleWord)));
+    match staged {
+        Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
+            (exact_stage(ray, sphere), Stage::Exact)
+        }
+        Some(hs) => hs,
         None => (exact_stage(ray, sphere), Stage::Exact),
     }
+}
+
+/// The inputs, for [`needs_probe`].
+#[inline(always)]
+fn inputs(ray: &Ray, sphere: &Sphere) -> [f32; 10] {
+    let (o, d, c) = (ray.origin, ray.dir, sphere.center);
+    [o.x, o.y, o.z, d.x, d.y, d.z, c.x, c.y, c.z, sphere.radius]
 }
 
 /// The last stage: the exact oracle; [`SphereHit::None`] for a non-finite
