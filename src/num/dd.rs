@@ -21,6 +21,10 @@
 //!   exact sum, so its sign and its zero are exact; otherwise the low
 //!   word's recursive sum of `n` terms is within `γₙ₋₁ Σ|eᵢ|` of the exact
 //!   one (Higham §4.2), and [`Acc::finish`] bounds it by `2nu Σ|eᵢ|`.
+//!   [`Acc::wide`] sums the low word's own errors in a third word the same
+//!   way, for the discriminants, whose exact zeros can span more than two
+//!   words; [`Acc::finish`] renormalises the three words exactly into two
+//!   and a remainder, which joins the bound.
 //!
 //! The kernels feed it polynomials in f32 data: the sphere's and plane's
 //! values are multiples of `2⁻²⁹⁸`, the quadric's of `2⁻⁴⁴⁷`, and sums,
@@ -153,6 +157,8 @@ pub struct Approx {
 pub struct Acc {
     hi: f64,
     lo: f64,
+    lo2: f64,
+    wide: bool,
     mag: f64,
     n: f64,
     exact: bool,
@@ -171,19 +177,39 @@ impl Acc {
         Acc {
             hi: 0.0,
             lo: 0.0,
+            lo2: 0.0,
+            wide: false,
             mag: 0.0,
             n: 0.0,
             exact: true,
             extra: 0.0,
         }
     }
-    /// Adds `e` to the low word, noting whether it rounded.
+    /// The empty sum with a third word: the low word's own rounding errors
+    /// are summed in it (checked with TwoSum), so a sum whose exact value
+    /// spans up to about 159 bits stays exact. For the discriminants, whose
+    /// exact zeros need it.
+    pub fn wide() -> Acc {
+        Acc {
+            wide: true,
+            ..Acc::new()
+        }
+    }
+    /// Adds `e` to the low word (in [`Acc::wide`], its rounding error to
+    /// the third), noting whether it rounded.
     #[inline(always)]
     fn low(&mut self, e: f64) {
         let (s, r) = two_sum(self.lo, e);
-        self.exact &= r == 0.0;
+        if self.wide {
+            let (s2, r2) = two_sum(self.lo2, r);
+            self.exact &= r2 == 0.0;
+            self.lo2 = s2;
+            self.mag += r.abs();
+        } else {
+            self.exact &= r == 0.0;
+            self.mag += e.abs();
+        }
         self.lo = s;
-        self.mag += e.abs();
         self.n += 1.0;
     }
     /// Adds `x` exactly.
@@ -219,13 +245,21 @@ impl Acc {
     }
     /// The sum, with its bound multiplied by `shrink` (1 in the kernels;
     /// the tests pass less to show that a bound too small is caught).
-    /// The low word's recursive sum of `n` terms is within `γₙ₋₁ Σ|eᵢ|`;
+    /// The words are renormalised by TwoSum into `hi + lo + d` exactly, with
+    /// `|lo| ≤ u|hi|` and `|d|` added to the bound (0 where two words hold
+    /// the sum). The last word's recursive sum of `n` terms (the low word,
+    /// or in [`Acc::wide`] the third) is within `γₙ₋₁ Σ|eᵢ|` of its exact
+    /// one;
     /// the bound is `2nu Σ|eᵢ|` (twice that, which also covers the
     /// roundings of `Σ|eᵢ|` itself), 0 where no addition rounded, plus the
     /// errors of the inputs of [`Acc::add_dd_prod`].
     #[inline(always)]
     pub fn finish(self, shrink: f64) -> Dd {
-        let (hi, lo) = two_sum(self.hi, self.lo);
+        // hi + lo + lo2 = h + c + b = h + l + d = hi' + lo' + d, exactly.
+        let (a, b) = two_sum(self.lo, self.lo2);
+        let (h, c) = two_sum(self.hi, a);
+        let (l, d) = two_sum(c, b);
+        let (hi, lo) = two_sum(h, l);
         let chain = if self.exact {
             0.0
         } else {
@@ -234,7 +268,7 @@ impl Acc {
         Dd {
             hi,
             lo,
-            err: (chain + self.extra) * SLACK * shrink,
+            err: (d.abs() + chain + self.extra) * SLACK * shrink,
         }
     }
 }
@@ -369,6 +403,27 @@ mod tests {
         assert!(d.sign_known() && d.hi > 0.0);
         // Shrunk to nothing, the bound no longer covers.
         assert!(miss > acc.finish(0.0).err);
+    }
+
+    /// A sum spanning 120 bits: the narrow sum's low word rounds (a bound,
+    /// no certain zero); the wide one's third word keeps it exact.
+    #[test]
+    fn wide_sums_stay_exact() {
+        let terms = [1.0, 2f64.powi(-60), 2f64.powi(-120)];
+        let run = |mut acc: Acc| {
+            terms.iter().for_each(|&x| acc.add(x));
+            terms.iter().for_each(|&x| acc.add(-x));
+            acc.finish(1.0)
+        };
+        let (narrow, wide) = (run(Acc::new()), run(Acc::wide()));
+        assert!(!narrow.is_zero() && narrow.err > 0.0);
+        assert!(wide.is_zero(), "{wide:?}");
+        // Without the cancellation the wide sum is exact and nonzero.
+        let mut acc = Acc::wide();
+        terms.iter().for_each(|&x| acc.add(x));
+        let d = acc.finish(1.0);
+        assert_eq!((d.hi, d.lo), (1.0, 2f64.powi(-60)));
+        assert!(d.err > 0.0 && d.err < 2f64.powi(-119) && d.sign_known());
     }
 
     /// A product of inexact values carries their errors.

@@ -371,7 +371,7 @@ pub fn double_word(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Opti
         return None;
     }
     let b = beta.scale(0.5);
-    let mut disc = Acc::new();
+    let mut disc = Acc::wide();
     disc.add_dd_prod(b, b);
     disc.add_dd_prod(alpha.scale(-1.0), gamma);
     let disc = disc.finish(shrink);

@@ -345,7 +345,7 @@ pub fn double_word(
     }
     cq.add(-(r * r));
     let (a, b, cq) = (a.finish(shrink), b.finish(shrink), cq.finish(shrink));
-    let mut disc = Acc::new();
+    let mut disc = Acc::wide();
     disc.add_dd_prod(b, b);
     disc.add_dd_prod(a.scale(-1.0), cq);
     let disc = disc.finish(shrink);
