@@ -100,6 +100,36 @@ pub struct Filtered<L: Real> {
     pub a1: L,
 }
 
+/// The quantities the filter and the tight stage share: `f = o − C`, `a =
+/// d·d`, `b = f·d`, `m_b = Σ|fᵢdᵢ|`, `f·f` and `R²`, in f64 as written.
+struct Dots<L> {
+    f: [L; 3],
+    a: L,
+    b: L,
+    mb: L,
+    ff: L,
+    rr: L,
+}
+
+#[inline(always)]
+fn dots<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Dots<L> {
+    let f = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
+    let a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    let fd = [f[0] * d[0], f[1] * d[1], f[2] * d[2]];
+    let b = fd[0] + fd[1] + fd[2];
+    let mb = fd[0].abs() + fd[1].abs() + fd[2].abs();
+    let ff = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+    let rr = r * r;
+    Dots {
+        f,
+        a,
+        b,
+        mb,
+        ff,
+        rr,
+    }
+}
+
 /// Runs the filter on a line `o + t d` and a sphere `(c, r)`, with every
 /// bound multiplied by `shrink` (1 in the kernels; the tests pass less to
 /// show that a bound too small is caught).
@@ -118,13 +148,9 @@ pub struct Filtered<L: Real> {
 pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Filtered<L> {
     let k = |x: f64| L::splat(x * U * shrink);
     let u2 = L::splat(2.0 * U * shrink);
-    let f = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
-    let a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    let fd = [f[0] * d[0], f[1] * d[1], f[2] * d[2]];
-    let b = fd[0] + fd[1] + fd[2];
-    let mb = fd[0].abs() + fd[1].abs() + fd[2].abs();
-    let ff = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
-    let rr = r * r;
+    let Dots {
+        a, b, mb, ff, rr, ..
+    } = dots(o, d, c, r);
     let cq = ff - rr;
     let mc = ff + rr;
     let disc = b * b - a * cq;
@@ -219,13 +245,14 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Fi
 /// [`two_roots`]: crate::num::dd::two_roots
 pub fn tight(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64, shrink: f64) -> Option<SphereHit> {
     let eta = f64::from_bits((1023 - 1000) << 52);
-    let f = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
-    let a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    let fd = [f[0] * d[0], f[1] * d[1], f[2] * d[2]];
-    let b = fd[0] + fd[1] + fd[2];
-    let mb = fd[0].abs() + fd[1].abs() + fd[2].abs();
-    let ff = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
-    let rr = r * r;
+    let Dots {
+        f,
+        a,
+        b,
+        mb,
+        ff,
+        rr,
+    } = dots(o, d, c, r);
     let (eb, ea) = (8.0 * U * mb, 4.0 * U * a);
     let lambda = b / a;
     let el = 8.0 * U * lambda.abs() + 2.0 * eb / a;
