@@ -263,6 +263,10 @@ pub fn tracked(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> Option<QuadricHit> {
     let mut x = Tracked::new();
     // `c·p` is a product of two f32 values: exact in f64, unchecked.
     let (alpha, beta, gamma) = terms(k, o, d, 1.0, |c, p, q| x.mul(c * p, q));
+    // Most data that is not small integers or dyadic rounds here already.
+    if !x.exact() {
+        return None;
+    }
     let mut sum = |v: &[f64]| v.iter().fold(0.0, |s, &y| x.add(s, y));
     let (alpha, beta, gamma) = (sum(&alpha), sum(&beta), sum(&gamma));
     let b2 = x.mul(beta, beta);
