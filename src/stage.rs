@@ -2,10 +2,13 @@
 //!
 //! Every kernel evaluates in stages, each certifying only what it can
 //! prove and passing the rest on: a filter in f64 with a bound from
-//! magnitude sums (the same arithmetic on one lane or four), then the same
+//! magnitude sums (the same arithmetic on one lane or four); the filter's
 //! arithmetic checked to be exact, operation by operation (which settles
-//! the exact zeros of small-integer and dyadic data), then exact
-//! arithmetic on integers. The answer is the exact class and correctly
+//! the exact zeros of small-integer and dyadic data); for the sphere, a
+//! tight stage whose discriminant's error grows with `R·|f|` rather than
+//! `|f|²`; double-word arithmetic, exact where no low word
+//! rounded (which settles most other exact zeros); then exact arithmetic
+//! on integers. The answer is the exact class and correctly
 //! rounded roots whichever stage gives it; the stage only says how much
 //! work it took.
 //!
@@ -24,10 +27,10 @@
 //! // integers make every operation exact, which proves it.
 //! let (_, stage) = intersect_staged(&Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z), &s);
 //! assert_eq!(stage, Stage::Tracked);
-//! // A tangent whose arithmetic rounds goes to the exact oracle.
+//! // A tangent whose f64 arithmetic rounds: double words are exact.
 //! let big = Sphere::new(Vec3::ZERO, 3.0);
 //! let r = Ray::new(Vec3::new(0.0, 3.0, -1e30), Vec3::new(0.0, 0.0, 0.1));
-//! assert_eq!(intersect_staged(&r, &big).1, Stage::Exact);
+//! assert_eq!(intersect_staged(&r, &big).1, Stage::DoubleWord);
 //! # }
 //! ```
 
@@ -39,23 +42,38 @@ pub enum Stage {
     /// f64 arithmetic in which no operation rounded
     /// ([`crate::num::tracked`]).
     Tracked,
+    /// f64 arithmetic in a better-conditioned form with a tighter bound
+    /// (the sphere's discriminant after Ray Tracing Gems ch. 7); scalar.
+    Tight,
+    /// Double-word arithmetic, exact where no low word rounded, with a
+    /// bound otherwise ([`crate::num::dd`]).
+    DoubleWord,
     /// Exact dyadic arithmetic ([`crate::exact`]).
     Exact,
 }
 
 impl Stage {
     /// Every stage, in order.
-    pub const ALL: [Stage; 3] = [Stage::Filter, Stage::Tracked, Stage::Exact];
+    pub const ALL: [Stage; 5] = [
+        Stage::Filter,
+        Stage::Tracked,
+        Stage::Tight,
+        Stage::DoubleWord,
+        Stage::Exact,
+    ];
 
     /// A short name for reports.
     ///
     /// ```
     /// assert_eq!(rayoracle::stage::Stage::Exact.name(), "exact");
+    /// assert_eq!(rayoracle::stage::Stage::DoubleWord.name(), "dd");
     /// ```
     pub fn name(self) -> &'static str {
         match self {
             Stage::Filter => "filter",
+            Stage::Tight => "tight",
             Stage::Tracked => "tracked",
+            Stage::DoubleWord => "dd",
             Stage::Exact => "exact",
         }
     }

@@ -150,3 +150,317 @@ fn camera_construction_errors_are_not_in_the_catalogue() {
         }
     }
 }
+
+/// A candidate's check as a status or a message.
+fn status(out: Result<check::CaseReport, check::Violation>) -> Result<Status, String> {
+    out.map(|r| r.status).map_err(|v| v.to_string())
+}
+
+/// Each stage after the filter, called on its own on every plane, sphere
+/// and quadric case of the catalogue (not only the cases the earlier
+/// stages leave), answers the oracle's bits wherever it answers; and the
+/// double-word stage answers most of the cases of the families it is for.
+#[test]
+fn every_later_stage_alone_matches_the_oracle() {
+    use rayoracle::stage::Stage::{self, DoubleWord, Tight, Tracked};
+    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    let mut failures = Vec::new();
+    let mut answered = std::collections::BTreeMap::<(&str, Stage), (usize, usize)>::new();
+    let c = catalogue();
+    for family in &c.families {
+        for (i, case) in family.cases.iter().enumerate() {
+            let outs: Vec<(Stage, Option<Result<Status, String>>)> = match case {
+                Case::Plane(r, p) => {
+                    let (o, d, a, n) = (w(r.origin), w(r.dir), w(p.point), w(p.normal));
+                    let ck = |h: Option<_>| h.map(|h| status(check::check_plane(r, p, h)));
+                    vec![
+                        (Tracked, ck(plane::kernel::tracked(o, d, a, n))),
+                        (DoubleWord, ck(plane::kernel::double_word(o, d, a, n, 1.0))),
+                    ]
+                }
+                Case::Sphere(r, s) => {
+                    let (o, d, m, rr) = (w(r.origin), w(r.dir), w(s.center), f64::from(s.radius));
+                    let ck = |h: Option<_>| h.map(|h| status(check::check_sphere(r, s, h)));
+                    vec![
+                        (Tight, ck(sphere::kernel::tight(o, d, m, rr, 1.0))),
+                        (Tracked, ck(sphere::kernel::tracked(o, d, m, rr))),
+                        (
+                            DoubleWord,
+                            ck(sphere::kernel::double_word(o, d, m, rr, 1.0)),
+                        ),
+                    ]
+                }
+                Case::Quadric(r, q) => {
+                    let (k, o, d) = (q.coeffs.map(f64::from), w(r.origin), w(r.dir));
+                    let ck = |h: Option<_>| h.map(|h| status(check::check_quadric(r, q, h)));
+                    vec![
+                        (Tracked, ck(quadric::kernel::tracked(&k, o, d))),
+                        (DoubleWord, ck(quadric::kernel::double_word(&k, o, d, 1.0))),
+                    ]
+                }
+                Case::Camera(..) => continue,
+            };
+            for (stage, out) in outs {
+                let e = answered.entry((family.name.as_str(), stage)).or_default();
+                e.1 += 1;
+                match out {
+                    None => {}
+                    Some(Ok(Status::Checked)) => e.0 += 1,
+                    Some(other) => {
+                        failures.push(format!("{} #{i} {}: {other:?}", family.name, stage.name()))
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures[..failures.len().min(20)].join("\n")
+    );
+    for name in [
+        "sphere/far-tiny",
+        "plane/near-parallel",
+        "quadric/double-plane",
+        "quadric/alpha-near-zero-rotated",
+    ] {
+        let (ok, n) = answered[&(name, DoubleWord)];
+        assert!(
+            ok * 2 > n,
+            "{name}: the double-word stage answered {ok} of {n}"
+        );
+    }
+}
+
+/// The sphere's later stages, each on its own, on seeded random spheres
+/// seen from afar and grazed: near tangents (the aim off the rim by
+/// `2⁻ᵏ R`), exact-looking tangents with non-dyadic data, far tiny
+/// spheres. Wherever a stage answers, it answers the oracle's bits; and
+/// the tight and double-word stages answer a good share.
+#[test]
+fn sphere_stages_alone_match_the_oracle_on_grazing_rays() {
+    use glam::Vec3;
+    use rand::rngs::SmallRng;
+    use rand::{Rng, SeedableRng};
+    let mut rng = SmallRng::seed_from_u64(16);
+    let w = |v: Vec3| v.to_array().map(f64::from);
+    let (mut tight, mut dd, mut failures) = (0, 0, Vec::new());
+    let n = 3000;
+    for i in 0..n {
+        let c = Vec3::new(
+            rng.random_range(-1e3..1e3),
+            rng.random_range(-1e3..1e3),
+            rng.random_range(-1e3..1e3),
+        );
+        let r = 2f32.powi(rng.random_range(-6..6)) * rng.random_range(0.5f32..1.0);
+        let dist = r * 10f32.powi(rng.random_range(0..7));
+        let toward = Vec3::new(rng.random(), rng.random(), rng.random()) - 0.5;
+        let along = toward.normalize_or(Vec3::X);
+        let side = along.any_orthonormal_vector();
+        let off = match i % 3 {
+            0 => 1.0,
+            1 => 1.0 + 2f32.powi(-rng.random_range(1..24)),
+            _ => rng.random_range(0.0..1.2),
+        };
+        let o = c - along * dist;
+        let aim = c + side * (r * off);
+        let ray = rayoracle::Ray::new(o, aim - o);
+        let s = sphere::Sphere::new(c, r);
+        let args = (w(ray.origin), w(ray.dir), w(s.center), f64::from(s.radius));
+        for (stage, h) in [
+            (
+                "tight",
+                sphere::kernel::tight(args.0, args.1, args.2, args.3, 1.0),
+            ),
+            (
+                "dd",
+                sphere::kernel::double_word(args.0, args.1, args.2, args.3, 1.0),
+            ),
+        ] {
+            let Some(h) = h else { continue };
+            *if stage == "tight" {
+                &mut tight
+            } else {
+                &mut dd
+            } += 1;
+            match status(check::check_sphere(&ray, &s, h)) {
+                Ok(Status::Checked) => {}
+                other => failures.push(format!("#{i} {stage}: {ray:?} {s:?} {h:?}: {other:?}")),
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{}",
+        failures[..failures.len().min(10)].join("\n")
+    );
+    assert!(
+        tight * 2 > n && dd * 3 > 2 * n,
+        "tight {tight}, dd {dd} of {n}"
+    );
+}
+
+/// Under flush-to-zero and denormals-are-zero, the references return the
+/// same bits as without, on every catalogue case (its `plane/subnormal-
+/// normal` family has subnormal inputs) and on rays whose roots are
+/// subnormal f32 values from normal inputs, where only the result's
+/// rounding meets FTZ.
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn ftz_and_daz_change_no_answer() {
+    use glam::Vec3;
+    use rayoracle::num::certify::subnormals_work;
+    use rayoracle::ray::Ray;
+    fn csr() -> u32 {
+        let mut v = 0u32;
+        // SAFETY: stores the 32-bit MXCSR to `v`, a live aligned u32. Tests
+        // only: no benchmark is involved; a test cannot set the floating-
+        // point environment another way.
+        unsafe { core::arch::asm!("stmxcsr [{}]", in(reg) &mut v, options(nostack)) };
+        v
+    }
+    fn set_csr(v: u32) {
+        // SAFETY: loads MXCSR from `v`, a live aligned u32 holding the
+        // saved register with at most the FTZ and DAZ bits added: a valid
+        // value. Tests only, on this test's own thread.
+        unsafe { core::arch::asm!("ldmxcsr [{}]", in(reg) &v, options(nostack)) };
+    }
+    let mut cases: Vec<Case> = catalogue()
+        .families
+        .iter()
+        .flat_map(|f| f.cases.iter().cloned())
+        .filter(|c| !matches!(c, Case::Camera(..)))
+        .collect();
+    cases.push(Case::Plane(
+        Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1e10)),
+        plane::Plane::new(Vec3::new(0.0, 0.0, 1e-30), Vec3::Z),
+    ));
+    cases.push(Case::Sphere(
+        Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1e18)),
+        sphere::Sphere::new(Vec3::new(0.0, 0.0, 1e-20), 1e-21),
+    ));
+    // A tangent at t = 10⁻³⁸ (subnormal) that only the double-word stage
+    // settles: the root's rounding meets FTZ after the filter.
+    cases.push(Case::Sphere(
+        Ray::new(Vec3::new(0.0, 1.0, -1e-20), Vec3::new(0.0, 0.0, 1e18)),
+        sphere::Sphere::new(Vec3::ZERO, 1.0),
+    ));
+    let bits = |c: &Case| -> Vec<u32> {
+        let roots = |h: &dyn rayoracle::hit::Intersection| {
+            let mut v: Vec<u32> = h.roots().as_slice().iter().map(|t| t.to_bits()).collect();
+            v.push(h.class().len() as u32);
+            v
+        };
+        match c {
+            Case::Plane(r, p) => roots(&plane::reference::intersect(r, p)),
+            Case::Sphere(r, s) => roots(&sphere::reference::intersect(r, s)),
+            Case::Quadric(r, q) => roots(&quadric::reference::intersect(r, q)),
+            Case::Camera(..) => vec![],
+        }
+    };
+    let plain: Vec<Vec<u32>> = cases.iter().map(bits).collect();
+    let saved = csr();
+    set_csr(saved | 1 << 15 | 1 << 6);
+    let flushing = !subnormals_work();
+    let flushed: Vec<Vec<u32>> = cases.iter().map(bits).collect();
+    set_csr(saved);
+    assert!(flushing, "FTZ/DAZ did not take effect");
+    let tiny = plain
+        .iter()
+        .flatten()
+        .filter(|b| (1..0x0080_0000).contains(&(*b & 0x7fff_ffff)))
+        .count();
+    assert!(tiny >= 4, "only {tiny} subnormal roots");
+    let (Case::Sphere(r, s), Some(last)) = (cases.last().unwrap(), plain.last()) else {
+        unreachable!()
+    };
+    assert_eq!(
+        sphere::reference::intersect_staged(r, s).1,
+        rayoracle::stage::Stage::DoubleWord,
+        "{last:?}"
+    );
+    let diffs: Vec<usize> = (0..cases.len())
+        .filter(|&i| plain[i] != flushed[i])
+        .collect();
+    assert!(
+        diffs.is_empty(),
+        "{} cases differ, first {:?}",
+        diffs.len(),
+        cases[diffs[0]]
+    );
+}
+
+/// The plane's and quadric's double-word stages on their own, on seeded
+/// random lines nearly or exactly parallel to a plane with a non-dyadic
+/// normal (`d = n × e + εn`, ε 0 or tiny), and the same plane as the
+/// quadric `(n·p − n·a)(e·p) = 0` crossed by the same lines: wherever a
+/// stage answers, it answers the oracle's bits; and it answers most.
+#[test]
+fn plane_and_quadric_double_word_alone_match_the_oracle() {
+    use glam::Vec3;
+    use rand::rngs::SmallRng;
+    use rand::{Rng, SeedableRng};
+    let mut rng = SmallRng::seed_from_u64(7);
+    let w = |v: Vec3| v.to_array().map(f64::from);
+    let mut v3 = |r: f32| {
+        Vec3::new(
+            rng.random_range(-r..r),
+            rng.random_range(-r..r),
+            rng.random_range(-r..r),
+        )
+    };
+    let (mut answered, mut failures) = ([0; 2], Vec::new());
+    let n_cases = 2000;
+    for i in 0..n_cases {
+        let (n, e, a, o) = (v3(1.0), v3(1.0), v3(100.0), v3(100.0));
+        let eps = if i % 2 == 0 {
+            0.0
+        } else {
+            2f32.powi(-(i % 40) - 10)
+        };
+        let d = n.cross(e) + n * eps;
+        let ray = rayoracle::Ray::new(o, d);
+        let p = plane::Plane::new(a, n);
+        if let Some(h) = plane::kernel::double_word(w(o), w(d), w(a), w(n), 1.0) {
+            answered[0] += 1;
+            if !matches!(status(check::check_plane(&ray, &p, h)), Ok(Status::Checked)) {
+                failures.push(format!("plane #{i}: {ray:?} {p:?} {h:?}"));
+            }
+        }
+        // (n·p − k)·(e·p) with k = n·a rounded to f32: a hyperbolic
+        // paraboloid-like quadric pair, its coefficients rounded to f32.
+        let k = n.dot(a);
+        let q = quadric::Quadric::new([
+            n.x * e.x,
+            n.y * e.y,
+            n.z * e.z,
+            n.x * e.y + n.y * e.x,
+            n.x * e.z + n.z * e.x,
+            n.y * e.z + n.z * e.y,
+            -k * e.x,
+            -k * e.y,
+            -k * e.z,
+            0.0,
+        ]);
+        let kk = q.coeffs.map(f64::from);
+        if let Some(h) = quadric::kernel::double_word(&kk, w(o), w(d), 1.0) {
+            answered[1] += 1;
+            if !matches!(
+                status(check::check_quadric(&ray, &q, h)),
+                Ok(Status::Checked)
+            ) {
+                failures.push(format!("quadric #{i}: {ray:?} {q:?} {h:?}"));
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{}",
+        failures[..failures.len().min(10)].join("\n")
+    );
+    assert!(
+        answered.iter().all(|&x| x * 2 > n_cases),
+        "answered {answered:?} of {n_cases}"
+    );
+}

@@ -82,8 +82,9 @@ pub fn quotient_bound<L: Real>(ey: L, ex: L, iy: L, round: f64) -> (L, L) {
 /// flush-to-zero (FTZ) or denormals-are-zero (DAZ) is on, as some renderers
 /// and audio engines set it. The filters' bounds assume IEEE-754 gradual
 /// underflow (an f32 subnormal input, an f64 → f32 subnormal result), so
-/// the kernels check this on every call and, when it fails, take the exact
-/// path, whose arithmetic is on integers and unaffected.
+/// the kernels check this wherever [`needs_probe`] says it matters and,
+/// when it fails, take the exact path, whose arithmetic is on integers and
+/// unaffected.
 ///
 /// On x86-64 this reads the two flags from the SSE control register
 /// (MXCSR): a few cycles. Elsewhere it is [`subnormals_survive`], which
@@ -121,6 +122,73 @@ pub fn subnormals_work() -> bool {
     {
         subnormals_survive()
     }
+}
+
+/// Whether FTZ or DAZ could change what a kernel returns on these inputs,
+/// or on a result `t` it certified, so that [`subnormals_work`] must be
+/// asked; the scalar kernels skip that register read (the dearest single
+/// step of their fast path) when this is false.
+///
+/// FTZ and DAZ act only on subnormal values: DAZ reads a subnormal operand
+/// as 0, FTZ writes 0 for a subnormal result. Three places can meet one:
+///
+/// * **an f32 input that is subnormal**: DAZ reads it as 0 when widening
+///   to f64. Tested here on the bits (integer arithmetic, which DAZ does
+///   not touch; a float comparison would see 0).
+/// * **an f64 intermediate**: with no subnormal input, every input is 0
+///   or at least `2⁻¹²⁶` in magnitude, and below `2¹²⁸`. The scalar
+///   stages compute products of at most six inputs (at least `2⁻⁷⁵⁶`),
+///   rounded sums and differences of them (a nonzero one at least `2⁻⁵²`
+///   of its terms), TwoSum and TwoProduct errors of values on the grid
+///   of their inputs' products, and bounds and quotients whose factors the
+///   kernels' range sections pair (a large divisor comes with a large
+///   dividend: `E_Δ/ŝ ≥ 75uŝ`, `E_q/â ≥ 2u|q̂|/â`): all of them stay above
+///   `2⁻⁹⁰⁰`, far from `2⁻¹⁰²²`. A discriminant may come within a few
+///   ulps of 0 and below that, where a flush to 0 certifies nothing, as
+///   the unflushed value would not. The tight stage's squares may
+///   underflow; its `η = 2⁻¹⁰⁰⁰` covers a flush to 0 as it covers
+///   gradual underflow (each loses less than `2⁻¹⁰²²`).
+/// * **the result's rounding to f32**: FTZ flushes a subnormal f32. Both
+///   ends of a certified enclosure round to one f32; if that f32 is
+///   subnormal, `|t| < 2⁻¹²⁶`. An end flushed alone makes the ends differ,
+///   which certifies nothing; `t = 0` certifies only with `e = 0`, where
+///   no rounding happens.
+///
+/// So the environment matters only where an input is subnormal or a
+/// certified `t` is nonzero with `|t| < 2⁻¹²⁶`.
+///
+/// ```
+/// use rayoracle::num::certify::needs_probe;
+/// assert!(!needs_probe(&[1.0, 0.0, -3.5], &[4.0, 0.0]));
+/// assert!(needs_probe(&[1.0, 1e-40], &[4.0]));
+/// assert!(needs_probe(&[1.0], &[1e-39]));
+/// ```
+#[inline(always)]
+pub fn needs_probe(inputs: &[f32], t: &[f64]) -> bool {
+    let mut any = false;
+    for x in inputs {
+        any |= (x.to_bits() & 0x7fff_ffff).wrapping_sub(1) < 0x007f_ffff;
+    }
+    for t in t {
+        any |= *t != 0.0 && t.abs() < f64::from(f32::MIN_POSITIVE);
+    }
+    any
+}
+
+/// Whether any of these certified f32 results is 0 or subnormal (by its
+/// bits): the results of the later stages, which return f32 values, need
+/// [`subnormals_work`] only there. A result FTZ flushed is 0; one that
+/// certified only because FTZ flushed both ends of its enclosure is 0 too
+/// ([`needs_probe`]).
+///
+/// ```
+/// use rayoracle::num::certify::flush_prone;
+/// assert!(!flush_prone(&[1.0, -2.0]));
+/// assert!(flush_prone(&[1.0, 0.0]) && flush_prone(&[-1e-40]));
+/// ```
+#[inline(always)]
+pub fn flush_prone(roots: &[f32]) -> bool {
+    roots.iter().any(|t| t.to_bits() & 0x7f80_0000 == 0)
 }
 
 /// [`subnormals_work`] by arithmetic, on any target: halves the smallest

@@ -26,5 +26,6 @@ pub use real::Real;
 #[cfg(target_arch = "x86_64")]
 pub mod avx;
 pub mod certify;
+pub mod dd;
 pub mod real;
 pub mod tracked;

@@ -7,9 +7,15 @@
 //!
 //! * a sum rounds exactly when Knuth's TwoSum error `(a − (s − b')) + (b −
 //!   b')`, `b' = s − a`, is nonzero;
-//! * a product rounds exactly when `fma(a, b, −p)` is nonzero (the fused
-//!   multiply-add computes `ab − p` exactly here, since `ab − p` is
-//!   representable whenever `p` did not overflow; an overflow gives NaN).
+//! * a product rounds exactly when Dekker's TwoProduct error
+//!   ([`two_prod`]) is nonzero, or the product is below `2⁻⁹⁰⁰` without a
+//!   zero factor. Above that, every partial product of Dekker's algorithm
+//!   is a multiple of `ulp(a)·ulp(b) ≥ 2⁻¹⁰⁶|ab| > 2⁻¹⁰⁷⁴`, so
+//!   representable, and the error is exact; an overflow (or a split that
+//!   overflows, `|a| ≥ 2⁹⁹⁵`) gives a non-finite error. The kernels' exact
+//!   products of f32 data are at least `2⁻⁸⁹⁴`. TwoProduct is plain
+//!   arithmetic, where `mul_add` calls libm's `fma` on builds without the
+//!   `fma` target feature: several times slower.
 //!
 //! ```
 //! use rayoracle::num::tracked::Tracked;
@@ -19,6 +25,11 @@
 //! x.add(1.0, 2.0f64.powi(-60));
 //! assert!(!x.exact());
 //! ```
+
+use super::dd::two_prod;
+
+/// The least product magnitude [`Tracked::mul`] vouches for, `2⁻⁹⁰⁰`.
+const TINY: f64 = f64::from_bits((1023 - 900) << 52);
 
 /// Whether every operation so far was exact.
 #[derive(Clone, Copy, Debug)]
@@ -65,18 +76,37 @@ impl Tracked {
     /// let mut y = Tracked::new();
     /// assert_eq!(y.mul(1e300, 1e300), f64::INFINITY);
     /// assert!(!y.exact());
+    /// // Underflow rounds.
+    /// let mut z = Tracked::new();
+    /// z.mul(1e-200, 1e-200);
+    /// assert!(!z.exact());
+    /// let mut w = Tracked::new();
+    /// assert_eq!(w.mul(0.0, 1e-300), 0.0);
+    /// assert!(w.exact());
     /// ```
     #[inline(always)]
     pub fn mul(&mut self, a: f64, b: f64) -> f64 {
-        let p = a * b;
-        self.exact &= a.mul_add(b, -p) == 0.0;
+        let (p, e) = two_prod(a, b);
+        self.exact &= e == 0.0 && (p.abs() >= TINY || a == 0.0 || b == 0.0);
         p
     }
     /// `Σ xᵢyᵢ` over three pairs, noting whether it rounded.
     #[inline(always)]
     pub fn dot(&mut self, x: [f64; 3], y: [f64; 3]) -> f64 {
-        let p = [0, 1, 2].map(|i| self.mul(x[i], y[i]));
+        let p = [
+            self.mul(x[0], y[0]),
+            self.mul(x[1], y[1]),
+            self.mul(x[2], y[2]),
+        ];
         let s = self.add(p[0], p[1]);
         self.add(s, p[2])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn tiny_is_two_to_the_minus_900() {
+        assert_eq!(super::TINY, 2f64.powi(-900));
     }
 }

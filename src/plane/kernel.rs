@@ -30,6 +30,7 @@
 
 use super::PlaneHit;
 use crate::num::certify::{U, certify, quotient_bound};
+use crate::num::dd::{Acc, quotient, two_sum};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
 
@@ -107,7 +108,7 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) 
 /// ```
 pub fn tracked(o: [f64; 3], d: [f64; 3], a: [f64; 3], n: [f64; 3]) -> Option<PlaneHit> {
     let mut x = Tracked::new();
-    let w = [0, 1, 2].map(|i| x.sub(a[i], o[i]));
+    let w = [x.sub(a[0], o[0]), x.sub(a[1], o[1]), x.sub(a[2], o[2])];
     let num = x.dot(w, n);
     let den = x.dot(d, n);
     if !x.exact() {
@@ -122,4 +123,48 @@ pub fn tracked(o: [f64; 3], d: [f64; 3], a: [f64; 3], n: [f64; 3]) -> Option<Pla
     }
     let t = num / den + 0.0;
     certify(t, 2.0 * U, 0.0).then_some(PlaneHit::Hit(t as f32))
+}
+
+/// The double-word stage ([`crate::num::dd`]): `a − o` split exactly into
+/// two words by TwoSum, then `num = Σ(aᵢ − oᵢ)nᵢ` and `den = Σdᵢnᵢ` as
+/// sums of exact products (multiples of `2⁻²⁹⁸`, so TwoProduct is exact).
+/// Where no low word rounded, both are exact, and so are their signs and
+/// zeros; otherwise their bounds decide or nothing does. The root
+/// `num/den` is certified from the leading words with `|lo| + err` as
+/// their bounds ([`quotient`]). Every bound is multiplied by `shrink`.
+///
+/// ```
+/// use rayoracle::plane::{PlaneHit, kernel::{double_word, tracked}};
+/// // d·n = 0.1f32·0.3f32 − 0.3f32·0.1f32 = 0 exactly; a − o rounds in f64.
+/// let (x, y) = (0.1f32 as f64, 0.3f32 as f64);
+/// let (o, a) = ([1e-30f32 as f64, 0.0, 0.0], [1e30f32 as f64, 0.0, 0.0]);
+/// assert_eq!(tracked(o, [x, y, 0.0], a, [y, -x, 0.0]), None);
+/// assert_eq!(double_word(o, [x, y, 0.0], a, [y, -x, 0.0], 1.0), Some(PlaneHit::Parallel));
+/// ```
+pub fn double_word(
+    o: [f64; 3],
+    d: [f64; 3],
+    a: [f64; 3],
+    n: [f64; 3],
+    shrink: f64,
+) -> Option<PlaneHit> {
+    let (mut num, mut den) = (Acc::new(), Acc::new());
+    for i in 0..3 {
+        let (wh, wl) = two_sum(a[i], -o[i]);
+        num.add_prod(wh, n[i]);
+        num.add_prod(wl, n[i]);
+        den.add(d[i] * n[i]);
+    }
+    let (num, den) = (num.finish(shrink), den.finish(shrink));
+    if den.is_zero() {
+        return if num.is_zero() {
+            Some(PlaneHit::InPlane)
+        } else {
+            num.sign_known().then_some(PlaneHit::Parallel)
+        };
+    }
+    if !den.sign_known() {
+        return None;
+    }
+    quotient(num.approx(), den.approx(), shrink).map(PlaneHit::Hit)
 }

@@ -1,9 +1,11 @@
 //! The scalar reference: the [filter](super::kernel) at `f64`, then the
-//! exact oracle for whatever it leaves undecided.
+//! later stages ([`crate::stage`]) for whatever it leaves undecided, the
+//! exact oracle last.
 
 use super::{Plane, PlaneHit, exact, kernel};
 use crate::Ray;
-use crate::num::certify::{certify, subnormals_work};
+use crate::hit::Intersection;
+use crate::num::certify::{certify, flush_prone, needs_probe, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a plane: the exact class over `t ∈ ℝ`, and the
@@ -39,15 +41,18 @@ pub fn intersect_staged(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
     intersect_shrunk(ray, plane, 1.0)
 }
 
-/// [`intersect_staged`] with the filter's bounds multiplied by `shrink`:
+/// [`intersect_staged`] with every stage's bounds multiplied by `shrink`:
 /// for the tests that show a bound too small gives wrong answers.
 #[doc(hidden)]
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
-    if !subnormals_work() {
+    // FTZ and DAZ matter only on a subnormal input or result
+    // ([`needs_probe`]): the register is read only there.
+    let inputs = inputs(ray, plane);
+    if needs_probe(&inputs, &[]) && !subnormals_work() {
         return (exact_stage(ray, plane), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let f = kernel::filter(
         w(ray.origin),
         w(ray.dir),
@@ -56,31 +61,56 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
         shrink,
     );
     if f.hit && certify(f.t, f.r, f.a) {
+        if needs_probe(&[], &[f.t]) && !subnormals_work() {
+            return (exact_stage(ray, plane), Stage::Exact);
+        }
         (PlaneHit::Hit(f.t as f32), Stage::Filter)
     } else if f.parallel {
         (PlaneHit::Parallel, Stage::Filter)
     } else if f.in_plane {
         (PlaneHit::InPlane, Stage::Filter)
     } else {
-        escalate(ray, plane)
+        escalate_shrunk(ray, plane, shrink)
     }
 }
 
 /// The stages after the filter: f64 arithmetic that proves itself exact
-/// ([`kernel::tracked`]), then the exact oracle. The tracked stage, too,
-/// assumes subnormals work, so this checks for itself: x4 sends its
-/// undecided lanes here, and all of them when FTZ or DAZ is on.
+/// ([`kernel::tracked`]), double-word arithmetic
+/// ([`kernel::double_word`]), then the exact oracle. The later stages,
+/// too, assume subnormals work where an input or a result is subnormal
+/// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
+/// its undecided lanes here, and all of them when FTZ or DAZ is on.
 #[cold]
 #[inline(never)]
 pub(crate) fn escalate(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
-    if !subnormals_work() {
+    escalate_shrunk(ray, plane, 1.0)
+}
+
+/// [`escalate`] with the bounds of its stages multiplied by `shrink`.
+#[cold]
+#[inline(never)]
+fn escalate_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
+    if needs_probe(&inputs(ray, plane), &[]) && !subnormals_work() {
         return (exact_stage(ray, plane), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.to_array().map(f64::from);
-    match kernel::tracked(w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal)) {
-        Some(h) => (h, Stage::Tracked),
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
+    let staged = (kernel::tracked(o, d, a, n).map(|h| (h, Stage::Tracked)))
+        .or_else(|| kernel::double_word(o, d, a, n, shrink).map(|h| (h, Stage::DoubleWord)));
+    match staged {
+        Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
+            (exact_stage(ray, plane), Stage::Exact)
+        }
+        Some(hs) => hs,
         None => (exact_stage(ray, plane), Stage::Exact),
     }
+}
+
+/// The inputs, for [`needs_probe`].
+#[inline(always)]
+fn inputs(ray: &Ray, plane: &Plane) -> [f32; 12] {
+    let (o, d, a, n) = (ray.origin, ray.dir, plane.point, plane.normal);
+    [o.x, o.y, o.z, d.x, d.y, d.z, a.x, a.y, a.z, n.x, n.y, n.z]
 }
 
 /// The last stage: the exact oracle; [`PlaneHit::Parallel`] for a

@@ -58,6 +58,7 @@
 
 use super::QuadricHit;
 use crate::num::certify::{SLACK, U, certify, quotient_bound};
+use crate::num::dd::{Acc, quotient, two_prod, two_roots};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
 
@@ -241,7 +242,8 @@ pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filter
 }
 
 /// The second stage: α, β, γ and `β² − 4αγ` tracked for exactness
-/// ([`Tracked`]), each term `k·x·y` as two checked products. Where no
+/// ([`Tracked`]), each term `k·x·y` as `k·x` (a product of two f32
+/// values, exact in f64) times `y`, checked. Where no
 /// operation rounded, the class follows from signs, as in pbrt-v4's
 /// `Quadratic` with its α = 0 branch: a linear root `−γ/β` or a double
 /// root `−β/2α` rounds once (certified with `2u`); two roots `q/α` and
@@ -259,10 +261,12 @@ pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filter
 /// ```
 pub fn tracked(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> Option<QuadricHit> {
     let mut x = Tracked::new();
-    let (alpha, beta, gamma) = terms(k, o, d, 1.0, |c, p, q| {
-        let cp = x.mul(c, p);
-        x.mul(cp, q)
-    });
+    // `c·p` is a product of two f32 values: exact in f64, unchecked.
+    let (alpha, beta, gamma) = terms(k, o, d, 1.0, |c, p, q| x.mul(c * p, q));
+    // Most data that is not small integers or dyadic rounds here already.
+    if !x.exact() {
+        return None;
+    }
     let mut sum = |v: &[f64]| v.iter().fold(0.0, |s, &y| x.add(s, y));
     let (alpha, beta, gamma) = (sum(&alpha), sum(&beta), sum(&gamma));
     let b2 = x.mul(beta, beta);
@@ -292,4 +296,105 @@ pub fn tracked(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> Option<QuadricHit> {
     let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
     let ok = certify(t0, 8.0 * U, 0.0) && certify(t1, 8.0 * U, 0.0);
     ok.then_some(QuadricHit::Two(t0 as f32, t1 as f32))
+}
+
+/// A term `c·x·y` as two words: `c·x` is exact (two f32 values), its
+/// product with `y` is split by TwoProduct. `+` serves only β's doubling,
+/// which is exact word by word.
+#[derive(Clone, Copy)]
+struct Pair(f64, f64);
+
+impl core::ops::Add for Pair {
+    type Output = Pair;
+    #[inline(always)]
+    fn add(self, o: Pair) -> Pair {
+        Pair(self.0 + o.0, self.1 + o.1)
+    }
+}
+
+/// Each value as a pair with a zero low word, by a plain loop (`array::map`
+/// is not always inlined).
+#[inline(always)]
+fn pairs<const N: usize>(x: &[f64; N]) -> [Pair; N] {
+    let mut p = [Pair(0.0, 0.0); N];
+    for (p, x) in p.iter_mut().zip(x) {
+        p.0 = *x;
+    }
+    p
+}
+
+/// The double-word stage ([`crate::num::dd`]): every term `k·x·y` of α, β
+/// and γ exactly as two words (a multiple of `2⁻⁴⁴⁷`), each coefficient
+/// their sum in two words, and `Δ/4 = (β/2)² − αγ` as the sum of the exact
+/// products of their words (multiples of `2⁻⁸⁹⁶`, so TwoProduct is exact).
+/// Where no low word rounded, α, β, γ and `Δ` are exact, and so are their
+/// signs and zeros: α = 0 (the linear root `−γ/β`, or the whole line, or
+/// nothing), a double root `−β/2α` (pbrt-v4's `Quadratic` branches);
+/// otherwise their bounds decide the signs or nothing does. The roots are
+/// certified from the leading words with `|lo| + err` as their bounds
+/// ([`quotient`], [`two_roots`] with `b = β/2`). Every bound is multiplied
+/// by `shrink`.
+///
+/// ```
+/// use rayoracle::quadric::{QuadricHit, kernel::{double_word, tracked}};
+/// // The double plane (x − z)² = x² − 2xz + z² = 0, crossed at 0.1f32
+/// // along (0.3f32, 0, 0.1f32): Δ = 0 exactly, but β² rounds in f64.
+/// let k = [1.0, 0.0, 1.0, 0.0, -2.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+/// let (o, d) = ([0.1f32 as f64, 0.0, 0.0], [0.3f32 as f64, 0.0, 0.1f32 as f64]);
+/// assert_eq!(tracked(&k, o, d), None);
+/// let h = double_word(&k, o, d, 1.0);
+/// assert!(matches!(h, Some(QuadricHit::One(t)) if t < 0.0));
+/// ```
+pub fn double_word(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<QuadricHit> {
+    let (kp, op, dp) = (pairs(k), pairs(&o), pairs(&d));
+    let (alpha, beta, gamma) = terms(&kp, op, dp, Pair(1.0, 0.0), |c, x, y| {
+        let (h, l) = two_prod(c.0 * x.0, y.0);
+        Pair(h, l)
+    });
+    let sum = |v: &[Pair]| {
+        let mut acc = Acc::new();
+        v.iter().for_each(|t| acc.add_pair((t.0, t.1)));
+        acc.finish(shrink)
+    };
+    let (alpha, beta, gamma) = (sum(&alpha), sum(&beta), sum(&gamma));
+    if alpha.is_zero() {
+        return if beta.is_zero() {
+            if gamma.is_zero() {
+                Some(QuadricHit::All)
+            } else {
+                gamma.sign_known().then_some(QuadricHit::None)
+            }
+        } else if beta.sign_known() {
+            let t = quotient(gamma.approx(), beta.approx(), shrink)?;
+            Some(QuadricHit::One(-t + 0.0))
+        } else {
+            None
+        };
+    }
+    if !alpha.sign_known() {
+        return None;
+    }
+    let b = beta.scale(0.5);
+    let mut disc = Acc::wide();
+    disc.add_dd_prod(b, b);
+    disc.add_dd_prod(alpha.scale(-1.0), gamma);
+    let disc = disc.finish(shrink);
+    if disc.is_zero() {
+        let t = quotient(b.approx(), alpha.approx(), shrink)?;
+        return Some(QuadricHit::One(-t + 0.0));
+    }
+    if !disc.sign_known() {
+        return None;
+    }
+    if disc.hi < 0.0 {
+        return Some(QuadricHit::None);
+    }
+    let (t0, t1) = two_roots(
+        alpha.approx(),
+        b.approx(),
+        gamma.approx(),
+        disc.approx(),
+        shrink,
+    )?;
+    Some(QuadricHit::Two(t0, t1))
 }

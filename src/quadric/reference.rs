@@ -1,9 +1,11 @@
 //! The scalar reference: the [filter](super::kernel) at `f64`, then the
-//! exact oracle for whatever it leaves undecided.
+//! later stages ([`crate::stage`]) for whatever it leaves undecided, the
+//! exact oracle last.
 
 use super::{Quadric, QuadricHit, exact, kernel};
 use crate::Ray;
-use crate::num::certify::{certify, subnormals_work};
+use crate::hit::Intersection;
+use crate::num::certify::{certify, flush_prone, needs_probe, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a quadric: the exact class over `t ∈ ℝ`, and the
@@ -41,22 +43,23 @@ pub fn intersect_staged(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
     intersect_shrunk(ray, quadric, 1.0)
 }
 
-/// [`intersect_staged`] with the filter's bounds multiplied by `shrink`:
+/// [`intersect_staged`] with every stage's bounds multiplied by `shrink`:
 /// for the tests that show a bound too small gives wrong answers.
 #[doc(hidden)]
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
-    if !subnormals_work() {
+    // FTZ and DAZ matter only on a subnormal input or result
+    // ([`needs_probe`]): the register is read only there.
+    let inputs = inputs(ray, quadric);
+    if needs_probe(&inputs, &[]) && !subnormals_work() {
         return (exact_stage(ray, quadric), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.to_array().map(f64::from);
-    let f = kernel::filter(
-        &quadric.coeffs.map(f64::from),
-        w(ray.origin),
-        w(ray.dir),
-        shrink,
-    );
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let f = kernel::filter(&widen(&quadric.coeffs), w(ray.origin), w(ray.dir), shrink);
     if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
+        if needs_probe(&[], &[f.t0, f.t1]) && !subnormals_work() {
+            return (exact_stage(ray, quadric), Stage::Exact);
+        }
         // Disjoint enclosures are in the exact order; overlapping ones
         // round to the same f32.
         let (t0, t1) = if f.t0 <= f.t1 {
@@ -66,31 +69,69 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
         };
         (QuadricHit::Two(t0 as f32, t1 as f32), Stage::Filter)
     } else if f.linear && certify(f.t1, f.r1, f.a1) {
+        if needs_probe(&[], &[f.t1]) && !subnormals_work() {
+            return (exact_stage(ray, quadric), Stage::Exact);
+        }
         (QuadricHit::One(f.t1 as f32), Stage::Filter)
     } else if f.none {
         (QuadricHit::None, Stage::Filter)
     } else if f.all {
         (QuadricHit::All, Stage::Filter)
     } else {
-        escalate(ray, quadric)
+        escalate_shrunk(ray, quadric, shrink)
     }
 }
 
 /// The stages after the filter: f64 arithmetic that proves itself exact
-/// ([`kernel::tracked`]), then the exact oracle. The tracked stage, too,
-/// assumes subnormals work, so this checks for itself: x4 sends its
-/// undecided lanes here, and all of them when FTZ or DAZ is on.
+/// ([`kernel::tracked`]), double-word arithmetic
+/// ([`kernel::double_word`]), then the exact oracle. The later stages,
+/// too, assume subnormals work where an input or a result is subnormal
+/// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
+/// its undecided lanes here, and all of them when FTZ or DAZ is on.
 #[cold]
 #[inline(never)]
 pub(crate) fn escalate(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
-    if !subnormals_work() {
+    escalate_shrunk(ray, quadric, 1.0)
+}
+
+/// [`escalate`] with the bounds of its stages multiplied by `shrink`.
+#[cold]
+#[inline(never)]
+fn escalate_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
+    if needs_probe(&inputs(ray, quadric), &[]) && !subnormals_work() {
         return (exact_stage(ray, quadric), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.to_array().map(f64::from);
-    match kernel::tracked(&quadric.coeffs.map(f64::from), w(ray.origin), w(ray.dir)) {
-        Some(h) => (h, Stage::Tracked),
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
+    let staged = (kernel::tracked(&k, o, d).map(|h| (h, Stage::Tracked)))
+        .or_else(|| kernel::double_word(&k, o, d, shrink).map(|h| (h, Stage::DoubleWord)));
+    match staged {
+        Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
+            (exact_stage(ray, quadric), Stage::Exact)
+        }
+        Some(hs) => hs,
         None => (exact_stage(ray, quadric), Stage::Exact),
     }
+}
+
+/// The coefficients in f64, by a plain loop: `array::map` is not always
+/// inlined, and a call per case costs a fifth of a fast path.
+#[inline(always)]
+fn widen(c: &[f32; 10]) -> [f64; 10] {
+    let mut k = [0.0; 10];
+    for (k, c) in k.iter_mut().zip(c) {
+        *k = f64::from(*c);
+    }
+    k
+}
+
+/// The inputs, for [`needs_probe`].
+#[inline(always)]
+fn inputs(ray: &Ray, quadric: &Quadric) -> [f32; 16] {
+    let (o, d, k) = (ray.origin, ray.dir, &quadric.coeffs);
+    [
+        o.x, o.y, o.z, d.x, d.y, d.z, k[0], k[1], k[2], k[3], k[4], k[5], k[6], k[7], k[8], k[9],
+    ]
 }
 
 /// The last stage: the exact oracle; [`QuadricHit::None`] for a non-finite

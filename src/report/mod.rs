@@ -369,7 +369,11 @@ pub fn markdown(rows: &[Row], catalogue: &Catalogue) -> String {
             continue;
         }
         out += &format!("### {}\n\n", kernel.name());
-        out += "| family | cond. | variant | cases | max bits | p99 bits | mean bits | class mismatches | filter / tracked / exact | ns/ray |\n";
+        let names: Vec<&str> = crate::stage::Stage::ALL.iter().map(|s| s.name()).collect();
+        out += &format!(
+            "| family | cond. | variant | cases | max bits | p99 bits | mean bits | class mismatches | {} | ns/ray |\n",
+            names.join(" / ")
+        );
         out += "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
         for r in mine {
             let cond = match catalogue.family(&r.family) {
@@ -381,12 +385,8 @@ pub fn markdown(rows: &[Row], catalogue: &Catalogue) -> String {
                 "–".into()
             } else {
                 let pc = |k: &str| r.stages.get(k).map_or(0.0, |x| x * 100.0);
-                format!(
-                    "{:.0}% / {:.0}% / {:.0}%",
-                    pc("filter"),
-                    pc("tracked"),
-                    pc("exact")
-                )
+                let shares: Vec<String> = names.iter().map(|k| format!("{:.0}%", pc(k))).collect();
+                shares.join(" / ")
             };
             out += &format!(
                 "| {} | {cond} | {} | {} | {:.2} | {:.2} | {:.3} | {} | {stages} | {:.1} |\n",

@@ -73,6 +73,7 @@
 
 use super::SphereHit;
 use crate::num::certify::{SLACK, U, certify, quotient_bound};
+use crate::num::dd::{Acc, Approx, quotient, two_roots, two_sum};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
 
@@ -99,6 +100,36 @@ pub struct Filtered<L: Real> {
     pub a1: L,
 }
 
+/// The quantities the filter and the tight stage share: `f = o − C`, `a =
+/// d·d`, `b = f·d`, `m_b = Σ|fᵢdᵢ|`, `f·f` and `R²`, in f64 as written.
+struct Dots<L> {
+    f: [L; 3],
+    a: L,
+    b: L,
+    mb: L,
+    ff: L,
+    rr: L,
+}
+
+#[inline(always)]
+fn dots<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Dots<L> {
+    let f = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
+    let a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    let fd = [f[0] * d[0], f[1] * d[1], f[2] * d[2]];
+    let b = fd[0] + fd[1] + fd[2];
+    let mb = fd[0].abs() + fd[1].abs() + fd[2].abs();
+    let ff = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+    let rr = r * r;
+    Dots {
+        f,
+        a,
+        b,
+        mb,
+        ff,
+        rr,
+    }
+}
+
 /// Runs the filter on a line `o + t d` and a sphere `(c, r)`, with every
 /// bound multiplied by `shrink` (1 in the kernels; the tests pass less to
 /// show that a bound too small is caught).
@@ -117,13 +148,9 @@ pub struct Filtered<L: Real> {
 pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Filtered<L> {
     let k = |x: f64| L::splat(x * U * shrink);
     let u2 = L::splat(2.0 * U * shrink);
-    let f = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
-    let a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    let fd = [f[0] * d[0], f[1] * d[1], f[2] * d[2]];
-    let b = fd[0] + fd[1] + fd[2];
-    let mb = fd[0].abs() + fd[1].abs() + fd[2].abs();
-    let ff = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
-    let rr = r * r;
+    let Dots {
+        a, b, mb, ff, rr, ..
+    } = dots(o, d, c, r);
     let cq = ff - rr;
     let mc = ff + rr;
     let disc = b * b - a * cq;
@@ -163,6 +190,101 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Fi
     }
 }
 
+/// The tight stage, after Ray Tracing Gems ch. 7 (Haines et al.,
+/// *Precision improvements for ray/sphere intersection*): the
+/// discriminant as `Δ = aΔ'`, `Δ' = R² − |l|²`, where `l = f − (b/a)d` is
+/// the vector from the centre to the line's closest point. Its error grows
+/// with `R·|f|` where the textbook `b² − ac` grows with `|f|²a`, so a far
+/// tiny sphere is decided here, in f64.
+///
+/// # The bound
+///
+/// In the notation of the [module](self), with `E_b = 8u m_b` and `E_a =
+/// 4uâ` as in the filter (twice `γ₄ m_b` and `γ₂ a`); each constant below
+/// is at least twice what the proof needs.
+///
+/// * `λ̂ = fl(b̂/â)`: `|b̂/â − b̂/a| ≤ 2.01u|b̂/â|`, `|b̂ − b|/a ≤ 1.01E_b/â`,
+///   and one rounding: `E_λ = 8u|λ̂| + 2E_b/â`.
+/// * `p̂ᵢ = fl(λ̂dᵢ)` and `l̂ᵢ = fl(f̂ᵢ − p̂ᵢ)`, where `f̂ᵢ` is within
+///   `u|f̂ᵢ|` of `fᵢ`: `|l̂ᵢ − lᵢ| ≤ u(|l̂ᵢ| + 1.01|f̂ᵢ| + |p̂ᵢ|) + E_λ|dᵢ|`;
+///   the stage uses `E_lᵢ = 2u(|l̂ᵢ| + |f̂ᵢ| + |p̂ᵢ|) + E_λ|dᵢ|`. Since
+///   `E_b/â·|dᵢ| ≤ 8u m_b|dᵢ|/a ≤ 8u|f|`, this is of the order of `u|f|`.
+/// * `L̂ = fl(Σl̂ᵢ²)` and `Δ̂' = fl(R² − L̂)` (`R²` exact): `|Σl̂ᵢ² −
+///   Σlᵢ²| ≤ Σ(2|l̂ᵢ|E_lᵢ + E_lᵢ²)`, and four roundings, at most `γ₃L̂ +
+///   u(R² + L̂)`: `E_Δ' = 4Σ|l̂ᵢ|E_lᵢ + 2ΣE_lᵢ² + 8uL̂ + 2uR² + η`, with
+///   `η = 2⁻¹⁰⁰⁰` for the squares and products that may underflow (each
+///   loses less than `2⁻¹⁰⁷⁴`). Near the sphere `|l| ≈ R`: `E_Δ' ≈
+///   O(u R|f|)`.
+/// * `Δ̂' > E_Δ'` certifies two roots, `Δ̂' < −E_Δ'` none.
+/// * The roots, by [`two_roots`] from `Δ̂ = fl(âΔ̂')`, within `u|Δ̂| +
+///   |Δ̂'|E_a + âE_Δ' + E_aE_Δ'` of `Δ`: `E_Δ = 2u|Δ̂| + 8uâ|Δ̂'| + 2âE_Δ'
+///   + η`, with `c` and `E_c = 12u m_c` as in the filter.
+///
+/// Every bound is widened by `1 + 2⁻³⁰` for the roundings of its own
+/// evaluation and multiplied by `shrink`. `None` where the class or a root
+/// is undecided.
+///
+/// # Range
+///
+/// `|f̂ᵢ| ≤ 2¹²⁹`, `â ≥ 2⁻²⁹⁸`, `|b̂| ≤ 2²⁵⁹`, so `|λ̂| ≤ 2⁵⁵⁷` and
+/// `|p̂ᵢ| ≤ 2⁶⁸⁵`: no overflow. A nonzero `b̂` is at least `2⁻²⁹⁸` and `â`
+/// at most `2²⁵⁸`, so `λ̂`, `p̂ᵢ` and a nonzero `l̂ᵢ` stay normal; only
+/// squares and products of the bound may underflow, which `η` covers.
+///
+/// ```
+/// use rayoracle::sphere::{SphereHit, kernel::{filter, tight}};
+/// // R = 1 at 10⁷ along the axis: the filter cannot certify the roots.
+/// let (o, d) = ([0.5, 0.0, -1e7], [0.0, 0.0, 1.0]);
+/// let f = filter::<f64>(o, d, [0.0; 3], 1.0, 1.0);
+/// assert!(!(f.two && rayoracle::num::certify::certify(f.t1, f.r1, f.a1)));
+/// let s = 0.75f64.sqrt();
+/// let want = SphereHit::Two((1e7 - s) as f32, (1e7 + s) as f32);
+/// assert_eq!(tight(o, d, [0.0; 3], 1.0, 1.0), Some(want));
+/// ```
+///
+/// [`two_roots`]: crate::num::dd::two_roots
+pub fn tight(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64, shrink: f64) -> Option<SphereHit> {
+    let eta = f64::from_bits((1023 - 1000) << 52);
+    let Dots {
+        f,
+        a,
+        b,
+        mb,
+        ff,
+        rr,
+    } = dots(o, d, c, r);
+    let (eb, ea) = (8.0 * U * mb, 4.0 * U * a);
+    let lambda = b / a;
+    let el = 8.0 * U * lambda.abs() + 2.0 * eb / a;
+    let (mut ll, mut e1, mut e2) = (0.0, 0.0, 0.0);
+    for i in 0..3 {
+        let p = lambda * d[i];
+        let l = f[i] - p;
+        let e = 2.0 * U * (l.abs() + f[i].abs() + p.abs()) + el * d[i].abs();
+        ll += l * l;
+        e1 += l.abs() * e;
+        e2 += e * e;
+    }
+    let dp = rr - ll;
+    // Unshrunk here; the class tests and `two_roots` apply `shrink`.
+    let edp = (4.0 * e1 + 2.0 * e2 + 8.0 * U * ll + 2.0 * U * rr) * SLACK + eta;
+    let none = a == 0.0 || dp < -edp * shrink;
+    if none || !(a > 0.0 && dp > edp * shrink) {
+        return none.then_some(SphereHit::None);
+    }
+    let disc = a * dp;
+    let ed = (2.0 * U * disc + 8.0 * U * a * dp + 2.0 * a * edp) * SLACK + eta;
+    let x = |v: f64, e: f64| Approx { v, e };
+    let (t0, t1) = two_roots(
+        x(a, ea),
+        x(b, eb),
+        x(ff - rr, 12.0 * U * (ff + rr)),
+        x(disc, ed),
+        shrink,
+    )?;
+    Some(SphereHit::Two(t0, t1))
+}
+
 /// The second stage: the textbook quadratic tracked for exactness
 /// ([`Tracked`]). Where no operation rounded, `a`, `b`, `c` and `Δ` are
 /// exact, so the class follows from signs: a tangent's root `−b/a` rounds
@@ -178,7 +300,7 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Fi
 /// ```
 pub fn tracked(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Option<SphereHit> {
     let mut x = Tracked::new();
-    let f = [0, 1, 2].map(|i| x.sub(o[i], c[i]));
+    let f = [x.sub(o[0], c[0]), x.sub(o[1], c[1]), x.sub(o[2], c[2])];
     let a = x.dot(d, d);
     let b = x.dot(f, d);
     let ff = x.dot(f, f);
@@ -202,4 +324,69 @@ pub fn tracked(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Option<SphereHi
     let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
     let ok = certify(t0, 8.0 * U, 0.0) && certify(t1, 8.0 * U, 0.0);
     ok.then_some(SphereHit::Two(t0 as f32, t1 as f32))
+}
+
+/// The double-word stage ([`crate::num::dd`]): `f = o − C` split exactly
+/// into two words by TwoSum, then `a = Σdᵢ²`, `b = Σfᵢdᵢ` and `c = Σfᵢ² −
+/// R²` as sums of exact products, and `Δ = b² − ac` as the sum of the
+/// exact products of their words. Every value is a multiple of `2⁻²⁹⁸`
+/// (products of two f32 values and their sums), every product one of
+/// `2⁻⁵⁹⁶`, so TwoProduct is exact ([`crate::num::dd`]). Where no low word
+/// rounded, `Δ` is exact, and so is its sign and its zero; otherwise its
+/// bound (the low words' and, through [`Acc::add_dd_prod`], those of `a`,
+/// `b`, `c`) decides the sign or nothing. A tangent's root `−b/a`, and two
+/// roots ([`two_roots`]), are then certified from the words' leading
+/// values with `|lo| + err` as their bounds. Every bound is multiplied by
+/// `shrink`. `None` where the class or a root is undecided.
+///
+/// ```
+/// use rayoracle::sphere::{SphereHit, kernel::{double_word, tracked}};
+/// // Grazing R = 3 at (0, 3, 0) from z = 0.1f32 along 0.1f32: Δ = 0, but
+/// // b² and ac have 96 significant bits, so f64 rounds them.
+/// let (o, d) = ([0.0, 3.0, 0.1f32 as f64], [0.0, 0.0, 0.1f32 as f64]);
+/// assert_eq!(tracked(o, d, [0.0; 3], 3.0), None);
+/// assert_eq!(double_word(o, d, [0.0; 3], 3.0, 1.0), Some(SphereHit::Tangent(-1.0)));
+/// // A far tiny sphere, hit through its centre.
+/// let h = double_word([0.0, 0.0, -1e6], [0.0, 0.0, 1.0], [0.0; 3], 1.0, 1.0);
+/// assert_eq!(h, Some(SphereHit::Two(999_999.0, 1_000_001.0)));
+/// ```
+///
+/// [`Acc::add_dd_prod`]: crate::num::dd::Acc::add_dd_prod
+/// [`two_roots`]: crate::num::dd::two_roots
+pub fn double_word(
+    o: [f64; 3],
+    d: [f64; 3],
+    c: [f64; 3],
+    r: f64,
+    shrink: f64,
+) -> Option<SphereHit> {
+    let (mut a, mut b, mut cq) = (Acc::new(), Acc::new(), Acc::new());
+    for i in 0..3 {
+        let (fh, fl) = two_sum(o[i], -c[i]);
+        a.add(d[i] * d[i]);
+        b.add_prod(fh, d[i]);
+        b.add_prod(fl, d[i]);
+        cq.add_prod(fh, fh);
+        cq.add_prod(fh + fh, fl);
+        cq.add_prod(fl, fl);
+    }
+    cq.add(-(r * r));
+    let (a, b, cq) = (a.finish(shrink), b.finish(shrink), cq.finish(shrink));
+    let mut disc = Acc::wide();
+    disc.add_dd_prod(b, b);
+    disc.add_dd_prod(a.scale(-1.0), cq);
+    let disc = disc.finish(shrink);
+    if a.hi == 0.0 || (disc.sign_known() && disc.hi < 0.0) {
+        // a = Σdᵢ² rounds to 0 only where every dᵢ is 0.
+        return Some(SphereHit::None);
+    }
+    if disc.is_zero() {
+        let t = quotient(b.approx(), a.approx(), shrink)?;
+        return Some(SphereHit::Tangent(-t + 0.0));
+    }
+    if !disc.sign_known() {
+        return None;
+    }
+    let (t0, t1) = two_roots(a.approx(), b.approx(), cq.approx(), disc.approx(), shrink)?;
+    Some(SphereHit::Two(t0, t1))
 }

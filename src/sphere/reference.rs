@@ -1,9 +1,11 @@
 //! The scalar reference: the [filter](super::kernel) at `f64`, then the
-//! exact oracle for whatever it leaves undecided.
+//! later stages ([`crate::stage`]) for whatever it leaves undecided, the
+//! exact oracle last.
 
 use super::{Sphere, SphereHit, exact, kernel};
 use crate::Ray;
-use crate::num::certify::{certify, subnormals_work};
+use crate::hit::Intersection;
+use crate::num::certify::{certify, flush_prone, needs_probe, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a sphere: the exact class and both roots over
@@ -43,15 +45,18 @@ pub fn intersect_staged(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
     intersect_shrunk(ray, sphere, 1.0)
 }
 
-/// [`intersect_staged`] with the filter's bounds multiplied by `shrink`:
+/// [`intersect_staged`] with every stage's bounds multiplied by `shrink`:
 /// for the tests that show a bound too small gives wrong answers.
 #[doc(hidden)]
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage) {
-    if !subnormals_work() {
+    // FTZ and DAZ matter only on a subnormal input or result
+    // ([`needs_probe`]): the register is read only there.
+    let inputs = inputs(ray, sphere);
+    if needs_probe(&inputs, &[]) && !subnormals_work() {
         return (exact_stage(ray, sphere), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let f = kernel::filter(
         w(ray.origin),
         w(ray.dir),
@@ -63,6 +68,9 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
         return (SphereHit::None, Stage::Filter);
     }
     if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
+        if needs_probe(&[], &[f.t0, f.t1]) && !subnormals_work() {
+            return (exact_stage(ray, sphere), Stage::Exact);
+        }
         // Disjoint enclosures are in the exact order; overlapping ones
         // round to the same f32.
         let (t0, t1) = if f.t0 <= f.t1 {
@@ -72,29 +80,54 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
         };
         return (SphereHit::Two(t0 as f32, t1 as f32), Stage::Filter);
     }
-    escalate(ray, sphere)
+    escalate_shrunk(ray, sphere, shrink)
 }
 
 /// The stages after the filter: f64 arithmetic that proves itself exact
-/// ([`kernel::tracked`]), then the exact oracle. The tracked stage, too,
-/// assumes subnormals work, so this checks for itself: x4 sends its
-/// undecided lanes here, and all of them when FTZ or DAZ is on.
+/// ([`kernel::tracked`]), f64 arithmetic with a tighter bound
+/// ([`kernel::tight`]), double-word arithmetic
+/// ([`kernel::double_word`]), then the exact oracle. The later stages,
+/// too, assume subnormals work where an input or a result is subnormal
+/// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
+/// its undecided lanes here, and all of them when FTZ or DAZ is on.
 #[cold]
 #[inline(never)]
 pub(crate) fn escalate(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
-    if !subnormals_work() {
+    escalate_shrunk(ray, sphere, 1.0)
+}
+
+/// [`escalate`] with the bounds of its stages multiplied by `shrink`.
+#[cold]
+#[inline(never)]
+fn escalate_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage) {
+    if needs_probe(&inputs(ray, sphere), &[]) && !subnormals_work() {
         return (exact_stage(ray, sphere), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.to_array().map(f64::from);
-    match kernel::tracked(
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let (o, d, c, r) = (
         w(ray.origin),
         w(ray.dir),
         w(sphere.center),
         f64::from(sphere.radius),
-    ) {
-        Some(h) => (h, Stage::Tracked),
+    );
+    // Cheapest and likeliest first: exact data, then far spheres.
+    let staged = (kernel::tracked(o, d, c, r).map(|h| (h, Stage::Tracked)))
+        .or_else(|| kernel::tight(o, d, c, r, shrink).map(|h| (h, Stage::Tight)))
+        .or_else(|| kernel::double_word(o, d, c, r, shrink).map(|h| (h, Stage::DoubleWord)));
+    match staged {
+        Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
+            (exact_stage(ray, sphere), Stage::Exact)
+        }
+        Some(hs) => hs,
         None => (exact_stage(ray, sphere), Stage::Exact),
     }
+}
+
+/// The inputs, for [`needs_probe`].
+#[inline(always)]
+fn inputs(ray: &Ray, sphere: &Sphere) -> [f32; 10] {
+    let (o, d, c) = (ray.origin, ray.dir, sphere.center);
+    [o.x, o.y, o.z, d.x, d.y, d.z, c.x, c.y, c.z, sphere.radius]
 }
 
 /// The last stage: the exact oracle; [`SphereHit::None`] for a non-finite

@@ -1,0 +1,453 @@
+//! Double-word arithmetic on f64: the kernels' stage after the tracked one,
+//! which settles the exact zeros whose f64 arithmetic rounds (tangents,
+//! in-plane rays, α = 0, lines on a surface, roots exactly 0) without big
+//! integers, and certifies what f64 alone cannot (a far tiny sphere, a
+//! nearly parallel plane).
+//!
+//! * [`two_sum`] (Knuth's TwoSum) returns `a + b` and its rounding error,
+//!   exactly, for any finite `a`, `b` whose sum does not overflow.
+//! * [`two_prod`] (Dekker's TwoProduct over Veltkamp's split, no FMA, so
+//!   no libm call on builds without the `fma` feature) returns `ab` and its
+//!   rounding error, exactly, where the split does not overflow (`|a|`,
+//!   `|b| < 2⁹⁹⁵`) and `a` and `b` are integer multiples of `2⁻ⁱ` and
+//!   `2⁻ʲ` with `i + j ≤ 1074`: then every partial product of the
+//!   algorithm is a multiple of `2⁻¹⁰⁷⁴` with at most 53 significant bits,
+//!   so representable, subnormal or not, and the steps Dekker proves exact
+//!   stay exact (*A floating-point technique for extending the available
+//!   precision*, Numer. Math. 18, 1971). An overflow gives ±∞ or NaN.
+//! * [`Acc`] sums such terms: the high parts through TwoSum, their errors
+//!   (and the products' errors) in a low word whose own additions are
+//!   checked with TwoSum. Where none of those rounded, `hi + lo` is the
+//!   exact sum, so its sign and its zero are exact; otherwise the low
+//!   word's recursive sum of `n` terms is within `γₙ₋₁ Σ|eᵢ|` of the exact
+//!   one (Higham §4.2), and [`Acc::finish`] bounds it by `2nu Σ|eᵢ|`.
+//!   [`Acc::wide`] sums the low word's own errors in a third word the same
+//!   way, for the discriminants, whose exact zeros can span more than two
+//!   words; [`Acc::finish`] renormalises the three words exactly into two
+//!   and a remainder, which joins the bound.
+//!
+//! The kernels feed it polynomials in f32 data: the sphere's and plane's
+//! values are multiples of `2⁻²⁹⁸`, the quadric's of `2⁻⁴⁴⁷`, and sums,
+//! TwoSum errors and roundings of such multiples stay multiples (a rounding
+//! keeps a value on a grid coarser than its own, or leaves it alone), so
+//! every product they form meets [`two_prod`]'s conditions.
+//!
+//! ```
+//! use rayoracle::num::dd::Acc;
+//! // 0.1·0.1 − 0.01 in f64 terms: not 0, and the sum knows it exactly.
+//! let mut x = Acc::new();
+//! x.add_prod(0.1, 0.1);
+//! x.add(-0.01);
+//! let v = x.finish(1.0);
+//! assert!(v.err == 0.0 && v.hi != 0.0 && v.sign_known());
+//! // 3·(1/3)·... : a sum that cancels to exactly 0.
+//! let mut z = Acc::new();
+//! z.add_prod(1.0 / 3.0, 3.0);
+//! z.add_prod(-1.0 / 3.0, 3.0);
+//! assert!(z.finish(1.0).is_zero());
+//! ```
+
+use super::certify::{SLACK, U, certify, quotient_bound};
+
+/// Veltkamp's splitter for f64, `2²⁷ + 1`.
+const SPLITTER: f64 = 134_217_729.0;
+
+/// `a + b` and its rounding error, exactly (Knuth's TwoSum).
+///
+/// ```
+/// use rayoracle::num::dd::two_sum;
+/// assert_eq!(two_sum(1.0, 2f64.powi(-60)), (1.0, 2f64.powi(-60)));
+/// ```
+#[inline(always)]
+pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+/// Veltkamp's split of `a` into two halves of at most 26 significant bits,
+/// `hi + lo = a` exactly (for `|a| < 2⁹⁹⁵`).
+///
+/// ```
+/// use rayoracle::num::dd::split;
+/// let a = 1.0 + f64::EPSILON;
+/// let (hi, lo) = split(a);
+/// assert_eq!((hi, lo), (1.0, f64::EPSILON));
+/// ```
+#[inline(always)]
+pub fn split(a: f64) -> (f64, f64) {
+    let c = SPLITTER * a;
+    let hi = c - (c - a);
+    (hi, a - hi)
+}
+
+/// `ab` and its rounding error, exactly under the conditions of the
+/// [module](self) (Dekker's TwoProduct).
+///
+/// ```
+/// use rayoracle::num::dd::two_prod;
+/// let a = 1.0 + f64::EPSILON;
+/// assert_eq!(two_prod(a, a), (1.0 + 2.0 * f64::EPSILON, f64::EPSILON * f64::EPSILON));
+/// let (p, e) = two_prod(1e300, 1e300);
+/// assert!(p.is_infinite() && !e.is_finite());
+/// ```
+#[inline(always)]
+pub fn two_prod(a: f64, b: f64) -> (f64, f64) {
+    let p = a * b;
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
+}
+
+/// A double-word value `hi + lo` (`|lo| ≤ u|hi|`) within `err` of the
+/// exact one; `err = 0` where it is exact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dd {
+    /// The leading word, the value rounded to f64.
+    pub hi: f64,
+    /// The trailing word.
+    pub lo: f64,
+    /// A bound on `|exact − (hi + lo)|`.
+    pub err: f64,
+}
+
+impl Dd {
+    /// Whether the exact value's sign is `hi`'s: `|hi + lo| ≥ (1 − u)|hi|
+    /// > err`, which `|hi| > 2 err` ensures.
+    #[inline(always)]
+    pub fn sign_known(&self) -> bool {
+        self.hi.abs() > 2.0 * self.err
+    }
+    /// Whether the exact value is 0.
+    #[inline(always)]
+    pub fn is_zero(&self) -> bool {
+        self.err == 0.0 && self.hi == 0.0
+    }
+    /// `hi` with a bound on its distance from the exact value.
+    #[inline(always)]
+    pub fn approx(&self) -> Approx {
+        Approx {
+            v: self.hi,
+            e: self.lo.abs() + self.err,
+        }
+    }
+    /// The value times `k`, a power of two (or its negation) that keeps
+    /// every word in the normal range: exact.
+    #[inline(always)]
+    pub fn scale(self, k: f64) -> Dd {
+        Dd {
+            hi: self.hi * k,
+            lo: self.lo * k,
+            err: self.err * k.abs(),
+        }
+    }
+}
+
+/// An f64 value `v` within `e` of an exact one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Approx {
+    /// The value.
+    pub v: f64,
+    /// A bound on its error.
+    pub e: f64,
+}
+
+/// A sum of exact terms kept in two words: see the [module](self).
+#[derive(Clone, Copy, Debug)]
+pub struct Acc {
+    hi: f64,
+    lo: f64,
+    lo2: f64,
+    wide: bool,
+    mag: f64,
+    n: f64,
+    exact: bool,
+    extra: f64,
+}
+
+impl Default for Acc {
+    fn default() -> Self {
+        Acc::new()
+    }
+}
+
+impl Acc {
+    /// The empty sum: exactly 0.
+    pub fn new() -> Acc {
+        Acc {
+            hi: 0.0,
+            lo: 0.0,
+            lo2: 0.0,
+            wide: false,
+            mag: 0.0,
+            n: 0.0,
+            exact: true,
+            extra: 0.0,
+        }
+    }
+    /// The empty sum with a third word: the low word's own rounding errors
+    /// are summed in it (checked with TwoSum), so a sum whose exact value
+    /// spans up to about 159 bits stays exact. For the discriminants, whose
+    /// exact zeros need it.
+    pub fn wide() -> Acc {
+        Acc {
+            wide: true,
+            ..Acc::new()
+        }
+    }
+    /// Adds `e` to the low word (in [`Acc::wide`], its rounding error to
+    /// the third), noting whether it rounded.
+    #[inline(always)]
+    fn low(&mut self, e: f64) {
+        let (s, r) = two_sum(self.lo, e);
+        if self.wide {
+            let (s2, r2) = two_sum(self.lo2, r);
+            self.exact &= r2 == 0.0;
+            self.lo2 = s2;
+            self.mag += r.abs();
+        } else {
+            self.exact &= r == 0.0;
+            self.mag += e.abs();
+        }
+        self.lo = s;
+        self.n += 1.0;
+    }
+    /// Adds `x` exactly.
+    #[inline(always)]
+    pub fn add(&mut self, x: f64) {
+        let (s, e) = two_sum(self.hi, x);
+        self.hi = s;
+        self.low(e);
+    }
+    /// Adds `p + e`, a product's two words.
+    #[inline(always)]
+    pub fn add_pair(&mut self, (p, e): (f64, f64)) {
+        self.add(p);
+        self.low(e);
+    }
+    /// Adds `ab` exactly (under [`two_prod`]'s conditions).
+    #[inline(always)]
+    pub fn add_prod(&mut self, a: f64, b: f64) {
+        self.add_pair(two_prod(a, b));
+    }
+    /// Adds the product of two double-word values, its four partial
+    /// products exactly, and their errors to the bound: the exact product
+    /// `xy` differs from `x̃ỹ` (`x̃ = hi + lo`) by at most `|x̃|E_y +
+    /// E_x(|ỹ| + E_y)`, with `|x̃| ≤ (1 + u)|x.hi|`; the bound counts twice
+    /// that, for the `1 + u` and its own roundings.
+    #[inline(always)]
+    pub fn add_dd_prod(&mut self, x: Dd, y: Dd) {
+        self.add_prod(x.hi, y.hi);
+        self.add_prod(x.hi, y.lo);
+        self.add_prod(x.lo, y.hi);
+        self.add_prod(x.lo, y.lo);
+        self.extra += 2.0 * (x.hi.abs() * y.err + x.err * (y.hi.abs() + y.err));
+    }
+    /// The sum, with its bound multiplied by `shrink` (1 in the kernels;
+    /// the tests pass less to show that a bound too small is caught).
+    /// The words are renormalised by TwoSum into `hi + lo + d` exactly, with
+    /// `|lo| ≤ u|hi|` and `|d|` added to the bound (0 where two words hold
+    /// the sum). The last word's recursive sum of `n` terms (the low word,
+    /// or in [`Acc::wide`] the third) is within `γₙ₋₁ Σ|eᵢ|` of its exact
+    /// one;
+    /// the bound is `2nu Σ|eᵢ|` (twice that, which also covers the
+    /// roundings of `Σ|eᵢ|` itself), 0 where no addition rounded, plus the
+    /// errors of the inputs of [`Acc::add_dd_prod`].
+    #[inline(always)]
+    pub fn finish(self, shrink: f64) -> Dd {
+        // hi + lo + lo2 = h + c + b = h + l + d = hi' + lo' + d, exactly.
+        let (a, b) = two_sum(self.lo, self.lo2);
+        let (h, c) = two_sum(self.hi, a);
+        let (l, d) = two_sum(c, b);
+        let (hi, lo) = two_sum(h, l);
+        let chain = if self.exact {
+            0.0
+        } else {
+            2.0 * self.n * U * self.mag
+        };
+        Dd {
+            hi,
+            lo,
+            err: (d.abs() + chain + self.extra) * SLACK * shrink,
+        }
+    }
+}
+
+/// The two roots of `at² + 2bt + c` (`Δ = b² − ac` certified positive,
+/// `a` certified nonzero), from f64 approximations with error bounds: `s =
+/// √Δ̂`, `q = −(b̂ + sign(b̂)s)`, roots `q/a` and `c/q`, each certified,
+/// sorted; `None` where either root is undecided. Every bound is multiplied
+/// by `shrink`.
+///
+/// * `|√Δ − √Δ̂| ≤ E_Δ/√Δ̂`, and `ŝ` rounds once: `E_s = E_Δ/ŝ + 2uŝ`.
+/// * `|q̂| = fl(|b̂| + ŝ)` rounds once, with no cancellation: `E_q = E_b +
+///   E_s + 2u|q̂|`.
+/// * Each root is one division of values with bounds,
+///   [`quotient_bound`], with `4u` for the division's own rounding (the
+///   proof needs `u`, and `u` more for the rounding of the reciprocal the
+///   bound is computed from).
+///
+/// ```
+/// use rayoracle::num::dd::{Approx, two_roots};
+/// let x = |v: f64| Approx { v, e: 1e-30 };
+/// // t² − 10t + 24 = (t − 4)(t − 6): a = 1, b = −5, c = 24, Δ = 1.
+/// assert_eq!(two_roots(x(1.0), x(-5.0), x(24.0), x(1.0), 1.0), Some((4.0, 6.0)));
+/// ```
+#[inline(always)]
+pub fn two_roots(a: Approx, b: Approx, c: Approx, disc: Approx, shrink: f64) -> Option<(f32, f32)> {
+    let u = U * shrink;
+    let s = disc.v.sqrt();
+    let es = disc.e * shrink / s * SLACK + 2.0 * u * s;
+    let q = -(b.v + s.copysign(b.v));
+    let eq = (b.e * shrink + es + 2.0 * u * q.abs()) * SLACK;
+    let t0 = q / a.v;
+    let (r0, a0) = quotient_bound(a.e * shrink, eq, 1.0 / a.v, 4.0 * u);
+    let t1 = c.v / q + 0.0;
+    let (r1, a1) = quotient_bound(eq, c.e * shrink, 1.0 / q, 4.0 * u);
+    if !(disc.v > 0.0 && certify(t0, r0, a0) && certify(t1, r1, a1)) {
+        return None;
+    }
+    // Disjoint enclosures are in the exact order; overlapping ones round
+    // to the same f32.
+    let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
+    Some((t0 as f32, t1 as f32))
+}
+
+/// The root `x/y` from approximations with bounds, rounded once and
+/// certified ([`quotient_bound`] with `4u` for the roundings of the
+/// quotient and of the reciprocal its bound uses), `+0` for an exact 0;
+/// every bound multiplied by `shrink`.
+///
+/// ```
+/// use rayoracle::num::dd::{Approx, quotient};
+/// let x = Approx { v: 1.0, e: 0.0 };
+/// let y = Approx { v: 3.0, e: 1e-300 };
+/// assert_eq!(quotient(x, y, 1.0), Some(1.0 / 3.0));
+/// assert_eq!(quotient(Approx { v: 0.0, e: 0.0 }, Approx { v: -3.0, e: 0.0 }, 1.0), Some(0.0));
+/// ```
+#[inline(always)]
+pub fn quotient(x: Approx, y: Approx, shrink: f64) -> Option<f32> {
+    let t = x.v / y.v + 0.0;
+    let (r, a) = quotient_bound(y.e * shrink, x.e * shrink, 1.0 / y.v, 4.0 * U * shrink);
+    certify(t, r, a).then_some(t as f32)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// An f32 value of the grid below as an integer count of `2⁻⁴⁰`.
+    fn scaled(x: f32) -> i128 {
+        (x as f64 * 2f64.powi(40)) as i128
+    }
+
+    /// f32 values below `2²⁰` in magnitude on a grid of `2⁻⁴⁰`: sums of
+    /// eight products of them fit `i128` counts of `2⁻⁸⁰`.
+    fn grid() -> impl Strategy<Value = f32> {
+        (-(1i64 << 40)..(1i64 << 40), -40i32..0)
+            .prop_map(|(m, e)| ((m >> 20) as f64 * 2f64.powi(e)) as f32)
+    }
+
+    proptest! {
+        /// TwoSum and TwoProduct are exact: checked in i128 on a grid.
+        #[test]
+        fn eft_exact(a in grid(), b in grid()) {
+            let (x, y) = (a as f64, b as f64);
+            let (s, e) = two_sum(x, y);
+            let one = |v: f64| (v * 2f64.powi(40)) as i128;
+            prop_assert_eq!(one(s) + one(e), scaled(a) + scaled(b));
+            let (p, q) = two_prod(x, y);
+            let two = |v: f64| (v * 2f64.powi(80)) as i128;
+            prop_assert_eq!(two(p) + two(q), scaled(a) * scaled(b));
+        }
+
+        /// The sign an [`Acc`] certifies is the exact sign of `Σ aᵢbᵢ`, and
+        /// an exact one is exact.
+        #[test]
+        fn acc_sign(v in prop::collection::vec((grid(), grid()), 1..8)) {
+            let mut acc = Acc::new();
+            let mut exact = 0i128;
+            for &(a, b) in &v {
+                acc.add_prod(a as f64, b as f64);
+                exact += scaled(a) * scaled(b);
+            }
+            let d = acc.finish(1.0);
+            if d.is_zero() {
+                prop_assert_eq!(exact, 0);
+            }
+            if d.sign_known() {
+                prop_assert_eq!(d.hi.signum() as i128, exact.signum());
+            }
+            if d.err == 0.0 {
+                let two = |x: f64| (x * 2f64.powi(80)) as i128;
+                prop_assert_eq!(two(d.hi) + two(d.lo), exact);
+            }
+        }
+    }
+
+    /// A cancelling sum whose low word rounds: not exact, and its bound
+    /// covers the truth.
+    #[test]
+    fn inexact_low_word_is_bounded() {
+        let mut acc = Acc::new();
+        acc.add(1.0);
+        acc.add(2f64.powi(-80));
+        acc.add(2f64.powi(-140));
+        acc.add(-1.0);
+        let d = acc.finish(1.0);
+        assert!(d.err > 0.0 && !d.is_zero());
+        // The exact sum is 2⁻⁸⁰ + 2⁻¹⁴⁰; the words miss the second part.
+        let miss = (2f64.powi(-140) - (d.hi - 2f64.powi(-80)) - d.lo).abs();
+        assert!(miss > 0.0 && miss <= d.err);
+        assert!(d.sign_known() && d.hi > 0.0);
+        // Shrunk to nothing, the bound no longer covers.
+        assert!(miss > acc.finish(0.0).err);
+    }
+
+    /// A sum spanning 120 bits: the narrow sum's low word rounds (a bound,
+    /// no certain zero); the wide one's third word keeps it exact.
+    #[test]
+    fn wide_sums_stay_exact() {
+        let terms = [1.0, 2f64.powi(-60), 2f64.powi(-120)];
+        let run = |mut acc: Acc| {
+            terms.iter().for_each(|&x| acc.add(x));
+            terms.iter().for_each(|&x| acc.add(-x));
+            acc.finish(1.0)
+        };
+        let (narrow, wide) = (run(Acc::new()), run(Acc::wide()));
+        assert!(!narrow.is_zero() && narrow.err > 0.0);
+        assert!(wide.is_zero(), "{wide:?}");
+        // Without the cancellation the wide sum is exact and nonzero.
+        let mut acc = Acc::wide();
+        terms.iter().for_each(|&x| acc.add(x));
+        let d = acc.finish(1.0);
+        assert_eq!((d.hi, d.lo), (1.0, 2f64.powi(-60)));
+        assert!(d.err > 0.0 && d.err < 2f64.powi(-119) && d.sign_known());
+    }
+
+    /// A product of inexact values carries their errors.
+    #[test]
+    fn dd_product_error() {
+        let x = Dd {
+            hi: 3.0,
+            lo: 0.0,
+            err: 1e-20,
+        };
+        let mut acc = Acc::new();
+        acc.add_dd_prod(x, x);
+        let d = acc.finish(1.0);
+        assert_eq!(d.hi, 9.0);
+        assert!(d.err >= 6e-20 && d.err < 1e-18);
+        assert!(x.scale(-4.0).hi == -12.0 && x.scale(-4.0).err == 4e-20);
+    }
+
+    /// Overflow certifies nothing.
+    #[test]
+    fn overflow_is_not_exact() {
+        let mut acc = Acc::new();
+        acc.add_prod(1e300, 1e300);
+        let d = acc.finish(1.0);
+        assert!(!d.is_zero() && !d.sign_known());
+    }
+}
