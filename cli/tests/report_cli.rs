@@ -76,7 +76,7 @@ fn quick_report_writes_the_table_the_json_rows_and_a_plot_per_kernel() {
             assert!((sum - 1.0).abs() < 1e-9, "{row}");
             assert_eq!(
                 stages.keys().collect::<Vec<_>>(),
-                ["exact", "filter", "tracked"],
+                ["dd", "exact", "filter", "tight", "tracked"],
                 "{row}"
             );
         } else {
