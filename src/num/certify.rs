@@ -78,6 +78,24 @@ pub fn quotient_bound<L: Real>(ey: L, ex: L, iy: L, round: f64) -> (L, L) {
     (r, ex * iya * g)
 }
 
+/// `x / y` for a quotient that is certified next: `+0` where `x` is 0,
+/// since an exact zero rounds to `+0` whatever the signs, and IEEE's own
+/// sign elsewhere, which a quotient keeps even where it underflows to 0
+/// (the tiny negative quotient's correctly rounded `f32` is `−0`, which
+/// `x / y + 0.0` would turn into `+0`).
+///
+/// ```
+/// use rayoracle::num::certify::div;
+/// assert_eq!(div(0.0, -3.0).to_bits(), 0.0f64.to_bits());
+/// assert_eq!(div(-0.0, 3.0).to_bits(), 0.0f64.to_bits());
+/// assert_eq!(div(-1e-300, 1e300).to_bits(), (-0.0f64).to_bits());
+/// assert_eq!(div(1.0, 4.0), 0.25);
+/// ```
+#[inline(always)]
+pub fn div(x: f64, y: f64) -> f64 {
+    if x == 0.0 { 0.0 } else { x / y }
+}
+
 /// Whether the floating-point environment keeps subnormals: false when
 /// flush-to-zero (FTZ) or denormals-are-zero (DAZ) is on, as some renderers
 /// and audio engines set it. The filters' bounds assume IEEE-754 gradual

@@ -47,7 +47,7 @@
 //! assert!(z.finish(1.0).is_zero());
 //! ```
 
-use super::certify::{SLACK, U, certify, quotient_bound};
+use super::certify::{SLACK, U, certify, div, quotient_bound};
 
 /// Veltkamp's splitter for f64, `2²⁷ + 1`.
 const SPLITTER: f64 = 134_217_729.0;
@@ -150,6 +150,20 @@ pub struct Approx {
     pub v: f64,
     /// A bound on its error.
     pub e: f64,
+}
+
+/// The negated value, with the same bound.
+///
+/// ```
+/// use rayoracle::num::dd::Approx;
+/// assert_eq!(-Approx { v: 2.0, e: 1e-9 }, Approx { v: -2.0, e: 1e-9 });
+/// ```
+impl core::ops::Neg for Approx {
+    type Output = Approx;
+    #[inline(always)]
+    fn neg(self) -> Approx {
+        Approx { v: -self.v, ..self }
+    }
 }
 
 /// A sum of exact terms kept in two words: see the [module](self).
@@ -302,7 +316,7 @@ pub fn two_roots(a: Approx, b: Approx, c: Approx, disc: Approx, shrink: f64) -> 
     let eq = (b.e * shrink + es + 2.0 * u * q.abs()) * SLACK;
     let t0 = q / a.v;
     let (r0, a0) = quotient_bound(a.e * shrink, eq, 1.0 / a.v, 4.0 * u);
-    let t1 = c.v / q + 0.0;
+    let t1 = div(c.v, q);
     let (r1, a1) = quotient_bound(eq, c.e * shrink, 1.0 / q, 4.0 * u);
     if !(disc.v > 0.0 && certify(t0, r0, a0) && certify(t1, r1, a1)) {
         return None;
@@ -327,7 +341,7 @@ pub fn two_roots(a: Approx, b: Approx, c: Approx, disc: Approx, shrink: f64) -> 
 /// ```
 #[inline(always)]
 pub fn quotient(x: Approx, y: Approx, shrink: f64) -> Option<f32> {
-    let t = x.v / y.v + 0.0;
+    let t = div(x.v, y.v);
     let (r, a) = quotient_bound(y.e * shrink, x.e * shrink, 1.0 / y.v, 4.0 * U * shrink);
     certify(t, r, a).then_some(t as f32)
 }

@@ -29,7 +29,7 @@
 //! term by term, goes to the next stage.
 
 use super::PlaneHit;
-use crate::num::certify::{U, certify, quotient_bound};
+use crate::num::certify::{U, certify, div, quotient_bound};
 use crate::num::dd::{Acc, quotient, two_sum};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
@@ -121,7 +121,7 @@ pub fn tracked(o: [f64; 3], d: [f64; 3], a: [f64; 3], n: [f64; 3]) -> Option<Pla
             PlaneHit::Parallel
         });
     }
-    let t = num / den + 0.0;
+    let t = div(num, den);
     certify(t, 2.0 * U, 0.0).then_some(PlaneHit::Hit(t as f32))
 }
 

@@ -57,7 +57,7 @@
 //! subnormals for any finite input. A non-finite input certifies nothing.
 
 use super::QuadricHit;
-use crate::num::certify::{SLACK, U, certify, quotient_bound};
+use crate::num::certify::{SLACK, U, certify, div, quotient_bound};
 use crate::num::dd::{Acc, quotient, two_prod, two_roots};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
@@ -282,17 +282,17 @@ pub fn tracked(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> Option<QuadricHit> {
         return match (beta == 0.0, gamma == 0.0) {
             (true, true) => Some(QuadricHit::All),
             (true, false) => Some(QuadricHit::None),
-            _ => one(-gamma / beta + 0.0),
+            _ => one(div(-gamma, beta)),
         };
     }
     if disc < 0.0 {
         return Some(QuadricHit::None);
     }
     if disc == 0.0 {
-        return one(-beta / (2.0 * alpha) + 0.0);
+        return one(div(-beta, 2.0 * alpha));
     }
     let q = -0.5 * (beta + disc.sqrt().copysign(beta));
-    let (t0, t1) = (q / alpha, gamma / q + 0.0);
+    let (t0, t1) = (q / alpha, div(gamma, q));
     let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
     let ok = certify(t0, 8.0 * U, 0.0) && certify(t1, 8.0 * U, 0.0);
     ok.then_some(QuadricHit::Two(t0 as f32, t1 as f32))
@@ -365,8 +365,8 @@ pub fn double_word(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Opti
                 gamma.sign_known().then_some(QuadricHit::None)
             }
         } else if beta.sign_known() {
-            let t = quotient(gamma.approx(), beta.approx(), shrink)?;
-            Some(QuadricHit::One(-t + 0.0))
+            let t = quotient(-gamma.approx(), beta.approx(), shrink)?;
+            Some(QuadricHit::One(t))
         } else {
             None
         };
@@ -380,8 +380,8 @@ pub fn double_word(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Opti
     disc.add_dd_prod(alpha.scale(-1.0), gamma);
     let disc = disc.finish(shrink);
     if disc.is_zero() {
-        let t = quotient(b.approx(), alpha.approx(), shrink)?;
-        return Some(QuadricHit::One(-t + 0.0));
+        let t = quotient(-b.approx(), alpha.approx(), shrink)?;
+        return Some(QuadricHit::One(t));
     }
     if !disc.sign_known() {
         return None;

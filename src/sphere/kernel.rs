@@ -72,7 +72,7 @@
 //! NaN; neither certifies anything.
 
 use super::SphereHit;
-use crate::num::certify::{SLACK, U, certify, quotient_bound};
+use crate::num::certify::{SLACK, U, certify, div, quotient_bound};
 use crate::num::dd::{Acc, Approx, quotient, two_roots, two_sum};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
@@ -316,11 +316,11 @@ pub fn tracked(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Option<SphereHi
         return Some(SphereHit::None);
     }
     if disc == 0.0 {
-        let t = -b / a + 0.0;
+        let t = div(-b, a);
         return certify(t, 2.0 * U, 0.0).then_some(SphereHit::Tangent(t as f32));
     }
     let q = -(b + disc.sqrt().copysign(b));
-    let (t0, t1) = (q / a, cq / q + 0.0);
+    let (t0, t1) = (q / a, div(cq, q));
     let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
     let ok = certify(t0, 8.0 * U, 0.0) && certify(t1, 8.0 * U, 0.0);
     ok.then_some(SphereHit::Two(t0 as f32, t1 as f32))
@@ -381,8 +381,8 @@ pub fn double_word(
         return Some(SphereHit::None);
     }
     if disc.is_zero() {
-        let t = quotient(b.approx(), a.approx(), shrink)?;
-        return Some(SphereHit::Tangent(-t + 0.0));
+        let t = quotient(-b.approx(), a.approx(), shrink)?;
+        return Some(SphereHit::Tangent(t));
     }
     if !disc.sign_known() {
         return None;
