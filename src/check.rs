@@ -644,7 +644,7 @@ fn sphere_as_quadric_hit(h: SphereHit) -> QuadricHit {
     }
 }
 
-/// The sphere and the same sphere written as a quadric (seed 1.4b) agree:
+/// The sphere and the same sphere written as a quadric agree:
 ///
 /// * when [`Quadric::from_sphere`] is exact (e.g. small integer centre and
 ///   radius), the quadric's exact `(α, β, γ)` is the sphere's exact

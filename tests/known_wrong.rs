@@ -4,7 +4,7 @@
 //! every one of them, and each test says which family catches what.
 //!
 //! Each bug is modelled on top of a correct kernel, so that the bug is the
-//! only thing wrong: the formula slips of the seed are evaluated in `f64`
+//! only thing wrong: the formula slips of common hand derivations are evaluated in `f64`
 //! (stably, rounded once), the classic bugs wrap `sphere::double`,
 //! `plane::double`, the four-lane `sphere::x4` or the reference camera. The
 //! correct counterparts run through the same gate with the same declaration
@@ -74,7 +74,7 @@ fn assert_passes(kernel: &str, report: &Report, min_cases: usize) {
 }
 
 // ---------------------------------------------------------------------------
-// The sphere in f64: the helper the seed's slips are built on.
+// The sphere in f64: the helper the derivation slips are built on.
 
 /// The sphere's inputs in `f64`: `f = o − C`, `d`, `R`, `a = d·d`,
 /// `b = f·d` (half the linear coefficient) and `|a f − b d|²`, which is
@@ -119,7 +119,7 @@ fn solve(a: f64, b: f64, c: f64, disc: f64, sqrt: impl Fn(f64) -> f64) -> Sphere
 }
 
 /// The correct sphere through [`solve`]: `c = f·f − R²`,
-/// `disc = (aR)² − |af − bd|²`. A control: the helper the seed's slips are
+/// `disc = (aR)² − |af − bd|²`. A control: the helper the derivation slips are
 /// built on is not itself what the gate catches.
 fn helper_sphere(ray: &Ray, s: &Sphere) -> Answer {
     let t = terms(ray, s);
@@ -127,7 +127,7 @@ fn helper_sphere(ray: &Ray, s: &Sphere) -> Answer {
     Answer::roots(solve(t.a, t.b, t.ff - t.r2, disc, f64::sqrt))
 }
 
-/// Seed Ex. 1.2b as written: `t = (−d·f ± √M)/d²` with
+/// The sphere's discriminant without `d·d` on `R²`: `t = (−d·f ± √M)/d²` with
 /// `M = (d·f)² − d²(f·f) + R²`, where `R²` should have been multiplied by
 /// `d²` too (`M = (d·f)² − d²(f·f − R²)`). Evaluated stably in `f64`
 /// (`M = R² − |af − bd|²/a`, product of the roots `(a(f·f) − R²)/a²`), so
@@ -135,13 +135,13 @@ fn helper_sphere(ray: &Ray, s: &Sphere) -> Answer {
 /// directions can catch it.
 fn seed_sphere_r2_unscaled(ray: &Ray, s: &Sphere) -> Answer {
     let t = terms(ray, s);
-    // a·M and c with a·c = a(f·f) − R²: the seed's slip in the normalised form.
+    // a·M and c with a·c = a(f·f) − R²: the slip in the normalised form.
     let disc = t.a * t.r2 - t.perp2;
     Answer::roots(solve(t.a, t.b, t.ff - t.r2 / t.a, disc, f64::sqrt))
 }
 
-/// Seed Ex. 1.4b as written: `t = ((o − C)·d ± √…)/d²`, the sign of the
-/// linear term flipped (the seed's other slip there, `− R²` under the root,
+/// The sphere as a quadric, solved by hand: `t = ((o − C)·d ± √…)/d²`, the sign of the
+/// linear term flipped (the other common slip there, `− R²` under the root,
 /// is left out so this one is seen alone). The roots come out mirrored,
 /// `−t₁` and `−t₀`: the renderer hits spheres behind it and misses those in
 /// front.
@@ -154,7 +154,7 @@ fn seed_sphere_sign_flipped(ray: &Ray, s: &Sphere) -> Answer {
     Answer::nearest(mirrored, 0.0)
 }
 
-/// Seed Ex. 1.2b's case analysis: a hit only when both roots are positive
+/// A case analysis by the roots' signs: a hit only when both roots are positive
 /// ("`M > 0 ∧ t₁ > 0 ∧ t₂ > 0`"), so an origin inside the sphere (one root
 /// behind, one ahead) sees nothing.
 fn seed_sphere_ignores_inside(ray: &Ray, s: &Sphere) -> Answer {
@@ -251,7 +251,7 @@ const X4_GARBAGE_TAIL: Packet = Packet {
 // Plane and quadric.
 
 /// A plane kernel without the in-plane case: `d·n = 0` is always
-/// "parallel, no hit", even when the ray lies in the plane (seed Ex. 1.2a's
+/// "parallel, no hit", even when the ray lies in the plane (the usual derivation's
 /// first case dropped). Whole-line semantics, so the gate expects every `t`.
 fn plane_no_in_plane(ray: &Ray, p: &Plane) -> Answer {
     match plane::double::intersect(ray, p) {
@@ -260,7 +260,7 @@ fn plane_no_in_plane(ray: &Ray, p: &Plane) -> Answer {
     }
 }
 
-/// Seed Ex. 1.4a's root formula `t = −β/2α ± √(β²/4α² − γ/α)`, applied even
+/// The textbook quadric root formula `t = −β/2α ± √(β²/4α² − γ/α)`, applied even
 /// when `α = 0` (a ray parallel to a cylinder's axis, along a paraboloid's),
 /// where it divides by zero and gives NaN or ∞ instead of the linear root
 /// `−γ/β`. α, β and γ are exact (rayoracle's exact expansion) rounded to
@@ -369,13 +369,13 @@ fn controls_pass() {
 }
 
 // ---------------------------------------------------------------------------
-// The seed's literal formulas.
+// Hand derivations, literally.
 
 #[test]
 fn seed_sphere_r2_unscaled_is_caught_by_non_unit_directions() {
     let report = gate(Semantics::WholeLine).sphere(&seed_sphere_r2_unscaled);
     assert_caught(
-        "seed 1.2b, R² not times d·d",
+        "sphere: R² not times d·d",
         &report,
         &["sphere/dir-scale", "sphere/dir-tiny", "sphere/dir-huge"],
     );
@@ -393,7 +393,7 @@ fn seed_sphere_r2_unscaled_is_caught_by_non_unit_directions() {
 fn seed_sphere_sign_flipped_is_caught() {
     let report = gate(Semantics::NearestPositive).sphere(&seed_sphere_sign_flipped);
     assert_caught(
-        "seed 1.4b, sign of (o−C)·d flipped",
+        "sphere as quadric: sign of (o−C)·d flipped",
         &report,
         &["sphere/two", "sphere/sphere-behind", "sphere/random/aimed"],
     );
@@ -404,7 +404,7 @@ fn seed_quadric_formula_is_caught_near_alpha_zero() {
     let report = gate(Semantics::WholeLine).quadric(&seed_quadric_no_alpha_guard);
     // −β/2α + √… cancels for a tiny α, even in f64.
     assert_caught(
-        "seed 1.4a formula, α ≈ 0",
+        "quadric formula, α ≈ 0",
         &report,
         &[
             "quadric/alpha-near-zero-paraboloid",
@@ -420,7 +420,7 @@ fn seed_quadric_formula_is_caught_near_alpha_zero() {
 fn seed_quadric_no_alpha_guard_is_caught_by_alpha_zero() {
     let report = gate(Semantics::WholeLine).quadric(&seed_quadric_no_alpha_guard);
     assert_caught(
-        "seed 1.4a, no α = 0 guard",
+        "quadric formula, no α = 0 guard",
         &report,
         &[
             "quadric/alpha-zero-cylinder",
@@ -451,7 +451,7 @@ fn nan_roots_fail_on_every_alpha_zero_case() {
 fn seed_sphere_ignores_inside_is_caught_by_origin_inside() {
     let report = gate(Semantics::NearestPositive).sphere(&seed_sphere_ignores_inside);
     assert_caught(
-        "seed 1.2b case analysis, hit iff both roots > 0",
+        "sphere case analysis, hit iff both roots > 0",
         &report,
         &["sphere/origin-inside", "sphere/random/inside"],
     );

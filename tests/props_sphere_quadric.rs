@@ -1,4 +1,4 @@
-//! The sphere as a quadric (seed 1.4b): for spheres with small integer
+//! The sphere as a quadric: for spheres with small integer
 //! centre and radius `Quadric::from_sphere` is exact, the two exact oracles
 //! solve the same polynomial, and the two references must agree wherever
 //! neither is inside its band.

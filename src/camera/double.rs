@@ -1,5 +1,4 @@
-//! The camera in `f64`: the reference's construction (seed Ex. 1.1,
-//! corrected) with the basis and every per-pixel direction in plain `f64`,
+//! The camera in `f64`: the reference's construction (corrected) with the basis and every per-pixel direction in plain `f64`,
 //! each direction component rounded once to `f32`.
 //!
 //! **A variant for `rayoracle report`, not an oracle and not for

@@ -1,4 +1,4 @@
-//! The perspective camera (seed Ex. 1.1).
+//! The perspective camera.
 //!
 //! # The derivation, as corrected
 //!
@@ -16,11 +16,11 @@
 //! `up = +y`, `x` points right (+x) and `y` points down (−y), so `Y = 0`
 //! gives the largest `+y` component.
 //!
-//! Departures from the seed, and why:
+//! Departures from the usual hand derivation, and why:
 //!
-//! * The seed defines `y` through `x` and `x` through `y`'s direction in the
-//!   wrong order; `x` comes first (from `dir × up`), then `y` from `dir × x`.
-//! * The seed's `f = focus · dir/|dir|` is just `dir`; the code uses `dir`
+//! * It is often written with `y` defined through `x` and `x` through
+//!   `y`'s direction, which is circular; `x` comes first (from `dir × up`), then `y` from `dir × x`.
+//! * Its `f = focus · dir/|dir|` is just `dir`; the code uses `dir`
 //!   and avoids a rounding.
 //! * The pixel offset `2((X + ½)/resX − ½)` is the exact rational
 //!   `u = (2X + 1 − resX)/resX` (`v` likewise), never rounded by the

@@ -56,7 +56,7 @@ fn check_vec(v: Vec3, zero: CameraError, nonfinite: CameraError) -> Result<(), C
 }
 
 /// `u = (2X + 1 − resX)/resX` and `v` likewise, rounded once to `f32`: the
-/// seed's `2((X + ½)/res − ½)` as numbers, for the scale `Sᵢ`
+/// usual `2((X + ½)/res − ½)` as numbers, for the scale `Sᵢ`
 /// ([`super::component_scale`]); the kernels use the exact values.
 ///
 /// ```

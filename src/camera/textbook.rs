@@ -1,8 +1,8 @@
-//! The textbook camera: seed Ex. 1.1 in plain `f32`, in the corrected
-//! order.
+//! The textbook camera: the hand derivation in plain `f32`, in the
+//! corrected order.
 //!
 //! **A baseline for `rayoracle report`, not an oracle and not for
-//! production.** It is what a typical user writes from the seed once `x`
+//! production.** It is what a typical user writes from the derivation once `x`
 //! and `y` are put in the right order (`x` from `dir × up`, then `y` from
 //! `dir × x`; see the [module docs](super)), with no numerical care:
 //!
@@ -15,7 +15,7 @@
 //! ```
 //!
 //! Every step is one plain `f32` operation, evaluated left to right; the
-//! normalisations are a square root and a division. It keeps the seed's
+//! normalisations are a square root and a division. It keeps the derivation's
 //! `f = focus · dir/|dir|`, which is `dir` with extra roundings, and its
 //! pixel offset, which rounds the quotient `(X + 0.5)/resX` and then the
 //! difference (`X + 0.5` and the doubling are exact below `2²³`). `tan` is
@@ -57,7 +57,7 @@ use glam::Vec3;
 pub struct Camera {
     /// The inputs.
     pub params: CameraParams,
-    /// `f = focus · dir/|dir|`, the seed's (rounded) way of writing `dir`.
+    /// `f = focus · dir/|dir|`, the derivation's (rounded) way of writing `dir`.
     pub f: Vec3,
     /// The horizontal half-extent vector.
     pub x: Vec3,

@@ -506,7 +506,7 @@ impl Gate {
     /// ```
     /// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics};
     /// use rayoracle::{Ray, quadric::{Quadric, textbook}};
-    /// // The seed's 1.4a formula, α = 0 guarded but not α ≈ 0: caught.
+    /// // The textbook quadric formula, α = 0 guarded but not α ≈ 0: caught.
     /// let k = |r: &Ray, q: &Quadric| Answer::roots(textbook::intersect(r, q));
     /// let report = Gate::new(Declared::f32(Semantics::WholeLine)).budget(32).quadric(&k);
     /// assert!(report.failing_families().contains(&"quadric/alpha-near-zero-paraboloid"));

@@ -6,7 +6,7 @@
 //! shows, and the failure is checked to name the check and the lane. The
 //! wrong kernels are `fn` items, as the targets take them: a lane swap, a
 //! shifted root (with an x4 shifted the same way, so that the bit-identity
-//! check passes and the exact oracle has to catch it), the seed's textbook
+//! check passes and the exact oracle has to catch it), the textbook
 //! sphere, a camera ray wrong at one pixel, and broken `eval` outputs.
 
 use super::{Failure, camera, camera_with, encode_f32, eval_line, eval_line_with};

@@ -1,4 +1,4 @@
-//! The plane in `f64`: seed Ex. 1.2a, `t = ((a − o)·n)/(d·n)`, with every
+//! The plane in `f64`: `t = ((a − o)·n)/(d·n)`, with every
 //! operation in plain `f64` and the root rounded once to `f32`.
 //!
 //! **A baseline for `rayoracle report`, not an oracle and not for

@@ -1,4 +1,4 @@
-//! Ray–plane intersection (seed Ex. 1.2a).
+//! Ray–plane intersection.
 //!
 //! # The derivation, as corrected
 //!
@@ -9,8 +9,8 @@
 //! * `d·n = 0` and `(a − o)·n ≠ 0`: the ray is parallel and off the plane;
 //! * `d·n = 0` and `(a − o)·n = 0`: the ray lies in the plane, every `t`.
 //!
-//! The seed has these three cases right. One thing it does not say, which
-//! the code handles: **a zero normal** makes every ray satisfy `0 = 0`; it
+//! The usual derivation has these three cases right. One thing it does
+//! not say, which the code handles: **a zero normal** makes every ray satisfy `0 = 0`; it
 //! is classified [`PlaneHit::InPlane`] by the same rule (both dot products
 //! are 0). `eval` reports it as such; scenes reject it.
 //!

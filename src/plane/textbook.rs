@@ -1,9 +1,9 @@
-//! The textbook plane: seed Ex. 1.2a, `t = ((a − o)·n)/(d·n)`, exactly as
-//! written, in plain `f32`.
+//! The textbook plane: `t = ((a − o)·n)/(d·n)`, exactly as written, in
+//! plain `f32`.
 //!
 //! **A baseline for `rayoracle report`, not an oracle and not for
-//! production.** It is what a typical user writes from the seed: the
-//! algebra is right (the seed's three cases are), but there is no numerical
+//! production.** It is what a typical user writes from the derivation:
+//! the algebra is right (its three cases are), but there is no numerical
 //! care: `a − o` is rounded, both dot products are plain `f32` sums of
 //! rounded products, and nothing is prescaled. It exists so that the
 //! report can show what [`super::reference`](mod@super::reference) buys over
@@ -24,7 +24,7 @@
 use super::{Plane, PlaneHit};
 use crate::Ray;
 
-/// Intersects a ray (as a whole line) with a plane, the seed's way in plain
+/// Intersects a ray (as a whole line) with a plane, the textbook way in plain
 /// `f32`: `dn = d·n`; if `dn = 0`, [`PlaneHit::InPlane`] when
 /// `(a − o)·n = 0` and [`PlaneHit::Parallel`] otherwise; else
 /// `Hit(((a − o)·n)/dn)`. A NaN input gives a NaN hit, or

@@ -1,5 +1,5 @@
-//! The quadric in plain `f64`: the corrected formulation (seed Ex. 1.4a,
-//! solved by pbrt-v4's `Quadratic`) with every operation in `f64`, each
+//! The quadric in plain `f64`: the corrected formulation (solved by
+//! pbrt-v4's `Quadratic`) with every operation in `f64`, each
 //! root rounded once to `f32`, and no error bound.
 //!
 //! **A baseline for `rayoracle report`, not an oracle and not for

@@ -1,10 +1,9 @@
-//! Ray–quadric intersection (seed Ex. 1.4a, and the sphere as a quadric,
-//! 1.4b).
+//! Ray–quadric intersection, and the sphere as a quadric.
 //!
 //! # The derivation, as corrected
 //!
 //! The quadric is `A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z +
-//! J = 0`, coefficients in the seed's order `a…j` (stored as
+//! J = 0`, coefficients in that order, `a…j` (stored as
 //! [`Quadric::coeffs`]`[0..10]`). With `p = o + t d`:
 //!
 //! ```text
@@ -15,10 +14,10 @@
 //! α t² + β t + γ = 0
 //! ```
 //!
-//! Departures from the seed:
+//! Departures from the usual hand expansion:
 //!
-//! * its expansion writes `o t d_z` for `i t d_z` and splits β across two
-//!   braces; the β above is the correct one;
+//! * it is easily written with `o t d_z` for `i t d_z`, and with β split
+//!   across two braces; the β above is the correct one;
 //! * `t = −β/2α ± √(β²/4α² − γ/α)` divides by α, which is 0 for a ray
 //!   parallel to a cylinder's axis or along a paraboloid's axis, and cancels
 //!   catastrophically when α ≈ 0. Here, after pbrt-v4's `Quadratic`:
@@ -28,7 +27,8 @@
 //!   - otherwise the discriminant `β² − 4αγ` (with a proven bound on its
 //!     error, [`kernel`]), `q = −½(β + sign(β)√Δ)`, `t₀ = q/α`,
 //!     `t₁ = γ/q`;
-//! * in 1.4b the root is written `((o−C)·d ± √…)/d²`; the sign of `(o−C)·d`
+//! * the sphere written as a quadric is often solved as `((o−C)·d ±
+//!   √…)/d²`; the sign of `(o−C)·d`
 //!   is wrong (it must be `−(o−C)·d`), and `R²` is again missing its `d·d`
 //!   factor. [`Quadric::from_sphere`] builds the sphere's coefficients, and
 //!   the tests check that the quadric path classifies it like the sphere.
@@ -66,7 +66,7 @@ use crate::sphere::Sphere;
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Quadric {
-    /// `[A, B, C, D, E, F, G, H, I, J]`, the seed's `a…j`.
+    /// `[A, B, C, D, E, F, G, H, I, J]`, in the order of the equation.
     pub coeffs: [f32; 10],
 }
 
@@ -81,7 +81,7 @@ impl Quadric {
         Quadric { coeffs }
     }
 
-    /// The sphere as a quadric (seed 1.4b): `A = B = C = 1`, `G, H, I =
+    /// The sphere as a quadric: `A = B = C = 1`, `G, H, I =
     /// −2C`, `J = |C|² − R²`, with `J` rounded once from its exact value.
     /// Returns the quadric and whether it is *exactly* the sphere (true when
     /// `J` is representable, e.g. for small integer centres and radii; a

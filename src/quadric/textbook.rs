@@ -1,11 +1,11 @@
-//! The textbook quadric: seed Ex. 1.4a with its algebra corrected, solved by
-//! the seed's own root formula in plain `f32`.
+//! The textbook quadric: the hand expansion with its algebra corrected,
+//! solved by the usual root formula in plain `f32`.
 //!
 //! **A baseline for `rayoracle report`, not an oracle and not for
-//! production.** It is what a typical user writes once the seed's expansion
+//! production.** It is what a typical user writes once the hand expansion
 //! is fixed (`i t d_z` for `o t d_z`, β in one piece; see the
 //! [module docs](super)): α, β, γ as plain `f32` sums of plain products, and
-//! then the seed's
+//! then the usual
 //!
 //! ```text
 //! t₁,₂ = −β/2α ± √(β²/4α² − γ/α)
@@ -69,7 +69,7 @@ where
     (alpha, beta, gamma)
 }
 
-/// Intersects a line with a quadric by the seed's
+/// Intersects a line with a quadric by the usual
 /// `t = −β/2α ± √(β²/4α² − γ/α)` in plain `f32`, with the one guard for
 /// `α = 0` exactly. The discriminant `β²/4α² − γ/α` classifies: `< 0`
 /// [`QuadricHit::None`], `= 0` `One(−β/2α)`, otherwise `Two`, smaller root

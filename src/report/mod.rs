@@ -116,7 +116,7 @@ impl Options {
 /// let row = accuracy(c.family("sphere/far-tiny").unwrap(), Variant::Reference);
 /// assert_eq!((row.cases, row.class_mismatches), (16, 0));
 /// assert!(row.max_bits <= 1.0);
-/// // The seed's formulas in plain f32 misclassify most far, tiny spheres.
+/// // The textbook formulas in plain f32 misclassify most far, tiny spheres.
 /// let all = Catalogue::builtin().unwrap();
 /// let row = accuracy(all.family("sphere/far-tiny").unwrap(), Variant::Textbook);
 /// assert_eq!((row.cases, row.class_mismatches), (256, 154));

@@ -22,7 +22,7 @@ use std::time::Instant;
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Variant {
-    /// The seed's formulas, algebra corrected, no numerical care, in f32
+    /// The textbook formulas, algebra corrected, no numerical care, in f32
     /// (`*::textbook`).
     Textbook,
     /// The scalar reference (`*::reference`).

@@ -15,7 +15,7 @@
 //! }
 //! ```
 //!
-//! * The camera takes the seed's parameters (Ex. 1.1, see
+//! * The camera takes the usual parameters (see
 //!   [`crate::camera`]): `angle` is the vertical field of view in radians,
 //!   `res` is `[width, height]`; `dir` need not be unit length and `up` need
 //!   not be orthogonal to it.

@@ -1,5 +1,5 @@
-//! The sphere in plain `f64`: the corrected formulation (seed Ex. 1.2b,
-//! solved after Ray Tracing Gems ch. 7) with every operation in `f64` and
+//! The sphere in plain `f64`: the corrected formulation (solved after Ray
+//! Tracing Gems ch. 7) with every operation in `f64` and
 //! each root rounded once to `f32`, and no error bound.
 //!
 //! **A baseline for `rayoracle report`, not an oracle and not for

@@ -1,4 +1,4 @@
-//! Ray–sphere intersection (seed Ex. 1.2b).
+//! Ray–sphere intersection.
 //!
 //! # The derivation, as corrected
 //!
@@ -8,11 +8,12 @@
 //! a t² + 2 b t + c = 0,   a = d·d,   b = f·d,   c = f·f − R².
 //! ```
 //!
-//! The seed gets here (up to a sign typo in the z term), then slips:
+//! A common hand derivation gets this far (often with a sign slip in one
+//! component of `f`), then goes wrong in three places:
 //!
-//! * its discriminant `M = (d·f)² − d²·f² + R²` is missing the factor `d·d`
-//!   on `R²`. The quarter discriminant is `Δ = b² − a c = b² − a(f·f) + a R²`,
-//!   and the seed's `M` equals it only when `|d| = 1`. The code is correct for
+//! * it writes the discriminant as `M = (d·f)² − d²·f² + R²`, missing the
+//!   factor `d·d` on `R²`. The quarter discriminant is `Δ = b² − a c = b² −
+//!   a(f·f) + a R²`, and `M` equals it only when `|d| = 1`. The code is correct for
 //!   directions of any length;
 //! * its case analysis ties the class to the signs of `t₁, t₂` and so leaves
 //!   out a ray origin inside the sphere (`t₀ < 0 < t₁`) and a sphere behind

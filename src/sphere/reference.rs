@@ -16,7 +16,7 @@ use crate::stage::Stage;
 /// use rayoracle::{Ray, sphere::{Sphere, SphereHit, reference::intersect}};
 /// use glam::Vec3;
 /// let s = Sphere::new(Vec3::ZERO, 1.0);
-/// // |d| = 2: the seed's discriminant would be wrong here.
+/// // |d| = 2: a discriminant without the d·d factor on R² would be wrong here.
 /// let r = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::new(0.0, 0.0, 2.0));
 /// assert_eq!(intersect(&r, &s), SphereHit::Two(2.0, 3.0));
 /// // Origin inside: one root behind the origin.

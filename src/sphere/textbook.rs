@@ -1,8 +1,8 @@
-//! The textbook sphere: seed Ex. 1.2b with its algebra corrected, solved by
+//! The textbook sphere: the hand derivation with its algebra corrected, solved by
 //! the classic quadratic formula in plain `f32`.
 //!
 //! **A baseline for `rayoracle report`, not an oracle and not for
-//! production.** It is what a typical user writes once the seed's slips are
+//! production.** It is what a typical user writes once the derivation's slips are
 //! fixed (the `d·d` factor on `R²`, the sign typo in the z term, the class
 //! over the whole line), with no numerical care:
 //!
@@ -14,7 +14,7 @@
 //! It exists so that the report can show what the reference's Ray Tracing
 //! Gems ch. 7 formulation ([`super::reference`](mod@super::reference), see
 //! the [module docs](super)) buys, measured against [`super::exact`]. Where
-//! it goes wrong, as the seed's form does:
+//! it goes wrong, as any form of the classic formula does:
 //!
 //! * **a far, small sphere**: `b²` and `4ac` are both about `4|f|⁴` and
 //!   cancel, so the discriminant, and with it the class, is lost once
