@@ -3,7 +3,7 @@
 //!
 //! A default build targets baseline x86-64 (SSE2), where
 //! [`F64x4`](super::real::F64x4) is two 128-bit registers. The x4 kernels
-//! also compile a second copy of themselves over [`Avx4`] inside a
+//! also compile a second copy of themselves over `Avx4` inside a
 //! `#[target_feature(enable = "avx2,fma")]` function, and take it when
 //! [`Avx2::detect`] finds the features at run time. Every operation of
 //! [`Real`] is still one correctly rounded IEEE-754 operation per lane
@@ -19,7 +19,7 @@
 //! quadric 81.4. That is what the `unsafe` blocks of this module and of
 //! the x4 entry points buy.
 //!
-//! [`Avx4`] is crate-private: its [`Real`] methods run AVX instructions
+//! `Avx4` is crate-private: its [`Real`] methods run AVX instructions
 //! without a target feature of their own, so they may only run inside a
 //! function that was entered with an [`Avx2`] token. The crate names the
 //! type only in such functions (the `x4::intersect_avx2` entry points).
@@ -61,11 +61,11 @@ impl Avx2 {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Avx4(__m256d);
 
-/// Four lane masks of [`Avx4`], all ones or all zeros per lane.
+/// Four lane masks of `Avx4`, all ones or all zeros per lane.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct AvxMask(__m256d);
 
-/// Runs AVX intrinsics from a method of [`Avx4`].
+/// Runs AVX intrinsics from a method of `Avx4`.
 ///
 /// `unsafe` is needed because trait methods cannot carry
 /// `#[target_feature]`; they are `#[inline(always)]` and the crate calls
