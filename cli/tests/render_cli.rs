@@ -13,13 +13,16 @@ fn png_size(path: &Path) -> (u32, u32) {
 }
 
 /// A scene of the library's compiled-in fixtures, written to a file of its
-/// own name in a directory of this test process.
+/// own name in a directory of its own, so that tests running in parallel
+/// never read a file another test is writing.
 fn fixture(name: &str) -> String {
+    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let (_, text) = rayoracle::fixtures::SCENES
         .into_iter()
         .find(|s| s.0 == name)
         .unwrap_or_else(|| panic!("no scene {name}"));
-    let dir = std::env::temp_dir().join(format!("rayoracle-cli-scenes-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("rayoracle-cli-scenes-{}-{n}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join(name);
     std::fs::write(&path, text).unwrap();
