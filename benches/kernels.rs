@@ -19,7 +19,7 @@
 //!   `x4/packed` leaves for the AVX2 copy where the CPU has AVX2 and FMA.
 //! * `x4/batch`: the same packets through `intersect_packets`, which runs
 //!   them two at a time as eight lanes and dispatches once per batch.
-//! * `f64/per-ray`: the plain-f64 variant (`*::double`; `textbook` for the
+//! * `f64/per-ray`: the plain-f64 variant (`*::plain`; `textbook` for the
 //!   camera), one `black_box`ed call per ray.
 //! * `parry3d/per-ray` (sphere, plane): `Ball::cast_local_ray` and
 //!   `HalfSpace::cast_local_ray`, one `black_box`ed call per ray.
@@ -200,7 +200,7 @@ fn benches(c: &mut Criterion) {
             &rays,
             s,
             |r, s| sphere::reference::intersect(r, s).nearest(0.0, f32::INFINITY),
-            |r, s| sphere::double::intersect(r, s).nearest(0.0, f32::INFINITY),
+            |r, s| sphere::plain::intersect(r, s).nearest(0.0, f32::INFINITY),
             |r| {
                 let (m, t) = sphere::x4::intersect(r, &s4).nearest(t_min, t_max);
                 finite(m, t)
@@ -231,7 +231,7 @@ fn benches(c: &mut Criterion) {
         &rays,
         p,
         |r, p| plane::reference::intersect(r, p).nearest(0.0, f32::INFINITY),
-        |r, p| plane::double::intersect(r, p).nearest(0.0, f32::INFINITY),
+        |r, p| plane::plain::intersect(r, p).nearest(0.0, f32::INFINITY),
         |r| {
             let (m, t) = plane::x4::intersect(r, &p4).nearest(t_min, t_max);
             finite(m, t)
@@ -264,7 +264,7 @@ fn benches(c: &mut Criterion) {
         &rays,
         q,
         |r, q| quadric::reference::intersect(r, q).nearest(0.0, f32::INFINITY),
-        |r, q| quadric::double::intersect(r, q).nearest(0.0, f32::INFINITY),
+        |r, q| quadric::plain::intersect(r, q).nearest(0.0, f32::INFINITY),
         |r| {
             let (m, t) = quadric::x4::intersect(r, &q4).nearest(t_min, t_max);
             finite(m, t)
@@ -313,7 +313,7 @@ fn benches(c: &mut Criterion) {
             acc
         })
     });
-    let cam64 = rayoracle::camera::double::Camera::new(&cam.params).expect("valid camera");
+    let cam64 = rayoracle::camera::plain::Camera::new(&cam.params).expect("valid camera");
     g.bench_function(BenchmarkId::new("f64", "per-ray"), |b| {
         b.iter(|| {
             let mut acc = 0.0f32;

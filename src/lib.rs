@@ -78,6 +78,5 @@ pub mod scene;
 pub mod sphere;
 pub mod stage;
 pub mod ulp;
-pub mod x4_column;
 
 pub use ray::Ray;

@@ -5,8 +5,8 @@
 //!
 //! Each bug is modelled on top of a correct kernel, so that the bug is the
 //! only thing wrong: the formula slips of common hand derivations are evaluated in `f64`
-//! (stably, rounded once), the classic bugs wrap `sphere::double`,
-//! `plane::double`, the four-lane `sphere::x4` or the reference camera. The
+//! (stably, rounded once), the classic bugs wrap `sphere::plain`,
+//! `plane::plain`, the four-lane `sphere::x4` or the reference camera. The
 //! correct counterparts run through the same gate with the same declaration
 //! and must pass, so the gate is not simply failing everything.
 //!
@@ -14,7 +14,7 @@
 //! ([`Declared::f32`]).
 
 use glam::DVec3;
-use rayoracle::camera::{CameraParams, kernel};
+use rayoracle::camera::{CameraParams, filter};
 use rayoracle::case::{Case, parse_line};
 use rayoracle::check::gate::{Answer, Declared, Gate, Lanes, Report, Semantics, SphereKernel4};
 use rayoracle::plane::{self, Plane, PlaneHit};
@@ -101,7 +101,7 @@ fn terms(ray: &Ray, s: &Sphere) -> Terms {
     }
 }
 
-/// Solves `a t² + 2b t + c = 0` as `sphere::double` does (RTG ch. 7):
+/// Solves `a t² + 2b t + c = 0` as `sphere::plain` does (RTG ch. 7):
 /// `disc` is `a(b² − ac)`, `q = −(b + sign(b)·√(disc/a))`, `t₀ = c/q`,
 /// `t₁ = q/a`, sorted, each rounded once. `sqrt` is the square root the
 /// kernel uses.
@@ -146,7 +146,7 @@ fn seed_sphere_r2_unscaled(ray: &Ray, s: &Sphere) -> Answer {
 /// `−t₁` and `−t₀`: the renderer hits spheres behind it and misses those in
 /// front.
 fn seed_sphere_sign_flipped(ray: &Ray, s: &Sphere) -> Answer {
-    let mirrored = match sphere::double::intersect(ray, s) {
+    let mirrored = match sphere::plain::intersect(ray, s) {
         SphereHit::None => SphereHit::None,
         SphereHit::Tangent(t) => SphereHit::Tangent(-t),
         SphereHit::Two(t0, t1) => SphereHit::Two(-t1, -t0),
@@ -158,7 +158,7 @@ fn seed_sphere_sign_flipped(ray: &Ray, s: &Sphere) -> Answer {
 /// ("`M > 0 ∧ t₁ > 0 ∧ t₂ > 0`"), so an origin inside the sphere (one root
 /// behind, one ahead) sees nothing.
 fn seed_sphere_ignores_inside(ray: &Ray, s: &Sphere) -> Answer {
-    Answer::Nearest(match sphere::double::intersect(ray, s) {
+    Answer::Nearest(match sphere::plain::intersect(ray, s) {
         SphereHit::None => None,
         SphereHit::Tangent(t) => (t > 0.0).then_some(t),
         SphereHit::Two(t0, t1) => (t0 > 0.0 && t1 > 0.0).then_some(t0),
@@ -169,14 +169,14 @@ fn seed_sphere_ignores_inside(ray: &Ray, s: &Sphere) -> Answer {
 /// ray, so the renderer sees spheres behind the camera, and the back face
 /// of a sphere it is inside.
 fn sphere_accepts_negative_t(ray: &Ray, s: &Sphere) -> Answer {
-    let roots = sphere::double::intersect(ray, s).roots();
+    let roots = sphere::plain::intersect(ray, s).roots();
     Answer::Nearest(roots.as_slice().first().copied())
 }
 
 /// Roots returned unsorted: the far root first (the `+√` branch computed
 /// first and never swapped).
 fn sphere_unsorted(ray: &Ray, s: &Sphere) -> Answer {
-    match sphere::double::intersect(ray, s) {
+    match sphere::plain::intersect(ray, s) {
         SphereHit::Two(t0, t1) => Answer::Roots(vec![t1, t0]),
         h => Answer::roots(h),
     }
@@ -254,7 +254,7 @@ const X4_GARBAGE_TAIL: Packet = Packet {
 /// "parallel, no hit", even when the ray lies in the plane (the usual derivation's
 /// first case dropped). Whole-line semantics, so the gate expects every `t`.
 fn plane_no_in_plane(ray: &Ray, p: &Plane) -> Answer {
-    match plane::double::intersect(ray, p) {
+    match plane::plain::intersect(ray, p) {
         PlaneHit::InPlane => Answer::roots(PlaneHit::Parallel),
         h => Answer::roots(h),
     }
@@ -309,7 +309,7 @@ fn camera_correct(p: &CameraParams, px: [u32; 2]) -> Option<Ray> {
 /// belongs. Invisible for square images.
 fn camera_res_x_for_y(p: &CameraParams, px: [u32; 2]) -> Option<Ray> {
     camera_with(p, px, |res, px| {
-        (kernel::offset(px[0], res[0]), kernel::offset(px[1], res[0]))
+        (filter::offset(px[0], res[0]), filter::offset(px[1], res[0]))
     })
 }
 
@@ -328,20 +328,20 @@ fn camera_no_half_pixel(p: &CameraParams, px: [u32; 2]) -> Option<Ray> {
 #[test]
 fn controls_pass() {
     use Semantics::{NearestPositive, WholeLine};
-    let nearest = |ray: &Ray, s: &Sphere| Answer::nearest(sphere::double::intersect(ray, s), 0.0);
-    let whole = |ray: &Ray, s: &Sphere| Answer::roots(sphere::double::intersect(ray, s));
-    let plane = |ray: &Ray, p: &Plane| Answer::roots(plane::double::intersect(ray, p));
-    let quadric = |ray: &Ray, q: &Quadric| Answer::roots(quadric::double::intersect(ray, q));
+    let nearest = |ray: &Ray, s: &Sphere| Answer::nearest(sphere::plain::intersect(ray, s), 0.0);
+    let whole = |ray: &Ray, s: &Sphere| Answer::roots(sphere::plain::intersect(ray, s));
+    let plane = |ray: &Ray, p: &Plane| Answer::roots(plane::plain::intersect(ray, p));
+    let quadric = |ray: &Ray, q: &Quadric| Answer::roots(quadric::plain::intersect(ray, q));
     // Floors well below today's counts (about 2800, 1300, 2800, 1300): the
     // point is that the gate ran its families, not their exact sizes.
     let runs = [
         (
-            "sphere::double, nearest",
+            "sphere::plain, nearest",
             gate(NearestPositive).sphere(&nearest),
             1000,
         ),
         (
-            "sphere::double, whole line",
+            "sphere::plain, whole line",
             gate(WholeLine).sphere(&whole),
             1000,
         ),
@@ -355,8 +355,8 @@ fn controls_pass() {
             gate(WholeLine).sphere(&Lanes(X4_CORRECT)),
             1000,
         ),
-        ("plane::double", gate(WholeLine).plane(&plane), 500),
-        ("quadric::double", gate(WholeLine).quadric(&quadric), 1000),
+        ("plane::plain", gate(WholeLine).plane(&plane), 500),
+        ("quadric::plain", gate(WholeLine).quadric(&quadric), 1000),
         (
             "the reference camera",
             gate(WholeLine).camera(&camera_correct),

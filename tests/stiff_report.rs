@@ -174,19 +174,19 @@ fn every_later_stage_alone_matches_the_oracle() {
                     let (o, d, a, n) = (w(r.origin), w(r.dir), w(p.point), w(p.normal));
                     let ck = |h: Option<_>| h.map(|h| status(check::check_plane(r, p, h)));
                     vec![
-                        (Tracked, ck(plane::kernel::tracked(o, d, a, n))),
-                        (DoubleWord, ck(plane::kernel::double_word(o, d, a, n, 1.0))),
+                        (Tracked, ck(plane::stages::tracked(o, d, a, n))),
+                        (DoubleWord, ck(plane::stages::double_word(o, d, a, n, 1.0))),
                     ]
                 }
                 Case::Sphere(r, s) => {
                     let (o, d, m, rr) = (w(r.origin), w(r.dir), w(s.center), f64::from(s.radius));
                     let ck = |h: Option<_>| h.map(|h| status(check::check_sphere(r, s, h)));
                     vec![
-                        (Tight, ck(sphere::kernel::tight(o, d, m, rr, 1.0))),
-                        (Tracked, ck(sphere::kernel::tracked(o, d, m, rr))),
+                        (Tight, ck(sphere::stages::tight(o, d, m, rr, 1.0))),
+                        (Tracked, ck(sphere::stages::tracked(o, d, m, rr))),
                         (
                             DoubleWord,
-                            ck(sphere::kernel::double_word(o, d, m, rr, 1.0)),
+                            ck(sphere::stages::double_word(o, d, m, rr, 1.0)),
                         ),
                     ]
                 }
@@ -194,8 +194,8 @@ fn every_later_stage_alone_matches_the_oracle() {
                     let (k, o, d) = (q.coeffs.map(f64::from), w(r.origin), w(r.dir));
                     let ck = |h: Option<_>| h.map(|h| status(check::check_quadric(r, q, h)));
                     vec![
-                        (Tracked, ck(quadric::kernel::tracked(&k, o, d))),
-                        (DoubleWord, ck(quadric::kernel::double_word(&k, o, d, 1.0))),
+                        (Tracked, ck(quadric::stages::tracked(&k, o, d))),
+                        (DoubleWord, ck(quadric::stages::double_word(&k, o, d, 1.0))),
                     ]
                 }
                 Case::Camera(..) => continue,
@@ -271,11 +271,11 @@ fn sphere_stages_alone_match_the_oracle_on_grazing_rays() {
         for (stage, h) in [
             (
                 "tight",
-                sphere::kernel::tight(args.0, args.1, args.2, args.3, 1.0),
+                sphere::stages::tight(args.0, args.1, args.2, args.3, 1.0),
             ),
             (
                 "dd",
-                sphere::kernel::double_word(args.0, args.1, args.2, args.3, 1.0),
+                sphere::stages::double_word(args.0, args.1, args.2, args.3, 1.0),
             ),
         ] {
             let Some(h) = h else { continue };
@@ -422,7 +422,7 @@ fn plane_and_quadric_double_word_alone_match_the_oracle() {
         let d = n.cross(e) + n * eps;
         let ray = rayoracle::Ray::new(o, d);
         let p = plane::Plane::new(a, n);
-        if let Some(h) = plane::kernel::double_word(w(o), w(d), w(a), w(n), 1.0) {
+        if let Some(h) = plane::stages::double_word(w(o), w(d), w(a), w(n), 1.0) {
             answered[0] += 1;
             if !matches!(status(check::check_plane(&ray, &p, h)), Ok(Status::Checked)) {
                 failures.push(format!("plane #{i}: {ray:?} {p:?} {h:?}"));
@@ -444,7 +444,7 @@ fn plane_and_quadric_double_word_alone_match_the_oracle() {
             0.0,
         ]);
         let kk = q.coeffs.map(f64::from);
-        if let Some(h) = quadric::kernel::double_word(&kk, w(o), w(d), 1.0) {
+        if let Some(h) = quadric::stages::double_word(&kk, w(o), w(d), 1.0) {
             answered[1] += 1;
             if !matches!(
                 status(check::check_quadric(&ray, &q, h)),

@@ -1,6 +1,6 @@
-//! The `textbook` and `double` variants of each kernel (the baselines that
+//! The `textbook` and `plain` variants of each kernel (the baselines that
 //! `rayoracle report` sets against the reference) are implemented correctly,
-//! not broken on purpose: on seeded random well-conditioned cases, `double`
+//! not broken on purpose: on seeded random well-conditioned cases, `plain`
 //! classifies as the exact oracle does and its roots are within 1 ulp, and
 //! `textbook` is within a few ulps on easy cases. `textbook`'s documented
 //! failures (a far, small sphere; a quadric with α ≈ 0) are checked too, so
@@ -80,7 +80,7 @@ mod plane {
     use super::*;
     use rayoracle::Ray;
     use rayoracle::check::plane_condition;
-    use rayoracle::plane::{Plane, PlaneHit, double, exact, textbook};
+    use rayoracle::plane::{Plane, PlaneHit, exact, plain, textbook};
 
     /// Moderate random planes.
     fn random(rng: &mut SmallRng) -> (Ray, Plane) {
@@ -102,7 +102,7 @@ mod plane {
 
     #[test]
     fn double_matches_the_oracle() {
-        assert!(measure("plane double, κ < 10⁴", 0x91a7e, 1e4, double::intersect) <= 1);
+        assert!(measure("plane plain, κ < 10⁴", 0x91a7e, 1e4, plain::intersect) <= 1);
     }
 
     /// Integer inputs with `d ⟂ n` exactly, the origin on the plane or off
@@ -119,7 +119,7 @@ mod plane {
             let a = if on { o + d.cross(n) } else { o + n };
             let (ray, p) = (Ray::new(o, d), Plane::new(a, n));
             let e = exact::intersect(&ray, &p).unwrap();
-            assert_eq!(double::intersect(&ray, &p), e, "{ray:?} {p:?}");
+            assert_eq!(plain::intersect(&ray, &p), e, "{ray:?} {p:?}");
             assert_eq!(textbook::intersect(&ray, &p), e, "{ray:?} {p:?}");
         }
     }
@@ -135,7 +135,7 @@ mod sphere {
     use super::*;
     use glam::Vec3;
     use rayoracle::Ray;
-    use rayoracle::sphere::{Sphere, SphereHit, condition_at, double, exact, textbook};
+    use rayoracle::sphere::{Sphere, SphereHit, condition_at, exact, plain, textbook};
 
     fn exact_of(c: &(Ray, Sphere)) -> SphereHit {
         exact::intersect(&c.0, &c.1).unwrap()
@@ -154,7 +154,7 @@ mod sphere {
     }
 
     fn double_of(c: &(Ray, Sphere)) -> SphereHit {
-        double::intersect(&c.0, &c.1)
+        plain::intersect(&c.0, &c.1)
     }
 
     #[test]
@@ -165,7 +165,7 @@ mod sphere {
             let r = rng.random_range(0.5..20.0);
             (ray, Sphere::new(vec_in(rng, 20.0), r))
         };
-        let what = "sphere double, random, κ < 10⁴";
+        let what = "sphere plain, random, κ < 10⁴";
         let worst = worst_ulps(
             what,
             &mut rng,
@@ -182,7 +182,7 @@ mod sphere {
             let o = vec_in(rng, 0.25);
             (Ray::new(o, c + vec_in(rng, 0.5) - o), Sphere::new(c, 1.0))
         };
-        let what = "sphere double, R = 1 at 10³…10⁷";
+        let what = "sphere plain, R = 1 at 10³…10⁷";
         let worst = worst_ulps(
             what,
             &mut rng,
@@ -195,7 +195,7 @@ mod sphere {
     }
 
     /// Lines touching a sphere at `C ± R ŷ` along an integer direction in
-    /// the x–z plane: exact tangents, which `double` must see exactly.
+    /// the x–z plane: exact tangents, which `plain` must see exactly.
     #[test]
     fn double_sees_integer_tangents() {
         let mut rng = SmallRng::seed_from_u64(0x7a9);
@@ -212,7 +212,7 @@ mod sphere {
             let ray = Ray::new(c + Vec3::new(0.0, side, 0.0) - s * d, d);
             let sphere = Sphere::new(c, r);
             assert_eq!(exact::intersect(&ray, &sphere), Ok(SphereHit::Tangent(s)));
-            assert_eq!(double::intersect(&ray, &sphere), SphereHit::Tangent(s));
+            assert_eq!(plain::intersect(&ray, &sphere), SphereHit::Tangent(s));
         }
     }
 
@@ -272,7 +272,7 @@ mod quadric {
     use super::*;
     use glam::Vec3;
     use rayoracle::Ray;
-    use rayoracle::quadric::{Quadric, QuadricHit, condition, double, exact, textbook};
+    use rayoracle::quadric::{Quadric, QuadricHit, condition, exact, plain, textbook};
 
     fn exact_of(c: &(Ray, Quadric)) -> QuadricHit {
         exact::intersect(&c.0, &c.1).unwrap()
@@ -299,7 +299,7 @@ mod quadric {
     }
 
     fn double_of(c: &(Ray, Quadric)) -> QuadricHit {
-        double::intersect(&c.0, &c.1)
+        plain::intersect(&c.0, &c.1)
     }
 
     fn textbook_of(c: &(Ray, Quadric)) -> QuadricHit {
@@ -316,7 +316,7 @@ mod quadric {
                 Quadric::new(k),
             )
         };
-        let what = "quadric double, random, κ < 10⁴";
+        let what = "quadric plain, random, κ < 10⁴";
         let worst = worst_ulps(
             what,
             &mut rng,
@@ -326,7 +326,7 @@ mod quadric {
             double_of,
         );
         assert!(worst <= 1);
-        let what = "quadric double, α = 0";
+        let what = "quadric plain, α = 0";
         let worst = worst_ulps(
             what,
             &mut rng,
@@ -373,7 +373,7 @@ mod quadric {
 
     /// The baseline stays naive: `εx² + x + γ = 0` along x with ε from
     /// 10⁻⁷ to 10⁻⁵ (α ≈ 0), whose root near −γ the seed's formula cancels
-    /// away, while `double` is within 1 ulp.
+    /// away, while `plain` is within 1 ulp.
     #[test]
     fn textbook_fails_alpha_near_zero() {
         let mut rng = SmallRng::seed_from_u64(0xa1fa);
@@ -395,7 +395,7 @@ mod quadric {
         }
         eprintln!("quadric textbook, α ≈ 0: {bad} of {N} roots more than 1000 ulps off");
         assert!(bad > N / 2, "{bad}");
-        let what = "quadric double, α ≈ 0";
+        let what = "quadric plain, α ≈ 0";
         let worst = worst_ulps(what, &mut rng, near_zero, exact_of, |_, _| true, double_of);
         assert!(worst <= 1);
     }
@@ -404,7 +404,7 @@ mod quadric {
 mod camera {
     use super::*;
     use glam::Vec3;
-    use rayoracle::camera::{CameraError, CameraParams, component_scale, double, exact, textbook};
+    use rayoracle::camera::{CameraError, CameraParams, component_scale, exact, plain, textbook};
     use rayoracle::ulp::ulp_of;
 
     /// A random valid camera (`up` at least 0.1 rad from `dir`) and a pixel
@@ -457,7 +457,7 @@ mod camera {
     fn double_matches_the_oracle() {
         let mut rng = SmallRng::seed_from_u64(0xca3e7a);
         let (of_scale, plain) = worst_errors(&mut rng, false, |p, x, y| {
-            double::Camera::new(p).unwrap().ray(x, y).dir
+            plain::Camera::new(p).unwrap().ray(x, y).dir
         });
         eprintln!("camera double: max {of_scale} ulps of Sᵢ, {plain} ulps");
         assert!(of_scale <= 1.0 && plain <= 1);
@@ -515,8 +515,8 @@ mod camera {
         for (p, err) in cases {
             assert_eq!(p.build().unwrap_err(), err);
             assert_eq!(textbook::Camera::new(&p).unwrap_err(), err);
-            assert_eq!(double::Camera::new(&p).unwrap_err(), err);
+            assert_eq!(plain::Camera::new(&p).unwrap_err(), err);
         }
-        assert!(textbook::Camera::new(&ok).is_ok() && double::Camera::new(&ok).is_ok());
+        assert!(textbook::Camera::new(&ok).is_ok() && plain::Camera::new(&ok).is_ok());
     }
 }

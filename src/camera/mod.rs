@@ -38,7 +38,7 @@
 //! `h` the real tangent of the `f32` half angle: [`exact`] states the
 //! definition, the treatment of exact zeros, and why the oracle's Ziv loop
 //! ends. Per camera the basis is enclosed to 96 bits or more ([`tan`]); per
-//! pixel an f64 evaluation with a proven bound ([`kernel`]) decides nearly
+//! pixel an f64 evaluation with a proven bound ([`filter`]) decides nearly
 //! every component, and the oracle the rest. The reference and the four-lane
 //! kernels ([`x4`](mod@x4)) therefore agree with [`exact::ray`] bit for bit.
 //!
@@ -52,9 +52,9 @@
 //! ([`CameraError::BasisOverflow`]); a direction component whose real value
 //! is beyond `f32::MAX` (plus half an ulp) is ±∞, as rounding defines.
 
-pub mod double;
 pub mod exact;
-pub mod kernel;
+pub mod filter;
+pub mod plain;
 pub mod reference;
 pub mod tan;
 pub mod textbook;

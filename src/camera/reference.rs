@@ -1,10 +1,10 @@
 //! The reference camera: the basis enclosed once per camera, each pixel's
-//! direction in f64 with a proven bound ([`kernel`]), and the rare
+//! direction in f64 with a proven bound ([`filter`]), and the rare
 //! undecided component from the oracle ([`super::exact`]). Every component
 //! is correctly rounded.
 
 use super::exact::{Exact, FIRST_BITS};
-use super::{CameraError, CameraParams, MAX_RESOLUTION, kernel};
+use super::{CameraError, CameraParams, MAX_RESOLUTION, filter};
 use crate::Ray;
 use glam::Vec3;
 
@@ -33,7 +33,7 @@ pub struct Camera {
     /// The vertical half-extent vector (pointing down the image).
     pub y: Vec3,
     /// `xᵢ/resX` and `yᵢ/resY` to within `2⁻⁵²` relatively, for
-    /// [`kernel::component`] (NaN where out of its range).
+    /// [`filter::component`] (NaN where out of its range).
     pub(super) unit: [[f64; 3]; 2],
 }
 
@@ -64,7 +64,7 @@ fn check_vec(v: Vec3, zero: CameraError, nonfinite: CameraError) -> Result<(), C
 /// assert_eq!(pixel_offsets([4, 2], 0, 1), (-0.75, 0.5));
 /// ```
 pub fn pixel_offsets(res: [u32; 2], px: u32, py: u32) -> (f32, f32) {
-    (kernel::offset(px, res[0]), kernel::offset(py, res[1]))
+    (filter::offset(px, res[0]), filter::offset(py, res[1]))
 }
 
 impl Camera {
@@ -149,12 +149,12 @@ impl Camera {
     /// `shrink` (1 in [`Camera::ray`]).
     pub(crate) fn dir(&self, px: u32, py: u32, shrink: f64) -> [f32; 3] {
         let [rx, ry] = self.params.res;
-        let (nx, ny) = (kernel::numerator(px, rx), kernel::numerator(py, ry));
+        let (nx, ny) = (filter::numerator(px, rx), filter::numerator(py, ry));
         let d = self.params.dir.to_array();
         let mut out = [0.0; 3];
         let mut undecided = [false; 3];
         for i in 0..3 {
-            let (r, ok) = kernel::component(
+            let (r, ok) = filter::component(
                 d[i] as f64,
                 self.unit[0][i],
                 self.unit[1][i],

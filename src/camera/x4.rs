@@ -1,8 +1,8 @@
 //! Four camera rays at once, bit-identical to [`super::Camera::ray`]: the
-//! same [`super::kernel`] filter at [`F64x4`], undecided lanes from the
+//! same [`super::filter`] filter at [`F64x4`], undecided lanes from the
 //! oracle (correct rounding is unique, so the two agree by construction).
 
-use super::{Camera, kernel};
+use super::{Camera, filter};
 use crate::num::real::F64x4;
 use crate::ray4::Ray4;
 use wide::f32x4;
@@ -20,14 +20,14 @@ impl Camera {
     #[inline]
     pub fn ray4(&self, pixels: [[u32; 2]; 4]) -> Ray4 {
         let [w, h] = self.params.res;
-        let nx = F64x4::from(pixels.map(|p| kernel::numerator(p[0], w)));
-        let ny = F64x4::from(pixels.map(|p| kernel::numerator(p[1], h)));
+        let nx = F64x4::from(pixels.map(|p| filter::numerator(p[0], w)));
+        let ny = F64x4::from(pixels.map(|p| filter::numerator(p[1], h)));
         let d = self.params.dir.to_array();
         let mut out = [[0.0f32; 4]; 3];
         let mut undecided = [[false; 3]; 4];
         for i in 0..3 {
             let s = |x: f64| <F64x4 as crate::num::Real>::splat(x);
-            let (r, ok) = kernel::component(
+            let (r, ok) = filter::component(
                 s(d[i] as f64),
                 s(self.unit[0][i]),
                 s(self.unit[1][i]),

@@ -18,15 +18,15 @@
 //!
 //! [`reference::intersect`](mod@reference) and [`x4`] return the exact class
 //! and the root correctly rounded to `f32`, for every finite input: the
-//! [filter](kernel) evaluates both dot products in f64 with a proven error
+//! [filter](stages) evaluates both dot products in f64 with a proven error
 //! bound and certifies what the bound decides; a line parallel in exact
 //! arithmetic but not term by term, or a root too close to a rounding
 //! boundary, goes to the exact oracle ([`exact`]).
 
-pub mod double;
 pub mod exact;
-pub mod kernel;
+pub mod plain;
 pub mod reference;
+pub mod stages;
 pub mod textbook;
 pub mod x4;
 

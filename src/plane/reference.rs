@@ -1,8 +1,8 @@
-//! The scalar reference: the [filter](super::kernel) at `f64`, then the
+//! The scalar reference: the [filter](super::stages) at `f64`, then the
 //! later stages ([`crate::stage`]) for whatever it leaves undecided, the
 //! exact oracle last.
 
-use super::{Plane, PlaneHit, exact, kernel};
+use super::{Plane, PlaneHit, exact, stages};
 use crate::Ray;
 use crate::hit::Intersection;
 use crate::num::certify::{certify, flush_prone, needs_probe, subnormals_work};
@@ -53,7 +53,7 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
         return (exact_stage(ray, plane), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let f = kernel::filter(
+    let f = stages::filter(
         w(ray.origin),
         w(ray.dir),
         w(plane.point),
@@ -75,8 +75,8 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
 }
 
 /// The stages after the filter: f64 arithmetic that proves itself exact
-/// ([`kernel::tracked`]), double-word arithmetic
-/// ([`kernel::double_word`]), then the exact oracle. The later stages,
+/// ([`stages::tracked`]), double-word arithmetic
+/// ([`stages::double_word`]), then the exact oracle. The later stages,
 /// too, assume subnormals work where an input or a result is subnormal
 /// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
 /// its undecided lanes here, and all of them when FTZ or DAZ is on.
@@ -95,8 +95,8 @@ fn escalate_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
-    let staged = (kernel::tracked(o, d, a, n).map(|h| (h, Stage::Tracked)))
-        .or_else(|| kernel::double_word(o, d, a, n, shrink).map(|h| (h, Stage::DoubleWord)));
+    let staged = (stages::tracked(o, d, a, n).map(|h| (h, Stage::Tracked)))
+        .or_else(|| stages::double_word(o, d, a, n, shrink).map(|h| (h, Stage::DoubleWord)));
     match staged {
         Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
             (exact_stage(ray, plane), Stage::Exact)

@@ -2,7 +2,7 @@
 //! lanes; both paths return the exact answer, correctly rounded, so they
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
-use super::{Plane, PlaneHit, kernel, reference};
+use super::{Plane, PlaneHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
@@ -72,7 +72,7 @@ pub struct PlaneHit4 {
 }
 
 /// Intersects four lines with four planes, lane by lane: the
-/// [filter](super::kernel) on four f64 lanes, and the scalar stages for any
+/// [filter](super::stages) on four f64 lanes, and the scalar stages for any
 /// lane it leaves undecided, so every lane equals
 /// [`super::reference::intersect`] bit for bit.
 ///
@@ -219,7 +219,7 @@ impl<L: Real> Decided<Pair<L>> {
 /// The filter and [`certify`] over any [`Real`].
 #[inline(always)]
 fn decide<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Decided<L> {
-    let f = kernel::filter(o, d, a, n, 1.0);
+    let f = stages::filter(o, d, a, n, 1.0);
     let hit = f.hit & certify(f.t, f.r, f.a);
     Decided {
         hit,

@@ -25,7 +25,7 @@
 //!   - `α = β = 0`: `γ = 0` means the line lies on the surface,
 //!     [`QuadricHit::All`]; otherwise [`QuadricHit::None`];
 //!   - otherwise the discriminant `β² − 4αγ` (with a proven bound on its
-//!     error, [`kernel`]), `q = −½(β + sign(β)√Δ)`, `t₀ = q/α`,
+//!     error, [`stages`]), `q = −½(β + sign(β)√Δ)`, `t₀ = q/α`,
 //!     `t₁ = γ/q`;
 //! * the sphere written as a quadric is often solved as `((o−C)·d ±
 //!   √…)/d²`; the sign of `(o−C)·d`
@@ -37,16 +37,16 @@
 //!
 //! [`reference::intersect`](mod@reference) and [`x4`] return the exact class
 //! and every root correctly rounded to `f32`, for every finite input. The
-//! [filter](kernel) evaluates α, β, γ and the discriminant in f64 with the
+//! [filter](stages) evaluates α, β, γ and the discriminant in f64 with the
 //! error bound derived there and certifies what it decides; a double root,
 //! an α that is 0 in exact arithmetic but not term by term, a line on the
 //! surface or a root too close to a rounding boundary goes to the exact
 //! oracle ([`exact`]).
 
-pub mod double;
 pub mod exact;
-pub mod kernel;
+pub mod plain;
 pub mod reference;
+pub mod stages;
 pub mod textbook;
 pub mod x4;
 

@@ -1,8 +1,8 @@
-//! The scalar reference: the [filter](super::kernel) at `f64`, then the
+//! The scalar reference: the [filter](super::stages) at `f64`, then the
 //! later stages ([`crate::stage`]) for whatever it leaves undecided, the
 //! exact oracle last.
 
-use super::{Quadric, QuadricHit, exact, kernel};
+use super::{Quadric, QuadricHit, exact, stages};
 use crate::Ray;
 use crate::hit::Intersection;
 use crate::num::certify::{certify, flush_prone, needs_probe, subnormals_work};
@@ -55,7 +55,7 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
         return (exact_stage(ray, quadric), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let f = kernel::filter(&widen(&quadric.coeffs), w(ray.origin), w(ray.dir), shrink);
+    let f = stages::filter(&widen(&quadric.coeffs), w(ray.origin), w(ray.dir), shrink);
     if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
         if needs_probe(&[], &[f.t0, f.t1]) && !subnormals_work() {
             return (exact_stage(ray, quadric), Stage::Exact);
@@ -83,8 +83,8 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
 }
 
 /// The stages after the filter: f64 arithmetic that proves itself exact
-/// ([`kernel::tracked`]), double-word arithmetic
-/// ([`kernel::double_word`]), then the exact oracle. The later stages,
+/// ([`stages::tracked`]), double-word arithmetic
+/// ([`stages::double_word`]), then the exact oracle. The later stages,
 /// too, assume subnormals work where an input or a result is subnormal
 /// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
 /// its undecided lanes here, and all of them when FTZ or DAZ is on.
@@ -103,8 +103,8 @@ fn escalate_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, St
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
-    let staged = (kernel::tracked(&k, o, d).map(|h| (h, Stage::Tracked)))
-        .or_else(|| kernel::double_word(&k, o, d, shrink).map(|h| (h, Stage::DoubleWord)));
+    let staged = (stages::tracked(&k, o, d).map(|h| (h, Stage::Tracked)))
+        .or_else(|| stages::double_word(&k, o, d, shrink).map(|h| (h, Stage::DoubleWord)));
     match staged {
         Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
             (exact_stage(ray, quadric), Stage::Exact)

@@ -38,7 +38,7 @@ use core::ops::{Add, Mul};
 
 /// α, β, γ of the corrected expansion, evaluated term by term, left to
 /// right, in whatever float type `T` is: `f32` here, `f64` in
-/// [`super::double`]. `k` is `[A, …, J]`; `2x` is formed as `x + x`.
+/// [`super::plain`]. `k` is `[A, …, J]`; `2x` is formed as `x + x`.
 pub(crate) fn coefficients<T>(k: [T; 10], o: [T; 3], d: [T; 3]) -> (T, T, T)
 where
     T: Copy + Add<Output = T> + Mul<Output = T>,

@@ -2,7 +2,7 @@
 //! lanes; both paths return the exact answer, correctly rounded, so they
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
-use super::{Quadric, QuadricHit, kernel, reference};
+use super::{Quadric, QuadricHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
@@ -69,7 +69,7 @@ pub struct QuadricHit4 {
 }
 
 /// Intersects four lines with four quadrics, lane by lane: the
-/// [filter](super::kernel) on four f64 lanes, and the scalar stages for any
+/// [filter](super::stages) on four f64 lanes, and the scalar stages for any
 /// lane it leaves undecided, so every lane equals
 /// [`super::reference::intersect`] bit for bit.
 ///
@@ -258,7 +258,7 @@ impl<L: Real> Decided<Pair<L>> {
 /// The filter and [`certify`] over any [`Real`].
 #[inline(always)]
 fn decide<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3]) -> Decided<L> {
-    let f = kernel::filter(k, o, d, 1.0);
+    let f = stages::filter(k, o, d, 1.0);
     let ok1 = certify(f.t1, f.r1, f.a1);
     let two = f.two & certify(f.t0, f.r0, f.a0) & ok1;
     let one = f.linear & ok1;

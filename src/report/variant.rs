@@ -30,7 +30,7 @@ pub enum Variant {
     /// The four-lane kernels (`*::x4`), four cases per packet.
     X4,
     /// The reference's formulation in plain f64, rounded to f32 once
-    /// (`*::double`).
+    /// (`*::plain`).
     F64,
     /// The exact oracle itself (`*::exact`; f64 for the camera).
     Exact,
@@ -162,10 +162,10 @@ pub(super) fn outcomes(variant: Variant, batch: &Batch) -> Vec<Outcome> {
         Variant::F64 => per_kind!(
             batch,
             variant,
-            |r, p| Outcome::hit(&plane::double::intersect(&r, &p)),
-            Outcome::hit(&sphere::double::intersect(&r, &p)),
-            Outcome::hit(&quadric::double::intersect(&r, &p)),
-            |p, px| camera_outcome(camera::double::Camera::new(&p).map(|c| c.ray(px[0], px[1])))
+            |r, p| Outcome::hit(&plane::plain::intersect(&r, &p)),
+            Outcome::hit(&sphere::plain::intersect(&r, &p)),
+            Outcome::hit(&quadric::plain::intersect(&r, &p)),
+            |p, px| camera_outcome(camera::plain::Camera::new(&p).map(|c| c.ray(px[0], px[1])))
         ),
         Variant::Exact => per_kind!(
             batch,
@@ -343,21 +343,21 @@ pub(super) fn time_pass(variant: Variant, batch: &Batch, reps: usize) -> Timed {
         }
         (Variant::F64, Batch::Plane(v)) => {
             timed!(v.len(), {
-                scalar!(v, |r, p| plane::double::intersect(&r, &p))
+                scalar!(v, |r, p| plane::plain::intersect(&r, &p))
             })
         }
         (Variant::F64, Batch::Sphere(v)) => {
             timed!(v.len(), {
-                scalar!(v, |r, s| sphere::double::intersect(&r, &s))
+                scalar!(v, |r, s| sphere::plain::intersect(&r, &s))
             })
         }
         (Variant::F64, Batch::Quadric(v)) => {
             timed!(v.len(), {
-                scalar!(v, |r, q| quadric::double::intersect(&r, &q))
+                scalar!(v, |r, q| quadric::plain::intersect(&r, &q))
             })
         }
         (Variant::F64, Batch::Camera(v)) => {
-            let v = built(v, |p| camera::double::Camera::new(p).ok());
+            let v = built(v, |p| camera::plain::Camera::new(p).ok());
             timed!(v.len(), { scalar!(&v, |c, px| c.ray(px[0], px[1])) })
         }
         (Variant::Exact, Batch::Plane(v)) => {

@@ -37,8 +37,6 @@
 
 mod error;
 mod file;
-#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
-pub mod fuzz;
 
 pub use error::SceneError;
 

@@ -30,7 +30,7 @@
 //!
 //! [`reference::intersect`](mod@reference) and [`x4`] return the exact class
 //! and both roots correctly rounded to `f32`, for every finite input. The
-//! [filter](kernel) evaluates the quadratic in f64 with the error bound
+//! [filter](stages) evaluates the quadratic in f64 with the error bound
 //! derived there and certifies what it decides; an exact tangent, a root
 //! exactly 0 or one too close to a rounding boundary goes to the exact
 //! oracle ([`exact`]). The root formulas avoid cancellation as in Ray
@@ -41,10 +41,10 @@
 //! [`condition`] and [`condition_at`] give each root's condition number,
 //! which the gate uses to judge outside kernels and the reports show.
 
-pub mod double;
 pub mod exact;
-pub mod kernel;
+pub mod plain;
 pub mod reference;
+pub mod stages;
 pub mod textbook;
 pub mod x4;
 

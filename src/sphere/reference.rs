@@ -1,8 +1,8 @@
-//! The scalar reference: the [filter](super::kernel) at `f64`, then the
+//! The scalar reference: the [filter](super::stages) at `f64`, then the
 //! later stages ([`crate::stage`]) for whatever it leaves undecided, the
 //! exact oracle last.
 
-use super::{Sphere, SphereHit, exact, kernel};
+use super::{Sphere, SphereHit, exact, stages};
 use crate::Ray;
 use crate::hit::Intersection;
 use crate::num::certify::{certify, flush_prone, needs_probe, subnormals_work};
@@ -57,7 +57,7 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
         return (exact_stage(ray, sphere), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let f = kernel::filter(
+    let f = stages::filter(
         w(ray.origin),
         w(ray.dir),
         w(sphere.center),
@@ -84,9 +84,9 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
 }
 
 /// The stages after the filter: f64 arithmetic that proves itself exact
-/// ([`kernel::tracked`]), f64 arithmetic with a tighter bound
-/// ([`kernel::tight`]), double-word arithmetic
-/// ([`kernel::double_word`]), then the exact oracle. The later stages,
+/// ([`stages::tracked`]), f64 arithmetic with a tighter bound
+/// ([`stages::tight`]), double-word arithmetic
+/// ([`stages::double_word`]), then the exact oracle. The later stages,
 /// too, assume subnormals work where an input or a result is subnormal
 /// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
 /// its undecided lanes here, and all of them when FTZ or DAZ is on.
@@ -111,9 +111,9 @@ fn escalate_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage
         f64::from(sphere.radius),
     );
     // Cheapest and likeliest first: exact data, then far spheres.
-    let staged = (kernel::tracked(o, d, c, r).map(|h| (h, Stage::Tracked)))
-        .or_else(|| kernel::tight(o, d, c, r, shrink).map(|h| (h, Stage::Tight)))
-        .or_else(|| kernel::double_word(o, d, c, r, shrink).map(|h| (h, Stage::DoubleWord)));
+    let staged = (stages::tracked(o, d, c, r).map(|h| (h, Stage::Tracked)))
+        .or_else(|| stages::tight(o, d, c, r, shrink).map(|h| (h, Stage::Tight)))
+        .or_else(|| stages::double_word(o, d, c, r, shrink).map(|h| (h, Stage::DoubleWord)));
     match staged {
         Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
             (exact_stage(ray, sphere), Stage::Exact)

@@ -2,7 +2,7 @@
 //! lanes; both paths return the exact answer, correctly rounded, so they
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
-use super::{Sphere, SphereHit, kernel, reference};
+use super::{Sphere, SphereHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
@@ -75,7 +75,7 @@ pub struct SphereHit4 {
 }
 
 /// Intersects four lines with four spheres, lane by lane: the
-/// [filter](super::kernel) on four f64 lanes, and the scalar stages for any
+/// [filter](super::stages) on four f64 lanes, and the scalar stages for any
 /// lane it leaves undecided. Every lane is the exact answer, correctly
 /// rounded, so it equals [`super::reference::intersect`] bit for bit.
 ///
@@ -226,7 +226,7 @@ impl<L: Real> Decided<Pair<L>> {
 /// The filter and [`certify`] over any [`Real`].
 #[inline(always)]
 fn decide<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L> {
-    let f = kernel::filter(o, d, c, r, 1.0);
+    let f = stages::filter(o, d, c, r, 1.0);
     let two = f.two & certify(f.t0, f.r0, f.a0) & certify(f.t1, f.r1, f.a1);
     // Disjoint enclosures are in the exact order; overlapping ones round
     // to the same f32.

@@ -136,7 +136,7 @@ pub fn parry_gate() -> Gate {
 
 /// What rayoracle's reference promises: correctly rounded, its own band.
 pub fn reference_gate() -> Gate {
-    Gate::new(Declared::exact(Semantics::NearestPositive))
+    Gate::new(Declared::faithful(Semantics::NearestPositive))
 }
 
 /// The claim under test: a sphere of radius 1 at distance 1e4 from the

@@ -37,7 +37,7 @@ fn v(u: &mut Unstructured<'_>) -> Option<Vec3> {
 /// ```
 /// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics, fuzz};
 /// let good = |r: &rayoracle::Ray, s: &rayoracle::sphere::Sphere| Answer::roots(rayoracle::sphere::reference::intersect(r, s));
-/// fuzz::sphere(&[7; 64], &Gate::new(Declared::exact(Semantics::WholeLine)), &good);
+/// fuzz::sphere(&[7; 64], &Gate::new(Declared::faithful(Semantics::WholeLine)), &good);
 /// ```
 pub fn sphere(data: &[u8], gate: &Gate, kernel: &impl SphereKernel) {
     let mut u = Unstructured::new(data);
@@ -55,7 +55,7 @@ pub fn sphere(data: &[u8], gate: &Gate, kernel: &impl SphereKernel) {
 /// ```
 /// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics, fuzz};
 /// let good = |r: &rayoracle::Ray, p: &rayoracle::plane::Plane| Answer::roots(rayoracle::plane::reference::intersect(r, p));
-/// fuzz::plane(&[3; 64], &Gate::new(Declared::exact(Semantics::WholeLine)), &good);
+/// fuzz::plane(&[3; 64], &Gate::new(Declared::faithful(Semantics::WholeLine)), &good);
 /// ```
 pub fn plane(data: &[u8], gate: &Gate, kernel: &impl PlaneKernel) {
     let mut u = Unstructured::new(data);
@@ -73,7 +73,7 @@ pub fn plane(data: &[u8], gate: &Gate, kernel: &impl PlaneKernel) {
 /// ```
 /// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics, fuzz};
 /// let good = |r: &rayoracle::Ray, q: &rayoracle::quadric::Quadric| Answer::roots(rayoracle::quadric::reference::intersect(r, q));
-/// fuzz::quadric(&[5; 80], &Gate::new(Declared::exact(Semantics::WholeLine)), &good);
+/// fuzz::quadric(&[5; 80], &Gate::new(Declared::faithful(Semantics::WholeLine)), &good);
 /// ```
 pub fn quadric(data: &[u8], gate: &Gate, kernel: &impl QuadricKernel) {
     let mut u = Unstructured::new(data);

@@ -12,7 +12,7 @@
 //! for family in strategy::families("sphere") {
 //!     let cases = strategy::sphere(&family).unwrap();
 //!     runner.run(&cases, |(ray, s)| {
-//!         let answer = rayoracle::check::gate::Answer::roots(sphere::double::intersect(&ray, &s));
+//!         let answer = rayoracle::check::gate::Answer::roots(sphere::plain::intersect(&ray, &s));
 //!         gate.judge_sphere(&ray, &s, answer).map_err(|f| TestCaseError::fail(f.to_string()))
 //!     }).unwrap();
 //! }

@@ -15,7 +15,7 @@
 //! ```
 //! use rayoracle::check::gate::{Answer, Declared, Gate, Semantics};
 //! use rayoracle::{Ray, sphere::{Sphere, reference}};
-//! let gate = Gate::new(Declared::exact(Semantics::NearestPositive)).budget(16);
+//! let gate = Gate::new(Declared::faithful(Semantics::NearestPositive)).budget(16);
 //! let k = |r: &Ray, s: &Sphere| Answer::nearest(reference::intersect(r, s), 0.0);
 //! let survey = gate.survey_sphere(&k, &gate.cases("sphere"));
 //! let far = survey.iter().find(|f| f.family == "sphere/far-tiny").unwrap();

@@ -20,7 +20,7 @@ fn answers_print_by_class() {
 /// `2^bits − 1 + κ · precision · 2²⁴`, term by term.
 #[test]
 fn allowed_ulps_term_by_term() {
-    let exact = Declared::exact(Semantics::WholeLine);
+    let exact = Declared::faithful(Semantics::WholeLine);
     // 2¹ − 1 + 4 · 2⁻⁴² · 2²⁴.
     assert_eq!(exact.allowed_ulps(4.0), 1.0 + 4.0 * 2f64.powi(-18));
     let f32 = Declared::f32(Semantics::WholeLine);
@@ -31,7 +31,7 @@ fn allowed_ulps_term_by_term() {
 
 #[test]
 fn unit_dirs_changes_only_that() {
-    let d = Declared::exact(Semantics::NearestPositive);
+    let d = Declared::faithful(Semantics::NearestPositive);
     let u = d.unit_dirs();
     assert!(!d.unit_dirs_only && u.unit_dirs_only);
     assert_eq!(
@@ -105,7 +105,7 @@ fn a_report_keeps_three_failures_a_family() {
 
 #[test]
 fn a_correct_kernel_fails_no_family() {
-    let good = |r: &Ray, s: &Sphere| Answer::nearest(sphere::double::intersect(r, s), 0.0);
+    let good = |r: &Ray, s: &Sphere| Answer::nearest(sphere::plain::intersect(r, s), 0.0);
     let r = Gate::new(Declared::f32(Semantics::NearestPositive))
         .budget(8)
         .sphere(&good);
@@ -128,7 +128,7 @@ fn random_families_are_seeded_per_kind() {
     );
     // A random camera is kept only if it builds.
     assert!((1..=3).contains(&count("camera")));
-    let seed = Gate::new(Declared::exact(Semantics::WholeLine)).seed;
+    let seed = Gate::new(Declared::faithful(Semantics::WholeLine)).seed;
     let nth = |kind: &str, seed: u64, i: usize| eval_line(&random_cases(kind, seed, 1)[i].1, "f");
     assert_eq!(
         [
@@ -381,7 +381,7 @@ fn a_steep_ray_is_outside_the_plane_band() {
         Plane::new(Vec3::ZERO, Vec3::Y),
     );
     assert!(
-        !exact_plane(&Declared::exact(Semantics::WholeLine), &ray, &p)
+        !exact_plane(&Declared::faithful(Semantics::WholeLine), &ray, &p)
             .unwrap()
             .in_band
     );

@@ -4,7 +4,7 @@
 //!
 //! # The bound
 //!
-//! In the notation of [`crate::sphere::kernel`] (`u = 2⁻⁵³`, `γₙ`, hats for
+//! In the notation of [`crate::sphere::stages`] (`u = 2⁻⁵³`, `γₙ`, hats for
 //! computed values, `E` for error bounds), with f32 inputs exact in f64:
 //!
 //! * `ŵᵢ = fl(aᵢ − oᵢ)`, one rounding; `num = Σ ŵᵢnᵢ`: a rounded product
@@ -56,7 +56,7 @@ pub struct Filtered<L: Real> {
 /// normal `n`, every bound multiplied by `shrink` (1 in the kernels).
 ///
 /// ```
-/// use rayoracle::plane::kernel::filter;
+/// use rayoracle::plane::stages::filter;
 /// let f = filter::<f64>([0.0; 3], [0.0, 0.0, 2.0], [0.0, 0.0, 3.0], [0.0, 0.0, 1.0], 1.0);
 /// assert!(f.hit && f.t == 1.5);
 /// let f = filter::<f64>([0.0; 3], [1.0, 0.0, 0.0], [0.0, 0.0, 3.0], [0.0, 0.0, 1.0], 1.0);
@@ -99,7 +99,7 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) 
 /// or the root sits next to an f32 rounding boundary.
 ///
 /// ```
-/// use rayoracle::plane::{PlaneHit, kernel::tracked};
+/// use rayoracle::plane::{PlaneHit, stages::tracked};
 /// // d·n = 1 − 1 = 0 term by term, and (a − o)·n = 0: in the plane.
 /// let h = tracked([0.0, 0.0, 1.0], [1.0, 1.0, 0.0], [0.0; 3], [1.0, -1.0, 0.0]);
 /// assert_eq!(h, Some(PlaneHit::InPlane));
@@ -134,7 +134,7 @@ pub fn tracked(o: [f64; 3], d: [f64; 3], a: [f64; 3], n: [f64; 3]) -> Option<Pla
 /// their bounds ([`quotient`]). Every bound is multiplied by `shrink`.
 ///
 /// ```
-/// use rayoracle::plane::{PlaneHit, kernel::{double_word, tracked}};
+/// use rayoracle::plane::{PlaneHit, stages::{double_word, tracked}};
 /// // d·n = 0.1f32·0.3f32 − 0.3f32·0.1f32 = 0 exactly; a − o rounds in f64.
 /// let (x, y) = (0.1f32 as f64, 0.3f32 as f64);
 /// let (o, a) = ([1e-30f32 as f64, 0.0, 0.0], [1e30f32 as f64, 0.0, 0.0]);

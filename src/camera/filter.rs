@@ -38,7 +38,7 @@ const K: f64 = (BASIS_REL + 3.0 * U) * (1.0 + 1.0 / (1u64 << 50) as f64) * SLACK
 /// needed).
 ///
 /// ```
-/// use rayoracle::camera::kernel::component;
+/// use rayoracle::camera::filter::component;
 /// let (r, ok) = component(-1.0f64, 0.25, 0.5, 1.0, 0.0, 1.0);
 /// assert!(ok && r == -0.75);
 /// // Both terms exactly 0: dᵢ itself, −0 kept.
@@ -59,7 +59,7 @@ pub fn component<L: Real>(d: L, bx: L, by: L, nx: L, ny: L, shrink: f64) -> (L, 
 /// `2p + 1 − res`, exact in f64.
 ///
 /// ```
-/// use rayoracle::camera::kernel::numerator;
+/// use rayoracle::camera::filter::numerator;
 /// assert_eq!(numerator(0, 4), -3.0);
 /// ```
 #[inline(always)]
@@ -71,7 +71,7 @@ pub fn numerator(p: u32, res: u32) -> f64 {
 /// for code that wants it as a number (the kernels never round it).
 ///
 /// ```
-/// use rayoracle::camera::kernel::offset;
+/// use rayoracle::camera::filter::offset;
 /// assert_eq!(offset(0, 4), -0.75);
 /// ```
 #[inline(always)]

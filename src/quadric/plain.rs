@@ -35,7 +35,7 @@ use crate::Ray;
 /// `f64`, each root rounded once to `f32`.
 ///
 /// ```
-/// use rayoracle::{Ray, quadric::{Quadric, QuadricHit, exact, double::intersect}};
+/// use rayoracle::{Ray, quadric::{Quadric, QuadricHit, exact, plain::intersect}};
 /// use glam::Vec3;
 /// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
 /// let across = Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X);

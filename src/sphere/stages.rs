@@ -135,7 +135,7 @@ fn dots<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Dots<L> {
 /// show that a bound too small is caught).
 ///
 /// ```
-/// use rayoracle::sphere::kernel::filter;
+/// use rayoracle::sphere::stages::filter;
 /// let f = filter::<f64>([0.0, 0.0, -5.0], [0.0, 0.0, 1.0], [0.0; 3], 1.0, 1.0);
 /// assert!(f.two && !f.none);
 /// assert_eq!((f.t0, f.t1), (6.0, 4.0)); // q/a and c/q
@@ -232,7 +232,7 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Fi
 /// squares and products of the bound may underflow, which `η` covers.
 ///
 /// ```
-/// use rayoracle::sphere::{SphereHit, kernel::{filter, tight}};
+/// use rayoracle::sphere::{SphereHit, stages::{filter, tight}};
 /// // R = 1 at 10⁷ along the axis: the filter cannot certify the roots.
 /// let (o, d) = ([0.5, 0.0, -1e7], [0.0, 0.0, 1.0]);
 /// let f = filter::<f64>(o, d, [0.0; 3], 1.0, 1.0);
@@ -294,7 +294,7 @@ pub fn tight(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64, shrink: f64) -> Opti
 /// rounding boundary.
 ///
 /// ```
-/// use rayoracle::sphere::{SphereHit, kernel::tracked};
+/// use rayoracle::sphere::{SphereHit, stages::tracked};
 /// // Grazing the unit sphere at (0, 1, 0) from z = −5: Δ = 0 exactly.
 /// assert_eq!(tracked([0.0, 1.0, -5.0], [0.0, 0.0, 1.0], [0.0; 3], 1.0), Some(SphereHit::Tangent(5.0)));
 /// ```
@@ -340,7 +340,7 @@ pub fn tracked(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Option<SphereHi
 /// `shrink`. `None` where the class or a root is undecided.
 ///
 /// ```
-/// use rayoracle::sphere::{SphereHit, kernel::{double_word, tracked}};
+/// use rayoracle::sphere::{SphereHit, stages::{double_word, tracked}};
 /// // Grazing R = 3 at (0, 3, 0) from z = 0.1f32 along 0.1f32: Δ = 0, but
 /// // b² and ac have 96 significant bits, so f64 rounds them.
 /// let (o, d) = ([0.0, 3.0, 0.1f32 as f64], [0.0, 0.0, 0.1f32 as f64]);

@@ -31,7 +31,7 @@ use crate::Ray;
 /// plain `f64`, each root rounded once to `f32`.
 ///
 /// ```
-/// use rayoracle::{Ray, sphere::{Sphere, SphereHit, exact, double::intersect}};
+/// use rayoracle::{Ray, sphere::{Sphere, SphereHit, exact, plain::intersect}};
 /// use glam::Vec3;
 /// let unit = Sphere::new(Vec3::ZERO, 1.0);
 /// let r = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::new(0.0, 0.0, 2.0));

@@ -1,8 +1,8 @@
 //! The `scene` fuzz target's check: any bytes, read as a scene file.
 
-use super::Scene;
-use crate::fuzz::Failure;
+use super::Failure;
 use crate::render::{Channels, Frame, Path, Plan, render};
+use crate::scene::Scene;
 
 fn fail(what: String) -> Result<(), Failure> {
     Err(Failure(what))
@@ -17,7 +17,7 @@ pub const FUZZ_MAX_PIXELS: u32 = 24 * 16;
 /// clamped to 24 × 16.
 ///
 /// ```
-/// use rayoracle::scene::fuzz::fuzz_size;
+/// use rayoracle::fuzz::scene::fuzz_size;
 /// assert_eq!(fuzz_size([24, 16]), [24, 16]);
 /// assert_eq!(fuzz_size([1920, 1080]), [24, 16]);
 /// assert_eq!(fuzz_size([100, 1]), [100, 1]);
@@ -33,7 +33,7 @@ pub fn fuzz_size([w, h]: [u32; 2]) -> [u32; 2] {
 
 /// A rejection must say what is wrong, and any line and column it gives
 /// must be inside `text` (lines from 1, columns from 1).
-fn well_placed(text: &str, e: &super::SceneError) -> Result<(), Failure> {
+fn well_placed(text: &str, e: &crate::scene::SceneError) -> Result<(), Failure> {
     if e.message.is_empty() {
         return fail(format!("an error without a message: {e:?}"));
     }
@@ -55,7 +55,7 @@ fn well_placed(text: &str, e: &super::SceneError) -> Result<(), Failure> {
 /// and through the un-specialised plan, and encode to PNG.
 ///
 /// ```
-/// use rayoracle::scene::fuzz::check;
+/// use rayoracle::fuzz::scene::check;
 /// assert!(check(br#"{"camera": {"position": [0, 0, 0], "dir": [0, 0, -1], "up": [0, 1, 0],
 ///     "angle": 1, "res": [4, 3]}, "spheres": [{"id": 1, "center": [0, 0, -3], "radius": 1}]}"#).is_ok());
 /// assert!(check(b"\xff{").is_ok());
@@ -117,9 +117,9 @@ pub(crate) fn check_with(data: &[u8], render: fn(&Plan, Path) -> Frame) -> Resul
 
 #[cfg(test)]
 mod tests {
-    use super::super::SceneError;
     use super::{check_with, fuzz_size, well_placed};
     use crate::render::{Frame, Path, Plan, render};
+    use crate::scene::SceneError;
     use std::cell::Cell;
 
     const SCENE: &[u8] = br#"{"camera": {"position": [0, 0, 0], "dir": [0, 0, -1],

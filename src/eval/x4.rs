@@ -75,7 +75,7 @@ fn packet<T: Copy>(case: T, decoys: [T; 3], lane: usize) -> [T; 4] {
 /// use rayoracle::eval::Outcome;
 /// use rayoracle::hit::Roots;
 /// let c = parse_line(r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap();
-/// assert_eq!(rayoracle::x4_column::run(&c.case), Outcome::Hit { class: "two", roots: Roots::two(4.0, 6.0) });
+/// assert_eq!(rayoracle::eval::x4::run(&c.case), Outcome::Hit { class: "two", roots: Roots::two(4.0, 6.0) });
 /// # }
 /// ```
 pub fn run(case: &Case) -> Outcome {

@@ -4,7 +4,7 @@
 //!
 //! # The bound
 //!
-//! In the notation of [`crate::sphere::kernel`] (`u = 2⁻⁵³`, `γₙ`, hats for
+//! In the notation of [`crate::sphere::stages`] (`u = 2⁻⁵³`, `γₙ`, hats for
 //! computed values, `E` for error bounds), with f32 inputs exact in f64.
 //! Every term of α, β and γ is a coefficient times one or two inputs: `k·x`
 //! is exact (two f32 values), `k·x·y` rounds once, and the factor 2 of β's
@@ -156,7 +156,7 @@ fn terms<L: Copy + core::ops::Add<Output = L>>(
 /// of its terms' magnitudes.
 ///
 /// ```
-/// use rayoracle::quadric::kernel::coefficients;
+/// use rayoracle::quadric::stages::coefficients;
 /// // The unit sphere from (0, 0, −5) along z: t² − 10t + 24.
 /// let k = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
 /// let [a, b, c] = coefficients::<f64>(&k, [0.0, 0.0, -5.0], [0.0, 0.0, 1.0]);
@@ -172,7 +172,7 @@ pub fn coefficients<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3]) -> [(L, L); 3] {
 /// multiplied by `shrink` (1 in the kernels).
 ///
 /// ```
-/// use rayoracle::quadric::kernel::filter;
+/// use rayoracle::quadric::stages::filter;
 /// let cyl = [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
 /// let f = filter::<f64>(&cyl, [-5.0, 0.0, 0.0], [1.0, 0.0, 0.0], 1.0);
 /// assert!(f.two && (f.t0, f.t1) == (6.0, 4.0));
@@ -251,7 +251,7 @@ pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filter
 /// an operation rounded or a root sits next to an f32 rounding boundary.
 ///
 /// ```
-/// use rayoracle::quadric::{QuadricHit, kernel::tracked};
+/// use rayoracle::quadric::{QuadricHit, stages::tracked};
 /// // The cone x² + y² − z² = 0 through its apex: a double root at 0.
 /// let cone = [1.0, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
 /// assert_eq!(tracked(&cone, [-1.0, 0.0, -2.0], [1.0, 0.0, 2.0]), Some(QuadricHit::One(1.0)));
@@ -336,7 +336,7 @@ fn pairs<const N: usize>(x: &[f64; N]) -> [Pair; N] {
 /// by `shrink`.
 ///
 /// ```
-/// use rayoracle::quadric::{QuadricHit, kernel::{double_word, tracked}};
+/// use rayoracle::quadric::{QuadricHit, stages::{double_word, tracked}};
 /// // The double plane (x − z)² = x² − 2xz + z² = 0, crossed at 0.1f32
 /// // along (0.3f32, 0, 0.1f32): Δ = 0 exactly, but β² rounds in f64.
 /// let k = [1.0, 0.0, 1.0, 0.0, -2.0, 0.0, 0.0, 0.0, 0.0, 0.0];

@@ -8,7 +8,7 @@
 //!
 //! // A careful f32 kernel: nearest t > 0, as a renderer wants it.
 //! fn my_sphere(ray: &Ray, s: &Sphere) -> Answer {
-//!     Answer::nearest(rayoracle::sphere::double::intersect(ray, s), 0.0)
+//!     Answer::nearest(rayoracle::sphere::plain::intersect(ray, s), 0.0)
 //! }
 //! let gate = Gate::new(Declared::f32(Semantics::NearestPositive)).budget(64);
 //! let report = gate.sphere(&my_sphere);
@@ -139,7 +139,7 @@ pub enum Semantics {
 /// use rayoracle::check::gate::{Declared, Semantics};
 /// let d = Declared::f32(Semantics::WholeLine);
 /// assert_eq!(d.bits, 2.0);
-/// assert!(Declared::exact(Semantics::WholeLine).band_scale == 1.0);
+/// assert!(Declared::faithful(Semantics::WholeLine).band_scale == 1.0);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Declared {
@@ -168,9 +168,9 @@ impl Declared {
         }
     }
 
-    /// A kernel correctly rounded up to one ulp, with about `2⁻⁴²` of
-    /// working precision and the unit band.
-    pub fn exact(semantics: Semantics) -> Declared {
+    /// A faithfully rounded kernel: every root within one ulp of the exact
+    /// one, with about `2⁻⁴²` of working precision and the unit band.
+    pub fn faithful(semantics: Semantics) -> Declared {
         Declared {
             semantics,
             bits: 1.0,
@@ -492,7 +492,7 @@ impl Gate {
     /// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics};
     /// use rayoracle::{Ray, plane::{Plane, reference}};
     /// let k = |r: &Ray, p: &Plane| Answer::roots(reference::intersect(r, p));
-    /// Gate::new(Declared::exact(Semantics::WholeLine)).budget(32).plane(&k).assert_ok();
+    /// Gate::new(Declared::faithful(Semantics::WholeLine)).budget(32).plane(&k).assert_ok();
     /// ```
     pub fn plane(&self, k: &impl PlaneKernel) -> Report {
         self.run("plane", |c| match c {

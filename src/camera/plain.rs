@@ -27,7 +27,7 @@ use glam::DVec3;
 /// A camera with its basis in `f64`.
 ///
 /// ```
-/// use rayoracle::camera::{CameraParams, double::Camera};
+/// use rayoracle::camera::{CameraParams, plain::Camera};
 /// use glam::{DVec3, Vec3};
 /// let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, std::f32::consts::FRAC_PI_2, [2, 2]);
 /// let cam = Camera::new(&p).unwrap();
@@ -52,7 +52,7 @@ impl Camera {
     /// builds the `f64` basis.
     ///
     /// ```
-    /// use rayoracle::camera::{CameraError, CameraParams, double::Camera};
+    /// use rayoracle::camera::{CameraError, CameraParams, plain::Camera};
     /// use glam::Vec3;
     /// let bad = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 4.0, [4, 4]);
     /// assert_eq!(Camera::new(&bad).unwrap_err(), CameraError::AngleOutOfRange(4.0));
@@ -83,7 +83,7 @@ impl Camera {
     /// component rounded once to `f32`.
     ///
     /// ```
-    /// use rayoracle::camera::{CameraParams, double::Camera, exact};
+    /// use rayoracle::camera::{CameraParams, plain::Camera, exact};
     /// use glam::Vec3;
     /// let p = CameraParams::new(Vec3::ONE, Vec3::new(0.3, -0.2, -1.0), Vec3::Y, 1.0, [640, 480]);
     /// let cam = Camera::new(&p).unwrap();

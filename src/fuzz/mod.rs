@@ -638,9 +638,11 @@ pub const TARGETS: &[(&str, Check)] = &[
     ("quadric", quadric),
     ("eval_line", eval_line),
     #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
-    ("scene", crate::scene::fuzz::check),
+    ("scene", scene::check),
 ];
 
+#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+pub mod scene;
 #[cfg(test)]
 mod wrong_kernels;
 

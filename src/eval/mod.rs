@@ -23,6 +23,8 @@
 //! [`evaluate`] gives the typed [`LineReport`], [`eval_line`] its JSON, and
 //! [`Summary`] tallies reports into a table.
 
+pub mod x4;
+
 use crate::Ray;
 use crate::case::{Case, CaseError, KINDS, parse_line};
 use crate::hit::{Intersection, Roots};
@@ -107,7 +109,7 @@ impl Implementation {
                     Err(e) => Outcome::Error(e.to_string()),
                 },
             },
-            Implementation::X4 => crate::x4_column::run(case),
+            Implementation::X4 => x4::run(case),
         }
     }
 }

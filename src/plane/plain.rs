@@ -4,7 +4,7 @@
 //! **A baseline for `rayoracle report`, not an oracle and not for
 //! production.** It answers "what does the reference's certification
 //! cost?": the same arithmetic as the reference's
-//! [filter](super::kernel) (the difference `a − o`, the two dot products,
+//! [filter](super::stages) (the difference `a − o`, the two dot products,
 //! one quotient), without the error bound. A product of two `f32`s
 //! (`10⁻⁹⁰` to `10⁷⁷`) is always in `f64`'s range.
 //!
@@ -25,7 +25,7 @@ use crate::Ray;
 /// otherwise; else `Hit((num/dn) as f32)`.
 ///
 /// ```
-/// use rayoracle::{Ray, plane::{Plane, PlaneHit, double::intersect}};
+/// use rayoracle::{Ray, plane::{Plane, PlaneHit, plain::intersect}};
 /// use glam::Vec3;
 /// let ground = Plane::new(Vec3::ZERO, Vec3::Y);
 /// let ray = Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::new(1.0, -4.0, 0.0));
