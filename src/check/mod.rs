@@ -1,38 +1,34 @@
 //! The judge of rayoracle's own kernels: whether an answer (the scalar
 //! reference's, x4's, or any other implementation's) is the exact answer,
 //! against the exact oracle. Property tests, the fixture harness and fuzzers
-//! all decide here, so there is one definition of "correct". Outside
-//! kernels are judged with declared tolerances by [`gate`].
+//! all decide here.
 //!
-//! # The rules
+//! The rules are [`rules`], shared with [`gate`], which judges outside
+//! kernels by the tolerance they declare. Here every answer is held to the
+//! strictest declaration, [`rules::Declared::correctly_rounded`]: the exact
+//! class, every root the exact root correctly rounded to `f32` bit for bit
+//! (`−0` is not `+0`), and every camera direction component the oracle's
+//! bits, since the reference and x4 are correctly rounded on every finite
+//! input. A camera must fail to build exactly when the oracle's does, with
+//! the same [`CameraError`]. Where an input is NaN or ±∞ the oracle has no
+//! answer and nothing is checked ([`Status::NonFinite`]).
 //!
-//! * **Non-finite inputs.** If the exact oracle returns
-//!   [`NonFinite`](crate::exact::NonFinite) (an input is NaN or ±∞), nothing
-//!   is checked: the report has [`Status::NonFinite`] and only says what the
-//!   candidate answered.
-//! * **Plane, sphere, quadric: the oracle's bits.** The class must be the
-//!   exact class, and every root the exact root correctly rounded to `f32`,
-//!   bit for bit (so `−0` is not `+0`). There is no band and no tolerance:
-//!   the reference and x4 are correctly rounded on every finite input. The
-//!   report also carries the exact classification margin (`d·n`, `aΔ` or
-//!   `β² − 4αγ`) and each root's condition number κ
-//!   ([`plane_condition`], [`sphere::condition_at`], and the quadric's), for
-//!   the reports that show how hard a case is.
-//! * **Camera.** Construction must fail exactly when the oracle's does, with
-//!   the same [`CameraError`]. Otherwise the origin must be the camera
-//!   position bit for bit, and each direction component the oracle's bits:
-//!   the reference and x4 cameras are correctly rounded too. (The gate,
-//!   `check::gate`, judges other cameras with an allowance in ulps of `Sᵢ`,
-//!   [`camera::component_scale`].)
+//! What this module adds is the report: a [`CaseReport`] for an acceptable
+//! answer, with the exact classification margin and each root's κ for the
+//! reports that show how hard a case is, and a [`Violation`] with the
+//! numbers for one that is not.
 
 #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 pub mod gate;
+pub mod rules;
+
+pub use rules::ComponentCheck;
+#[cfg(feature = "plane")]
+pub use rules::plane_condition;
 
 use crate::Ray;
 use crate::camera::{self, CameraError, CameraParams};
 use crate::case::Case;
-#[cfg(feature = "plane")]
-use crate::exact::dyadic::{dot, sub3, vec3};
 #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 use crate::hit::Intersection;
 #[cfg(feature = "plane")]
@@ -41,8 +37,8 @@ use crate::plane::{self, Plane, PlaneHit};
 use crate::quadric::{self, Quadric, QuadricHit};
 #[cfg(feature = "sphere")]
 use crate::sphere::{self, Sphere, SphereHit};
-use crate::ulp::ulp_of;
 use core::fmt;
+use rules::{Declared, Semantics};
 
 /// How a case was judged. Every status except [`Status::Checked`] means
 /// that part of the answer was, by the rules, not checked.
@@ -97,44 +93,7 @@ impl RootCheck {
     /// assert!(!r.ok());
     /// ```
     pub fn ok(&self) -> bool {
-        self.got.to_bits() == self.exact.to_bits()
-    }
-}
-
-/// One camera direction component compared with the oracle's.
-///
-/// ```
-/// use rayoracle::check::ComponentCheck;
-/// let c = ComponentCheck { axis: 0, exact: 1.0, got: 1.0, scale: 1.0, err_ulps: 0.0, bound: 4.0 };
-/// assert!(c.ok());
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ComponentCheck {
-    /// 0, 1 or 2 for x, y, z.
-    pub axis: usize,
-    /// The oracle's component (rounded to f32).
-    pub exact: f32,
-    /// The candidate's component.
-    pub got: f32,
-    /// `Sᵢ`, the size of the terms the component is made of.
-    pub scale: f64,
-    /// `|got − exact| / ulp_of(Sᵢ)`; where the bits differ but the values
-    /// do not (`−0` against `+0`), the least positive f64.
-    pub err_ulps: f64,
-    /// The allowance in ulps of `Sᵢ`: 0 in [`check_camera`].
-    pub bound: f64,
-}
-
-impl ComponentCheck {
-    /// Whether the component is within its bound (NaN error is not).
-    ///
-    /// ```
-    /// use rayoracle::check::ComponentCheck;
-    /// let c = ComponentCheck { axis: 2, exact: 1.0, got: f32::NAN, scale: 1.0, err_ulps: f64::NAN, bound: 4.0 };
-    /// assert!(!c.ok());
-    /// ```
-    pub fn ok(&self) -> bool {
-        self.err_ulps <= self.bound
+        rules::root_within(self.exact, self.got, 0.0)
     }
 }
 
@@ -332,40 +291,6 @@ pub fn reference_case(case: &Case) -> Result<CaseReport, Violation> {
     }
 }
 
-/// The plane root's condition number, as the plane module documents it:
-/// `κ = Σ|dᵢnᵢ| / |d·n| + Σ|(aᵢ−oᵢ)nᵢ| / |(a−o)·n|`, with the two dot
-/// products exact (a `0/0` term counts as 0, `x/0` as ∞). NaN for a
-/// non-finite input.
-///
-/// ```
-/// use rayoracle::check::plane_condition;
-/// use rayoracle::{Ray, plane::Plane};
-/// use glam::Vec3;
-/// let k = plane_condition(&Ray::new(Vec3::ZERO, Vec3::Z), &Plane::new(Vec3::Z, Vec3::Z));
-/// assert_eq!(k, 2.0);
-/// ```
-#[cfg(feature = "plane")]
-pub fn plane_condition(ray: &Ray, p: &Plane) -> f64 {
-    let (Ok(o), Ok(d), Ok(a), Ok(n)) = (
-        vec3(ray.origin.to_array()),
-        vec3(ray.dir.to_array()),
-        vec3(p.point.to_array()),
-        vec3(p.normal.to_array()),
-    ) else {
-        return f64::NAN;
-    };
-    let den = dot(&d, &n).to_f64().abs();
-    let num = dot(&sub3(&a, &o), &n).to_f64().abs();
-    let sd: f64 = (0..3)
-        .map(|i| (ray.dir[i] as f64 * p.normal[i] as f64).abs())
-        .sum();
-    let sn: f64 = (0..3)
-        .map(|i| ((p.point[i] as f64 - ray.origin[i] as f64) * p.normal[i] as f64).abs())
-        .sum();
-    let ratio = |s: f64, x: f64| if s == 0.0 { 0.0 } else { s / x };
-    ratio(sd, den) + ratio(sn, num)
-}
-
 /// A report with nothing compared yet.
 fn report(kind: &'static str, exact_class: &'static str, got_class: &'static str) -> CaseReport {
     CaseReport {
@@ -379,39 +304,49 @@ fn report(kind: &'static str, exact_class: &'static str, got_class: &'static str
     }
 }
 
-/// The classes must be equal, then every root the exact one's bits.
+/// The strictest declaration, which rayoracle's own kernels keep.
+fn strict() -> Declared {
+    Declared::correctly_rounded(Semantics::WholeLine)
+}
+
+/// The report of `got` against the exact answer by the shared rules under
+/// [`strict`]: a root violation where a root is not the exact one's bits
+/// (a NaN, or out of order), a class violation otherwise.
 #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
-fn exact_answer(
+fn judged(
     mut r: CaseReport,
-    exact: &[f32],
-    got: &[f32],
-    kappa: impl Fn(f32) -> f64,
+    exact: &rules::Exact,
+    got: impl Intersection,
 ) -> Result<CaseReport, Violation> {
-    if r.exact_class != r.got_class {
-        return Err(Violation::Class {
+    use rules::Fault;
+    r.margin = exact.margin;
+    let j = rules::judge(&strict(), exact, &rules::Answer::roots(got));
+    let check = |x: &rules::RootJudged| RootCheck {
+        exact: x.exact,
+        got: x.got,
+        ulps: x.ulps,
+        kappa: x.kappa,
+    };
+    let wrong_root = j.roots.iter().find(|x| !x.ok());
+    match (j.fault, wrong_root) {
+        (None, _) => {
+            r.roots = j.roots.iter().map(check).collect();
+            Ok(r)
+        }
+        (Some(Fault::Root(_) | Fault::NanRoot | Fault::NotAscending), Some(x)) => {
+            Err(Violation::Root {
+                kind: r.kind,
+                index: x.index,
+                check: check(x),
+            })
+        }
+        (Some(_), _) => Err(Violation::Class {
             kind: r.kind,
             exact: r.exact_class,
             got: r.got_class,
             margin: r.margin,
-        });
+        }),
     }
-    for (index, (&e, &g)) in exact.iter().zip(got).enumerate() {
-        let check = RootCheck {
-            exact: e,
-            got: g,
-            ulps: crate::ulp::ulps(e, g),
-            kappa: kappa(e),
-        };
-        r.roots.push(check);
-        if !check.ok() {
-            return Err(Violation::Root {
-                kind: r.kind,
-                index,
-                check,
-            });
-        }
-    }
-    Ok(r)
 }
 
 /// Judges an answer to a ray–plane case: it must be the exact answer, bit
@@ -428,18 +363,12 @@ fn exact_answer(
 /// ```
 #[cfg(feature = "plane")]
 pub fn check_plane(ray: &Ray, p: &Plane, got: PlaneHit) -> Result<CaseReport, Violation> {
-    let Ok(exact) = plane::exact::intersect(ray, p) else {
+    let Some((exact, e)) = rules::plane(ray, p) else {
         let mut r = report("plane", "non_finite", got.class());
         r.status = Status::NonFinite;
         return Ok(r);
     };
-    let mut r = report("plane", exact.class(), got.class());
-    // Finite inputs, so the exact d·n exists.
-    let d = vec3(ray.dir.to_array()).expect("finite");
-    let n = vec3(p.normal.to_array()).expect("finite");
-    r.margin = dot(&d, &n).to_f64();
-    let k = plane_condition(ray, p);
-    exact_answer(r, exact.roots().as_slice(), got.roots().as_slice(), |_| k)
+    judged(report("plane", exact.class(), got.class()), &e, got)
 }
 
 /// Judges an answer to a ray–sphere case: it must be the exact answer, bit
@@ -477,16 +406,8 @@ fn check_sphere_against(
     q: &crate::exact::Quadratic,
     exact: SphereHit,
 ) -> Result<CaseReport, Violation> {
-    let mut r = report("sphere", exact.class(), got.class());
-    r.margin = (&q.alpha * &q.discriminant()).mul_pow2(-2).to_f64();
-    let tangent = matches!(exact, SphereHit::Tangent(_));
-    exact_answer(r, exact.roots().as_slice(), got.roots().as_slice(), |t| {
-        if tangent {
-            f64::INFINITY
-        } else {
-            sphere::condition_at(ray, s, t as f64)
-        }
-    })
+    let e = rules::sphere_given(ray, s, q, exact);
+    judged(report("sphere", exact.class(), got.class()), &e, got)
 }
 
 /// Judges an answer to a ray–quadric case: it must be the exact answer, bit
@@ -522,46 +443,8 @@ fn check_quadric_against(
     eq: &crate::exact::Quadratic,
     exact: QuadricHit,
 ) -> Result<CaseReport, Violation> {
-    let mut r = report("quadric", exact.class(), got.class());
-    r.margin = eq.discriminant().to_f64();
-    let double = matches!(exact, QuadricHit::One(_)) && !eq.alpha.is_zero();
-    exact_answer(r, exact.roots().as_slice(), got.roots().as_slice(), |t| {
-        if double {
-            f64::INFINITY
-        } else {
-            quadric_kappa_at(ray, q, eq, t as f64)
-        }
-    })
-}
-
-/// [`quadric::condition`]'s κ, `(3Σ|α terms| t² + 3Σ|β terms| |t| +
-/// 3Σ|γ terms|) / (|2αt + β| |t|)`, at a given root `t`, with the exact α
-/// and β in `p'(t) = 2αt + β`.
-#[cfg(feature = "quadric")]
-fn quadric_kappa_at(ray: &Ray, q: &Quadric, eq: &crate::exact::Quadratic, t: f64) -> f64 {
-    let (at, bt, gt) = quadric::terms(ray, q);
-    let abs_sum = |xs: &[f64]| xs.iter().map(|x| x.abs()).sum::<f64>();
-    let (sa, sb, sg) = (abs_sum(&at), abs_sum(&bt), abs_sum(&gt));
-    if t == 0.0 || !t.is_finite() {
-        // A zero root is exact when γ has no terms at all.
-        return if t == 0.0 && sg == 0.0 {
-            0.0
-        } else {
-            f64::INFINITY
-        };
-    }
-    let dp = (2.0 * eq.alpha.to_f64() * t + eq.beta.to_f64()).abs();
-    (3.0 * sa * t * t + 3.0 * sb * t.abs() + 3.0 * sg) / (dp * t.abs())
-}
-
-/// Whether two camera errors are the same (NaN angles compare by bits).
-fn same_error(a: &CameraError, b: &CameraError) -> bool {
-    match (a, b) {
-        (CameraError::AngleOutOfRange(x), CameraError::AngleOutOfRange(y)) => {
-            x.to_bits() == y.to_bits()
-        }
-        _ => a == b,
-    }
+    let e = rules::quadric_given(ray, q, eq, exact);
+    judged(report("quadric", exact.class(), got.class()), &e, got)
 }
 
 /// Judges an answer (`got`, the ray for `pixel` or a construction error) to
@@ -583,55 +466,29 @@ pub fn check_camera(
     pixel: [u32; 2],
     got: Result<Ray, CameraError>,
 ) -> Result<CaseReport, Violation> {
+    use rules::CameraFault::*;
     let exact = camera::exact::ray(p, pixel[0], pixel[1]);
     let class = |x: &Result<Ray, CameraError>| if x.is_ok() { "ray" } else { "error" };
     let mut r = report("camera", class(&exact), class(&got));
-    let (exact, got) = match (exact, got) {
-        (Ok(e), Ok(g)) => (e, g),
-        (Err(e), Err(g)) if same_error(&e, &g) => {
-            r.status = Status::Rejected;
-            return Ok(r);
+    let j = rules::judge_camera(&strict(), p, pixel, &exact, &got.map_err(Some));
+    match (j.fault, got) {
+        (None, _) => {
+            if exact.is_err() {
+                r.status = Status::Rejected;
+            }
+            r.components = j.components;
+            Ok(r)
         }
-        (e, g) => {
-            return Err(Violation::Construction {
-                exact: e.err(),
-                got: g.err(),
-            });
-        }
-    };
-    let bits = |v: glam::Vec3| v.to_array().map(f32::to_bits);
-    if bits(got.origin) != bits(p.position) {
-        return Err(Violation::Origin {
+        (Some(Origin), Ok(g)) => Err(Violation::Origin {
             exact: p.position.to_array(),
-            got: got.origin.to_array(),
-        });
+            got: g.origin.to_array(),
+        }),
+        (Some(Component(c)), _) => Err(Violation::Component(c)),
+        (Some(_), got) => Err(Violation::Construction {
+            exact: exact.err(),
+            got: got.err(),
+        }),
     }
-    // Sᵢ, for the report: how far off a wrong component is.
-    let cam = p
-        .build()
-        .expect("the oracle built it, so the reference does");
-    let scale = camera::component_scale(&cam, pixel[0], pixel[1]);
-    for (axis, &scale) in scale.iter().enumerate() {
-        let (e, g) = (exact.dir[axis], got.dir[axis]);
-        let err_ulps = if e.to_bits() == g.to_bits() {
-            0.0
-        } else {
-            ((g as f64 - e as f64).abs() / ulp_of(scale)).max(f64::MIN_POSITIVE)
-        };
-        let c = ComponentCheck {
-            axis,
-            exact: e,
-            got: g,
-            scale,
-            err_ulps,
-            bound: 0.0,
-        };
-        r.components.push(c);
-        if !c.ok() {
-            return Err(Violation::Component(c));
-        }
-    }
-    Ok(r)
 }
 
 /// The quadric class that corresponds to a sphere class (tangent ↔ one).
@@ -752,30 +609,6 @@ fn sphere_as_quadric_with(
 mod tests {
     use super::*;
 
-    /// κ at a root by hand: the unit sphere as a quadric, o = (0, 0, −5),
-    /// d = z. The term sums are 1 (α), 10 (β) and 25 + 1 (γ), and
-    /// p'(t) = 2t − 10, so κ(4) = (48 + 120 + 78) / (2·4) and κ(6) =
-    /// (108 + 180 + 78) / (2·6). A zero root is exact only without γ terms.
-    #[cfg(feature = "quadric")]
-    #[test]
-    fn quadric_kappa_at_a_root_by_hand() {
-        let q = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
-        let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
-        let eq = quadric::exact::quadratic(&ray, &q).unwrap();
-        assert_eq!(quadric_kappa_at(&ray, &q, &eq, 4.0), 30.75);
-        assert_eq!(quadric_kappa_at(&ray, &q, &eq, 6.0), 30.5);
-        assert_eq!(
-            quadric_kappa_at(&ray, &q, &eq, f64::INFINITY),
-            f64::INFINITY
-        );
-        assert_eq!(quadric_kappa_at(&ray, &q, &eq, 0.0), f64::INFINITY);
-        // A cone x² + y² − z² = 0 from its apex: no γ term at all.
-        let cone = Quadric::new([1.0, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
-        let apex = Ray::new(Vec3::ZERO, Vec3::new(1.0, 0.0, 2.0));
-        let eq = quadric::exact::quadratic(&apex, &cone).unwrap();
-        assert_eq!(quadric_kappa_at(&apex, &cone, &eq, 0.0), 0.0);
-    }
-
     /// The plane x = 2⁻¹⁰⁰ as a linear quadric (α = 0), from the origin
     /// along x: the root 2⁻¹⁰⁰ is checked, and a wrong class is a
     /// violation.
@@ -825,17 +658,16 @@ mod tests {
     /// Construction errors must be the same error (NaN angles by bits).
     #[test]
     fn camera_errors_must_match_to_be_rejected_alike() {
-        use CameraError::*;
-        assert!(same_error(
-            &AngleOutOfRange(f32::NAN),
-            &AngleOutOfRange(f32::NAN)
-        ));
-        assert!(!same_error(&AngleOutOfRange(4.0), &AngleOutOfRange(5.0)));
-        assert!(same_error(&DirZero, &DirZero));
-        assert!(!same_error(&DirZero, &UpZero));
+        let nan = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, f32::NAN, [8, 8]);
+        let err = nan.build().map(|c| c.ray(0, 0));
+        assert!(matches!(err, Err(CameraError::AngleOutOfRange(_))));
+        let r = check_camera(&nan, [0, 0], err).unwrap();
+        assert_eq!(r.status, Status::Rejected);
+        let other_nan = Err(CameraError::AngleOutOfRange(-f32::NAN));
+        assert!(check_camera(&nan, [0, 0], other_nan).is_err());
         let bad = CameraParams::new(Vec3::ZERO, Vec3::Y, Vec3::Y, 1.0, [8, 8]);
         assert!(matches!(
-            check_camera(&bad, [0, 0], Err(UpZero)),
+            check_camera(&bad, [0, 0], Err(CameraError::UpZero)),
             Err(Violation::Construction { .. })
         ));
     }

@@ -42,161 +42,16 @@ pub mod survey;
 #[cfg(test)]
 mod tests;
 
+use super::rules::{self, Exact};
+pub use super::rules::{Answer, CAMERA_ULPS, Declared, Semantics};
 use crate::Ray;
-use crate::camera::{CameraParams, component_scale};
-
-/// The least allowance for a gated camera's direction components, in ulps
-/// of `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|` ([`component_scale`]): what a plain
-/// `f32` camera `(f + u·x) + v·y` reaches from a correctly rounded basis
-/// (½ ulp for the basis, ½ for the offset, ½ for each of the two products
-/// and two sums, rounded up, plus ½ for the oracle's own rounding).
-pub const CAMERA_ULPS: f64 = 4.0;
+use crate::camera::CameraParams;
 use crate::case::{Case, parse_line};
-use crate::exact::dyadic::{dot, vec3};
-use crate::hit::Intersection;
-use crate::plane::{self, Plane, PlaneHit};
-use crate::quadric::{self, Quadric, QuadricHit};
-use crate::sphere::{self, Sphere, SphereHit};
-use crate::ulp::{ulp_of, ulps};
+use crate::plane::Plane;
+use crate::quadric::Quadric;
+use crate::sphere::Sphere;
 use glam::Vec3;
 use std::fmt;
-
-/// A kernel's answer for one ray and primitive.
-///
-/// ```
-/// use rayoracle::check::gate::Answer;
-/// use rayoracle::sphere::SphereHit;
-/// assert_eq!(Answer::nearest(SphereHit::Two(-1.0, 3.0), 0.0), Answer::Nearest(Some(3.0)));
-/// assert_eq!(Answer::roots(SphereHit::Tangent(2.0)), Answer::Roots(vec![2.0]));
-/// ```
-#[derive(Clone, Debug, PartialEq)]
-pub enum Answer {
-    /// Every root on the whole line, ascending (a tangent once, or twice).
-    Roots(Vec<f32>),
-    /// The nearest root `t > t_min` only, or none.
-    Nearest(Option<f32>),
-    /// Every `t` is a solution (a ray in the plane, a line on the quadric).
-    Everywhere,
-    /// The [`Lanes`] adapter saw the lanes disagree; always a failure.
-    Inconsistent(String),
-}
-
-impl Answer {
-    /// The whole-line answer of any of rayoracle's result types.
-    pub fn roots(h: impl Intersection) -> Answer {
-        if h.is_everywhere() {
-            Answer::Everywhere
-        } else {
-            Answer::Roots(h.roots().as_slice().to_vec())
-        }
-    }
-
-    /// The nearest root strictly above `t_min` of any result type.
-    pub fn nearest(h: impl Intersection, t_min: f32) -> Answer {
-        if h.is_everywhere() {
-            return Answer::Everywhere;
-        }
-        Answer::Nearest(h.roots().as_slice().iter().copied().find(|&t| t > t_min))
-    }
-}
-
-impl fmt::Display for Answer {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Answer::Roots(r) if r.is_empty() => write!(f, "no roots"),
-            Answer::Roots(r) => write!(f, "roots {r:?}"),
-            Answer::Nearest(Some(t)) => write!(f, "nearest {t:?}"),
-            Answer::Nearest(None) => write!(f, "no hit"),
-            Answer::Everywhere => write!(f, "every t"),
-            Answer::Inconsistent(why) => write!(f, "inconsistent lanes: {why}"),
-        }
-    }
-}
-
-/// What the kernel computes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Semantics {
-    /// Every root on the whole line, `t ∈ ℝ` ([`Answer::Roots`]).
-    WholeLine,
-    /// The nearest root `t > 0` ([`Answer::Nearest`]), as a ray caster.
-    NearestPositive,
-}
-
-/// What the kernel promises: its semantics, its accuracy, and its inputs.
-///
-/// A root of condition number κ may be off by
-/// `2^bits − 1 + κ · precision · 2²⁴` ulps: `bits` for a well-conditioned
-/// root, plus what the kernel's working precision (relative, `2⁻²⁴` for
-/// one f32 rounding) makes unavoidable. A class may differ from the exact
-/// one when the exact classification margin is within `band_scale` times
-/// the unit band, `2⁻⁴⁴` of the terms the margin is made of (a plain f32
-/// kernel needs about `2²⁰` of it), with one exception: when
-/// every input is an integer of magnitude at most 16, an exactly degenerate
-/// case (a ray in the plane, an exact tangent, α = 0) must be classified
-/// exactly, since any kernel computes its margin exactly there.
-///
-/// ```
-/// use rayoracle::check::gate::{Declared, Semantics};
-/// let d = Declared::f32(Semantics::WholeLine);
-/// assert_eq!(d.bits, 2.0);
-/// assert!(Declared::faithful(Semantics::WholeLine).band_scale == 1.0);
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Declared {
-    /// Whole line or nearest positive.
-    pub semantics: Semantics,
-    /// Bits of error allowed on a well-conditioned root.
-    pub bits: f64,
-    /// The kernel's relative working precision.
-    pub precision: f64,
-    /// Class tolerance, as a multiple of the unit band.
-    pub band_scale: f64,
-    /// Feed only unit-length directions (normalised in f32 first).
-    pub unit_dirs_only: bool,
-}
-
-impl Declared {
-    /// A careful f32 kernel: 2 bits, a few f32 roundings of working
-    /// precision (`2⁻²²`), a band of `2²⁰` units.
-    pub fn f32(semantics: Semantics) -> Declared {
-        Declared {
-            semantics,
-            bits: 2.0,
-            precision: 2f64.powi(-22),
-            band_scale: 2f64.powi(20),
-            unit_dirs_only: false,
-        }
-    }
-
-    /// A faithfully rounded kernel: every root within one ulp of the exact
-    /// one, with about `2⁻⁴²` of working precision and the unit band.
-    pub fn faithful(semantics: Semantics) -> Declared {
-        Declared {
-            semantics,
-            bits: 1.0,
-            precision: 2f64.powi(-42),
-            band_scale: 1.0,
-            unit_dirs_only: false,
-        }
-    }
-
-    /// The same, fed only unit-length directions.
-    pub fn unit_dirs(self) -> Declared {
-        Declared {
-            unit_dirs_only: true,
-            ..self
-        }
-    }
-
-    fn allowed_ulps(&self, kappa: f64) -> f64 {
-        let k = if kappa.is_finite() {
-            kappa
-        } else {
-            f64::INFINITY
-        };
-        (2f64.powf(self.bits) - 1.0) + k * self.precision * 2f64.powi(24)
-    }
-}
 
 /// A scalar plane kernel. Any `Fn(&Ray, &Plane) -> Answer` is one.
 pub trait PlaneKernel {
@@ -863,342 +718,63 @@ enum Verdict {
     },
 }
 
-fn fail(expected: impl fmt::Display, got: &Answer, why: String) -> Verdict {
+/// The verdict of the shared rules ([`rules::judge`]) on `got`, with what
+/// was expected, or a pass where the oracle has no answer (non-finite
+/// inputs).
+fn verdict(d: &Declared, e: Option<&Exact>, got: &Answer) -> Verdict {
+    let Some(e) = e else {
+        return Verdict::Pass;
+    };
+    let Some(fault) = rules::judge(d, e, got).fault else {
+        return Verdict::Pass;
+    };
+    let expected = match fault {
+        rules::Fault::Inconsistent(_) => "the same answer in every lane".into(),
+        _ => e.expected(d).to_string(),
+    };
     Verdict::Fail {
-        expected: expected.to_string(),
+        expected,
         got: got.to_string(),
-        why,
+        why: fault.to_string(),
     }
-}
-
-/// The exact answer of a primitive case, its classification margin against
-/// the (scaled) band, and each exact root's κ.
-struct Exact {
-    /// Whole-line roots, correctly rounded; empty for none; `None` for
-    /// every `t`.
-    roots: Option<Vec<f32>>,
-    in_band: bool,
-    /// The quadric's α is within its band: the kernel may take it for 0
-    /// (one root where there are two) or not (two where α = 0 gives one);
-    /// the root they share must still be right.
-    alpha_small: bool,
-    kappa: Vec<f64>,
-}
-
-fn judge(d: &Declared, e: &Exact, got: Answer) -> Verdict {
-    if let Answer::Inconsistent(why) = &got {
-        return fail("the same answer in every lane", &got, why.clone());
-    }
-    let expected = match &e.roots {
-        None => Answer::Everywhere,
-        Some(r) => match d.semantics {
-            Semantics::WholeLine => Answer::Roots(r.clone()),
-            Semantics::NearestPositive => Answer::Nearest(r.iter().copied().find(|&t| t > 0.0)),
-        },
-    };
-    let close = |exact: f32, got: f32, kappa: f64| -> Result<(), String> {
-        let u = ulps(exact, got);
-        let allowed = d.allowed_ulps(kappa);
-        if (u as f64) <= allowed {
-            Ok(())
-        } else {
-            Err(format!(
-                "{u} ulps from the correctly rounded root, allowed {allowed:.1} (κ = {kappa:.3e})"
-            ))
-        }
-    };
-    let class_msg =
-        || "a different class, and the exact margin is outside the declared band".to_string();
-    // No NaN is ever a right root, whatever the band.
-    let nan = match &got {
-        Answer::Roots(g) => g.iter().any(|t| t.is_nan()),
-        Answer::Nearest(Some(t)) => t.is_nan(),
-        _ => false,
-    };
-    // Each finite root the kernel gives must be close to some exact root:
-    // what a band excuses is the count, not the values.
-    let each_close = |x: &[f32], g: &[f32]| -> Result<(), String> {
-        for &t in g {
-            let best = x
-                .iter()
-                .zip(&e.kappa)
-                .map(|(&xe, &k)| close(xe, t, k))
-                .find(Result::is_ok);
-            if best.is_none() && !x.is_empty() {
-                return Err(format!("the root {t:?} is near none of the exact roots"));
-            }
-        }
-        Ok(())
-    };
-    let verdict = match (&expected, &got) {
-        _ if nan => Err("a NaN root".into()),
-        (Answer::Everywhere, Answer::Everywhere) => Ok(()),
-        // A ray lying on the surface has no nearest hit to compare.
-        (Answer::Everywhere, _) if d.semantics == Semantics::NearestPositive => Ok(()),
-        (Answer::Roots(x), Answer::Roots(g)) => {
-            // A tangent may come once or twice.
-            let g: Vec<f32> = if x.len() == 1 && g.len() == 2 && g[0] == g[1] {
-                vec![g[0]]
-            } else {
-                g.clone()
-            };
-            if x.len() != g.len() {
-                let one_or_two = x.len().min(g.len()) == 1 && x.len().max(g.len()) == 2;
-                if e.in_band {
-                    // Near a double root (infinite κ) any nearby value passes.
-                    Ok(())
-                } else if e.alpha_small && one_or_two {
-                    if g.len() == 1 {
-                        // The kernel took a tiny α for 0: its one root must
-                        // be one of the exact two.
-                        each_close(x, &g)
-                    } else {
-                        // α = 0 exactly, and the kernel kept a tiny α: one
-                        // of its two roots must be the exact one.
-                        let k = e.kappa.first().copied().unwrap_or(f64::INFINITY);
-                        if g.iter().any(|&t| close(x[0], t, k).is_ok()) {
-                            Ok(())
-                        } else {
-                            Err(format!("neither root is near the exact root {:?}", x[0]))
-                        }
-                    }
-                } else {
-                    Err(class_msg())
-                }
-            } else if g.windows(2).any(|w| !(w[0] <= w[1])) {
-                Err("the roots are not ascending".into())
-            } else {
-                x.iter()
-                    .zip(&g)
-                    .zip(&e.kappa)
-                    .try_for_each(|((&x, &g), &k)| close(x, g, k))
-            }
-        }
-        (Answer::Nearest(x), Answer::Nearest(g)) => match (x, g) {
-            (None, None) => Ok(()),
-            (Some(x), Some(g)) => {
-                let i = e
-                    .roots
-                    .as_ref()
-                    .and_then(|r| r.iter().position(|t| t == x))
-                    .unwrap_or(0);
-                close(*x, *g, e.kappa.get(i).copied().unwrap_or(f64::INFINITY))
-            }
-            // A root at t ≈ 0, or a class in the band, may go either way.
-            (Some(x), None) | (None, Some(x)) if e.in_band || x.abs() <= 1e-30 => Ok(()),
-            (Some(_), None) => Err("a hit was missed".into()),
-            (None, Some(g)) if *g <= 0.0 => Err("a hit at t ≤ 0 was returned".into()),
-            (None, Some(_)) => Err("a hit where there is none".into()),
-        },
-        (_, _) if e.in_band => Ok(()),
-        (_, Answer::Nearest(_) | Answer::Roots(_)) if matches!(expected, Answer::Everywhere) => {
-            Err(
-                "every t solves it (the ray lies on the surface), and the kernel says otherwise"
-                    .into(),
-            )
-        }
-        _ => Err(format!(
-            "the kernel answers in the wrong semantics for {:?}",
-            d.semantics
-        )),
-    };
-    match verdict {
-        Ok(()) => Verdict::Pass,
-        Err(why) => fail(expected, &got, why),
-    }
-}
-
-/// Whether every input is an integer of magnitude at most 16: then every
-/// classification margin (a polynomial of degree at most 4 in them) is
-/// computed exactly even in plain f32, so an exactly degenerate case (a ray
-/// in the plane, a tangent, α = 0) must be classified exactly.
-fn small_integers(c: &Case) -> bool {
-    fields(c)
-        .iter()
-        .all(|&x| x.fract() == 0.0 && x.abs() <= 16.0)
-}
-
-/// Whether a class mismatch is forgiven: the exact margin within the band,
-/// except an exactly zero margin on small-integer inputs.
-fn in_band(margin: f64, band: f64, c: &Case) -> bool {
-    if margin == 0.0 && small_integers(c) {
-        return false;
-    }
-    margin.abs() <= band
-}
-
-/// The sphere's class band for outside kernels, in units of the margin
-/// `aΔ = (aR)² − |af − bd|²`: `a²(R² + R|f|)·2⁻⁴⁴` before `band_scale`.
-/// Near a tangent `|af − bd| ≈ aR`, and a careful kernel forms it with an
-/// error of about `a|f|` times its precision, so its square errs by about
-/// `2a²R|f|` times that. A band from `(a|f|)²` instead would forgive a
-/// plain f32 kernel every class of a far sphere.
-fn sphere_band(ray: &Ray, s: &Sphere) -> f64 {
-    let d = ray.dir.as_dvec3();
-    let f = ray.origin.as_dvec3() - s.center.as_dvec3();
-    let (a, r) = (d.length_squared(), f64::from(s.radius).abs());
-    a * a * (r * r + r * f.length()) * 2f64.powi(-44)
-}
-
-/// The plane's unit band on the margin `d·n`: `2⁻⁴⁴ Σ|dᵢnᵢ|`.
-fn plane_band(ray: &Ray, p: &Plane) -> f64 {
-    let s: f64 = (0..3)
-        .map(|i| (f64::from(ray.dir[i]) * f64::from(p.normal[i])).abs())
-        .sum();
-    s * 2f64.powi(-44)
-}
-
-/// The quadric's unit band on the discriminant `β² − 4αγ`: `2⁻⁴⁰((Σ|β
-/// terms|)² + 4 Σ|α terms| Σ|γ terms|)`.
-fn quadric_band(ray: &Ray, q: &Quadric) -> f64 {
-    let (a, b, g) = quadric::terms(ray, q);
-    let sum = |x: &[f64]| x.iter().map(|x| x.abs()).sum::<f64>();
-    let (sa, sb, sg) = (sum(&a), sum(&b), sum(&g));
-    (sb * sb + 4.0 * sa * sg) * 2f64.powi(-40)
-}
-
-/// `Σ |kᵢ dⱼ dₖ|` over α's six terms: the scale α's rounding error is
-/// relative to.
-fn alpha_terms(ray: &Ray, q: &Quadric) -> f64 {
-    let k = q.coeffs.map(f64::from);
-    let dd = ray.dir.to_array().map(f64::from);
-    (k[0] * dd[0] * dd[0]).abs()
-        + (k[1] * dd[1] * dd[1]).abs()
-        + (k[2] * dd[2] * dd[2]).abs()
-        + (k[3] * dd[0] * dd[1]).abs()
-        + (k[4] * dd[0] * dd[2]).abs()
-        + (k[5] * dd[1] * dd[2]).abs()
 }
 
 fn judge_sphere(d: &Declared, ray: &Ray, s: &Sphere, got: Answer) -> Verdict {
-    exact_sphere(d, ray, s).map_or(Verdict::Pass, |e| judge(d, &e, got))
+    verdict(d, rules::sphere(ray, s).map(|e| e.1).as_ref(), &got)
 }
 
 fn judge_plane(d: &Declared, ray: &Ray, p: &Plane, got: Answer) -> Verdict {
-    exact_plane(d, ray, p).map_or(Verdict::Pass, |e| judge(d, &e, got))
+    verdict(d, rules::plane(ray, p).map(|e| e.1).as_ref(), &got)
 }
 
 fn judge_quadric(d: &Declared, ray: &Ray, q: &Quadric, got: Answer) -> Verdict {
-    exact_quadric(d, ray, q).map_or(Verdict::Pass, |e| judge(d, &e, got))
-}
-
-/// The exact answer a sphere case is judged against, or `None` where the
-/// oracle has none (non-finite inputs): then any answer passes.
-fn exact_sphere(d: &Declared, ray: &Ray, s: &Sphere) -> Option<Exact> {
-    let Ok(q) = sphere::exact::quadratic(ray, s) else {
-        return None;
-    };
-    let exact = sphere::exact::classify(&q);
-    let margin = (&q.alpha * &q.discriminant()).mul_pow2(-2).to_f64();
-    let kappa = match exact {
-        SphereHit::Two(t0, t1) => vec![
-            sphere::condition_at(ray, s, t0 as f64),
-            sphere::condition_at(ray, s, t1 as f64),
-        ],
-        _ => vec![f64::INFINITY; 2],
-    };
-    let e = Exact {
-        roots: Some(exact.roots().as_slice().to_vec()),
-        in_band: in_band(
-            margin,
-            sphere_band(ray, s) * d.band_scale,
-            &Case::Sphere(*ray, *s),
-        ),
-        alpha_small: false,
-        kappa,
-    };
-    Some(e)
-}
-
-/// The exact answer a plane case is judged against, or `None` where the
-/// oracle has none (non-finite inputs): then any answer passes.
-fn exact_plane(d: &Declared, ray: &Ray, p: &Plane) -> Option<Exact> {
-    let Ok(exact) = plane::exact::intersect(ray, p) else {
-        return None;
-    };
-    let (Ok(dir), Ok(n)) = (vec3(ray.dir.to_array()), vec3(p.normal.to_array())) else {
-        return None;
-    };
-    let margin = dot(&dir, &n).to_f64();
-    let e = Exact {
-        roots: (!matches!(exact, PlaneHit::InPlane)).then(|| exact.roots().as_slice().to_vec()),
-        in_band: in_band(
-            margin,
-            plane_band(ray, p) * d.band_scale,
-            &Case::Plane(*ray, *p),
-        ),
-        alpha_small: false,
-        kappa: vec![super::plane_condition(ray, p)],
-    };
-    Some(e)
-}
-
-/// The exact answer a quadric case is judged against, or `None` where the
-/// oracle has none (non-finite inputs): then any answer passes.
-fn exact_quadric(d: &Declared, ray: &Ray, q: &Quadric) -> Option<Exact> {
-    let Ok(eq) = quadric::exact::quadratic(ray, q) else {
-        return None;
-    };
-    let exact = quadric::exact::classify(&eq);
-    let margin = eq.discriminant().to_f64();
-    // α within the band of its terms may be taken for 0 (a linear answer).
-    let alpha_small =
-        eq.alpha.to_f64().abs() <= alpha_terms(ray, q) * 2f64.powi(-44) * d.band_scale;
-    let kappa = match exact {
-        QuadricHit::Two(..) | QuadricHit::One(..) => quadric::condition(ray, q).to_vec(),
-        _ => vec![f64::INFINITY; 2],
-    };
-    let e = Exact {
-        roots: (!matches!(exact, QuadricHit::All)).then(|| exact.roots().as_slice().to_vec()),
-        in_band: in_band(
-            margin,
-            quadric_band(ray, q) * d.band_scale,
-            &Case::Quadric(*ray, *q),
-        ),
-        alpha_small: alpha_small && !small_integers(&Case::Quadric(*ray, *q)),
-        kappa,
-    };
-    Some(e)
+    verdict(d, rules::quadric(ray, q).map(|e| e.1).as_ref(), &got)
 }
 
 fn judge_camera(d: &Declared, p: &CameraParams, px: [u32; 2], got: Option<Ray>) -> Verdict {
+    use rules::CameraFault::*;
     let exact = crate::camera::exact::ray(p, px[0], px[1]);
-    match (exact, got) {
-        (Err(_), None) => Verdict::Pass,
-        (Err(e), Some(g)) => Verdict::Fail {
-            expected: format!("no camera ({e})"),
-            got: format!("{g:?}"),
-            why: "the camera must refuse these parameters".into(),
+    let j = rules::judge_camera(d, p, px, &exact, &got.ok_or(None));
+    let Some(fault) = j.fault else {
+        return Verdict::Pass;
+    };
+    let show = |r: Option<Ray>| r.map_or("no camera".to_string(), |r| format!("{r:?}"));
+    let why = match fault {
+        NotRefused | OtherError => "the camera must refuse these parameters".into(),
+        Refused => "valid parameters were refused".into(),
+        Origin => "the origin is not the camera position".into(),
+        Component(c) => format!(
+            "direction component {} is {:.1} ulps of its scale Sᵢ away, allowed {:.1}",
+            c.axis, c.err_ulps, c.bound
+        ),
+    };
+    Verdict::Fail {
+        expected: match &exact {
+            Err(e) => format!("no camera ({e})"),
+            Ok(x) => format!("{x:?}"),
         },
-        (Ok(x), None) => Verdict::Fail {
-            expected: format!("{x:?}"),
-            got: "no camera".into(),
-            why: "valid parameters were refused".into(),
-        },
-        (Ok(x), Some(g)) => {
-            let Ok(cam) = p.build() else {
-                return Verdict::Pass;
-            };
-            let scale = component_scale(&cam, px[0], px[1]);
-            // The camera's components are judged like rayoracle's own (in
-            // ulps of Sᵢ), with at least its reference's bound.
-            let allowed = d.allowed_ulps(4.0).max(CAMERA_ULPS);
-            let same_origin =
-                g.origin.to_array().map(f32::to_bits) == x.origin.to_array().map(f32::to_bits);
-            for (i, s) in scale.iter().enumerate() {
-                let err = (f64::from(g.dir[i]) - f64::from(x.dir[i])).abs() / ulp_of(*s);
-                if !(err <= allowed) || !same_origin {
-                    return Verdict::Fail {
-                        expected: format!("{x:?}"),
-                        got: format!("{g:?}"),
-                        why: format!(
-                            "direction component {i} is {err:.1} ulps of its scale Sᵢ away, allowed {allowed:.1} (or the origin moved)"
-                        ),
-                    };
-                }
-            }
-            Verdict::Pass
-        }
+        got: show(got),
+        why,
     }
 }
 

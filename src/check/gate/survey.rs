@@ -22,8 +22,9 @@
 //! assert_eq!((far.wrong_hits, far.wrong_misses, far.max_ulps), (0, 0, 0));
 //! ```
 
-use super::{Answer, Exact, Gate, PlaneKernel, QuadricKernel, SphereKernel, Verdict, judge};
+use super::{Answer, Gate, PlaneKernel, QuadricKernel, SphereKernel, Verdict, verdict};
 use crate::case::Case;
+use crate::check::rules::{self, Exact};
 use crate::ulp::ulps;
 use std::fmt::Write;
 
@@ -162,10 +163,8 @@ impl Gate {
         self.survey(families, |c| match c {
             Case::Sphere(r, s) => {
                 let got = k.intersect(r, s);
-                let e = super::exact_sphere(&self.declared, r, s);
-                let v = e
-                    .as_ref()
-                    .map_or(Verdict::Pass, |e| judge(&self.declared, e, got.clone()));
+                let e = rules::sphere(r, s).map(|e| e.1);
+                let v = verdict(&self.declared, e.as_ref(), &got);
                 Some((truth(e.as_ref()), got, v))
             }
             _ => None,
@@ -191,10 +190,8 @@ impl Gate {
         self.survey(families, |c| match c {
             Case::Plane(r, p) => {
                 let got = k.intersect(r, p);
-                let e = super::exact_plane(&self.declared, r, p);
-                let v = e
-                    .as_ref()
-                    .map_or(Verdict::Pass, |e| judge(&self.declared, e, got.clone()));
+                let e = rules::plane(r, p).map(|e| e.1);
+                let v = verdict(&self.declared, e.as_ref(), &got);
                 Some((truth(e.as_ref()), got, v))
             }
             _ => None,
@@ -222,10 +219,8 @@ impl Gate {
         self.survey(families, |c| match c {
             Case::Quadric(r, q) => {
                 let got = k.intersect(r, q);
-                let e = super::exact_quadric(&self.declared, r, q);
-                let v = e
-                    .as_ref()
-                    .map_or(Verdict::Pass, |e| judge(&self.declared, e, got.clone()));
+                let e = rules::quadric(r, q).map(|e| e.1);
+                let v = verdict(&self.declared, e.as_ref(), &got);
                 Some((truth(e.as_ref()), got, v))
             }
             _ => None,
@@ -273,9 +268,11 @@ mod tests {
     fn the_truth_is_the_nearest_root_above_zero() {
         let e = Exact {
             roots: Some(vec![-1.0, 0.0, 2.0]),
-            in_band: false,
-            alpha_small: false,
             kappa: vec![1.0; 3],
+            margin: 1.0,
+            band: 0.0,
+            alpha: None,
+            small_integers: true,
         };
         assert!(matches!(truth(Some(&e)), Truth::Nearest(Some(2.0))));
     }

@@ -3,6 +3,8 @@
 //! families. (The gate's power against wrong kernels is `tests/known_wrong.rs`.)
 
 use super::*;
+use crate::check::rules::tests::tiny_alpha;
+use crate::{plane, quadric, sphere};
 use std::cell::RefCell;
 
 #[test]
@@ -15,29 +17,6 @@ fn answers_print_by_class() {
     assert_eq!(Answer::Nearest(Some(3.0)).to_string(), "nearest 3.0");
     assert_eq!(Answer::Nearest(None).to_string(), "no hit");
     assert_eq!(Answer::Everywhere.to_string(), "every t");
-}
-
-/// `2^bits − 1 + κ · precision · 2²⁴`, term by term.
-#[test]
-fn allowed_ulps_term_by_term() {
-    let exact = Declared::faithful(Semantics::WholeLine);
-    // 2¹ − 1 + 4 · 2⁻⁴² · 2²⁴.
-    assert_eq!(exact.allowed_ulps(4.0), 1.0 + 4.0 * 2f64.powi(-18));
-    let f32 = Declared::f32(Semantics::WholeLine);
-    // 2² − 1 + 3 · 2⁻²² · 2²⁴.
-    assert_eq!(f32.allowed_ulps(3.0), 3.0 + 12.0);
-    assert_eq!(f32.allowed_ulps(f64::NAN), f64::INFINITY);
-}
-
-#[test]
-fn unit_dirs_changes_only_that() {
-    let d = Declared::faithful(Semantics::NearestPositive);
-    let u = d.unit_dirs();
-    assert!(!d.unit_dirs_only && u.unit_dirs_only);
-    assert_eq!(
-        (u.bits, u.precision, u.band_scale),
-        (d.bits, d.precision, d.band_scale)
-    );
 }
 
 /// The case goes into each lane in turn, and the other three lanes hold the
@@ -335,107 +314,6 @@ fn answers_of_another_kind() {
     assert!(f.why.contains("wrong semantics"), "{}", f.why);
 }
 
-/// `a² (r² + r|f|) 2⁻⁴⁴` with `a = d·d = 4`, `r = 3`, `f = o − c = (3, 4, 0)`:
-/// `16 · (9 + 15) · 2⁻⁴⁴`. (With `r = 2`, `r·r` and `r + r` agree: the
-/// re-run of the fixes caught that.)
-#[test]
-fn sphere_band_term_by_term() {
-    let ray = Ray::new(Vec3::new(4.0, 4.0, 0.0), Vec3::new(0.0, 0.0, 2.0));
-    let s = Sphere::new(Vec3::X, 3.0);
-    assert_eq!(sphere_band(&ray, &s), 384.0 * 2f64.powi(-44));
-}
-
-/// `Σ |kᵢ dⱼ dₖ|` for `k = 1..6` and `d = (2, 3, 5)`:
-/// 4 + 18 + 75 + 4·6 + 5·10 + 6·15 = 261.
-#[test]
-fn alpha_terms_term_by_term() {
-    let q = Quadric::new([1.0, 2.0, -3.0, 4.0, 5.0, -6.0, 7.0, 8.0, 9.0, 10.0]);
-    let ray = Ray::new(Vec3::ONE, Vec3::new(2.0, 3.0, -5.0));
-    assert_eq!(alpha_terms(&ray, &q), 261.0);
-}
-
-/// The sphere's margin is `α · (β² − 4αγ) / 4`: from z = −5 along (0, 0, 2)
-/// to the unit sphere, α = 4, β = −20, γ = 24, so 4 · 16 / 4 = 16. A band
-/// of 32 holds it and a band of 8 does not.
-#[test]
-fn the_sphere_margin_against_its_band() {
-    let (ray, s) = (
-        Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::new(0.0, 0.0, 2.0)),
-        Sphere::new(Vec3::ZERO, 1.0),
-    );
-    // sphere_band = 4² · (1 + 5) · 2⁻⁴⁴ = 96 · 2⁻⁴⁴.
-    let with_band = |band: f64| Declared {
-        band_scale: band / (96.0 * 2f64.powi(-44)),
-        ..Declared::f32(Semantics::WholeLine)
-    };
-    assert!(exact_sphere(&with_band(32.0), &ray, &s).unwrap().in_band);
-    assert!(!exact_sphere(&with_band(8.0), &ray, &s).unwrap().in_band);
-}
-
-/// A plane's band is scaled by the declared factor, not offset by it: a
-/// ray at 30° to the plane is far outside rayoracle's own band.
-#[test]
-fn a_steep_ray_is_outside_the_plane_band() {
-    let (ray, p) = (
-        Ray::new(Vec3::Y, Vec3::new(1.0, -0.5, 0.0)),
-        Plane::new(Vec3::ZERO, Vec3::Y),
-    );
-    assert!(
-        !exact_plane(&Declared::faithful(Semantics::WholeLine), &ray, &p)
-            .unwrap()
-            .in_band
-    );
-}
-
-/// The tiny-α quadric again: α = 2⁻²⁴ against terms 2 − 2⁻²⁴, so α is
-/// small for a band scale of 2²⁰ (bound 2⁻²³ − 2⁻⁴⁸) and not for 2¹⁹
-/// (bound 2⁻²⁴ − 2⁻⁴⁹); and small-integer inputs never are.
-#[test]
-fn alpha_small_at_its_bound() {
-    let q = tiny_alpha();
-    let r = Ray::new(Vec3::ZERO, Vec3::ONE);
-    let scaled = |e: i32| Declared {
-        band_scale: 2f64.powi(e),
-        ..Declared::f32(Semantics::WholeLine)
-    };
-    assert!(exact_quadric(&scaled(20), &r, &q).unwrap().alpha_small);
-    assert!(!exact_quadric(&scaled(19), &r, &q).unwrap().alpha_small);
-    // The unit sphere as a quadric, from (0, 0.875, −5): α = 1 is not small.
-    let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
-    let r = Ray::new(Vec3::new(0.0, 0.875, -5.0), Vec3::Z);
-    assert!(!exact_quadric(&scaled(20), &r, &ball).unwrap().alpha_small);
-    // x² − y² + z − 1 along (1, 1, 1): α = 0 exactly, on small integers.
-    let q = Quadric::new([1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, -1.0]);
-    assert!(
-        !exact_quadric(&scaled(20), &Ray::new(Vec3::ZERO, Vec3::ONE), &q)
-            .unwrap()
-            .alpha_small
-    );
-}
-
-/// The quadric margin (here β² − 4αγ = 100 − 99.0625 = 0.9375) is judged
-/// against the band times the declared scale.
-#[test]
-fn the_quadric_margin_against_its_band() {
-    let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
-    let r = Ray::new(Vec3::new(0.0, 0.875, -5.0), Vec3::Z);
-    let b = quadric_band(&r, &ball);
-    let with_band = |band: f64| Declared {
-        band_scale: band / b,
-        ..Declared::f32(Semantics::WholeLine)
-    };
-    assert!(
-        exact_quadric(&with_band(2.0 * 0.9375), &r, &ball)
-            .unwrap()
-            .in_band
-    );
-    assert!(
-        !exact_quadric(&with_band(0.5 * 0.9375), &r, &ball)
-            .unwrap()
-            .in_band
-    );
-}
-
 /// Shrinking a sphere case that fails while `R > 1` and `d.z ≠ 0`: every
 /// other field goes to 0, R to the integer 2, and d.z = 0.4 (binary
 /// 1.1001…·2⁻²) to 0.375, its first mantissa bit kept (0 would pass).
@@ -535,23 +413,6 @@ fn random_strategies_draw_both_signs() {
         }
     }
     assert_eq!(signs, [[true; 2]; 3]);
-}
-
-/// `x² − (1 − 2⁻²⁴)y² + z − 1`, crossed along `(1, 1, 1)` from 0 with
-/// α = 2⁻²⁴.
-fn tiny_alpha() -> Quadric {
-    Quadric::new([
-        1.0,
-        -(1.0 - 2f32.powi(-24)),
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        1.0,
-        -1.0,
-    ])
 }
 
 /// A kernel that panics on some cases fails those cases, each reported

@@ -1,0 +1,1213 @@
+//! The rules every answer is judged by, in one place: what the exact answer
+//! of a case is ([`Exact`]), what a kernel declares it promises
+//! ([`Declared`]), and one [`judge`] that compares the two. rayoracle's own
+//! kernels are held by [`check`](super) to the strictest declaration,
+//! [`Declared::correctly_rounded`]; [`gate`](super::gate) holds an outside
+//! kernel to the declaration its author chooses. Both call the same
+//! [`judge`] (and [`judge_camera`]), so a rule changed here changes for
+//! both.
+//!
+//! # The exact answer
+//!
+//! For a plane, sphere or quadric case, [`Exact`] holds the exact roots
+//! correctly rounded to `f32` (ascending; or every `t`), each root's
+//! condition number κ, the exact classification margin (`d·n`, `aΔ` or
+//! `β² − 4αγ`) and the unit band it is measured against (`2⁻⁴⁴` of the
+//! terms it is made of), the quadric's exact α against its own unit band,
+//! and whether every input is an integer of magnitude at most 16. Where an
+//! input is NaN or infinite there is no exact answer, and nothing is
+//! judged.
+//!
+//! # The rules
+//!
+//! * **Roots.** A root of condition κ may be off by
+//!   [`Declared::allowed_ulps`]`(κ) = 2^bits − 1 + κ · precision · 2²⁴`
+//!   ulps from the correctly rounded exact root (an infinite κ allows
+//!   anything, unless the precision is 0). Where nothing is allowed the
+//!   root must be the exact root's bits: `−0` is not `+0`. A NaN root
+//!   always fails, and whole-line roots must be ascending.
+//! * **Class.** The number of roots (or every `t`) must be the exact one,
+//!   unless the exact margin is within the declared band (`band_scale`
+//!   times the unit band). A band of 0 forgives nothing. When every input
+//!   is an integer of magnitude at most 16, an exactly zero margin (a ray
+//!   in the plane, an exact tangent) is never in the band, since any
+//!   kernel computes its margin exactly there.
+//! * **Tangents and small α.** With a band, a single exact root may come
+//!   as the same root twice. A quadric whose exact α is within the band
+//!   of its terms (and not on small integers) may be answered as linear
+//!   (one of the exact two roots) or, where α = 0, as a quadratic (one of
+//!   the two roots the exact one).
+//! * **Nearest positive.** In [`Semantics::NearestPositive`] the answer is
+//!   the nearest exact root `t > 0`, judged by that root's κ. A ray lying
+//!   on the surface has no nearest hit, so any answer passes; a hit or a
+//!   miss at `|t| ≤ 10⁻³⁰`, or within the band, may go either way.
+//! * **Camera** ([`judge_camera`]). Construction must fail exactly when the
+//!   oracle's does (with the same error, where the kernel names one). The
+//!   origin must be the camera position, bit for bit, and each direction
+//!   component within [`Declared::camera_ulps`] ulps of `Sᵢ`
+//!   ([`component_scale`]) of the oracle's.
+//!
+//! ```
+//! # #[cfg(feature = "sphere")] {
+//! use rayoracle::check::rules::{self, Answer, Declared, Semantics};
+//! use rayoracle::{Ray, sphere::Sphere};
+//! use glam::Vec3;
+//! let (ray, s) = (Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), Sphere::new(Vec3::ZERO, 1.0));
+//! let (_, exact) = rules::sphere(&ray, &s).unwrap();
+//! let one_off = Answer::Roots(vec![4.0, 6.0 + 4.0 * f32::EPSILON]);
+//! assert!(rules::judge(&Declared::f32(Semantics::WholeLine), &exact, &one_off).passed());
+//! assert!(!rules::judge(&Declared::correctly_rounded(Semantics::WholeLine), &exact, &one_off).passed());
+//! # }
+//! ```
+
+use crate::Ray;
+use crate::camera::{CameraError, CameraParams, component_scale};
+#[cfg(feature = "plane")]
+use crate::exact::dyadic::{dot, sub3, vec3};
+use crate::hit::Intersection;
+#[cfg(feature = "plane")]
+use crate::plane::{self, Plane, PlaneHit};
+#[cfg(feature = "quadric")]
+use crate::quadric::{self, Quadric, QuadricHit};
+#[cfg(feature = "sphere")]
+use crate::sphere::{self, Sphere, SphereHit};
+use crate::ulp::{ulp_of, ulps};
+use std::fmt;
+
+/// The least allowance for a gated camera's direction components, in ulps
+/// of `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|` ([`component_scale`]): what a plain
+/// `f32` camera `(f + u·x) + v·y` reaches from a correctly rounded basis
+/// (½ ulp for the basis, ½ for the offset, ½ for each of the two products
+/// and two sums, rounded up, plus ½ for the oracle's own rounding).
+pub const CAMERA_ULPS: f64 = 4.0;
+
+/// A kernel's answer for one ray and primitive.
+///
+/// ```
+/// use rayoracle::check::rules::Answer;
+/// use rayoracle::sphere::SphereHit;
+/// assert_eq!(Answer::nearest(SphereHit::Two(-1.0, 3.0), 0.0), Answer::Nearest(Some(3.0)));
+/// assert_eq!(Answer::roots(SphereHit::Tangent(2.0)), Answer::Roots(vec![2.0]));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub enum Answer {
+    /// Every root on the whole line, ascending (a tangent once, or twice).
+    Roots(Vec<f32>),
+    /// The nearest root `t > t_min` only, or none.
+    Nearest(Option<f32>),
+    /// Every `t` is a solution (a ray in the plane, a line on the quadric).
+    Everywhere,
+    /// The [`Lanes`](super::gate::Lanes) adapter saw the lanes disagree;
+    /// always a failure.
+    Inconsistent(String),
+}
+
+impl Answer {
+    /// The whole-line answer of any of rayoracle's result types.
+    pub fn roots(h: impl Intersection) -> Answer {
+        if h.is_everywhere() {
+            Answer::Everywhere
+        } else {
+            Answer::Roots(h.roots().as_slice().to_vec())
+        }
+    }
+
+    /// The nearest root strictly above `t_min` of any result type.
+    pub fn nearest(h: impl Intersection, t_min: f32) -> Answer {
+        if h.is_everywhere() {
+            return Answer::Everywhere;
+        }
+        Answer::Nearest(h.roots().as_slice().iter().copied().find(|&t| t > t_min))
+    }
+}
+
+impl fmt::Display for Answer {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Answer::Roots(r) if r.is_empty() => write!(f, "no roots"),
+            Answer::Roots(r) => write!(f, "roots {r:?}"),
+            Answer::Nearest(Some(t)) => write!(f, "nearest {t:?}"),
+            Answer::Nearest(None) => write!(f, "no hit"),
+            Answer::Everywhere => write!(f, "every t"),
+            Answer::Inconsistent(why) => write!(f, "inconsistent lanes: {why}"),
+        }
+    }
+}
+
+/// What the kernel computes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Semantics {
+    /// Every root on the whole line, `t ∈ ℝ` ([`Answer::Roots`]).
+    WholeLine,
+    /// The nearest root `t > 0` ([`Answer::Nearest`]), as a ray caster.
+    NearestPositive,
+}
+
+/// What the kernel promises: its semantics, its accuracy, and its inputs
+/// (the rules are in the [module docs](self)).
+///
+/// ```
+/// use rayoracle::check::rules::{Declared, Semantics};
+/// let d = Declared::f32(Semantics::WholeLine);
+/// assert_eq!(d.bits, 2.0);
+/// assert!(Declared::faithful(Semantics::WholeLine).band_scale == 1.0);
+/// assert_eq!(Declared::correctly_rounded(Semantics::WholeLine).allowed_ulps(f64::INFINITY), 0.0);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Declared {
+    /// Whole line or nearest positive.
+    pub semantics: Semantics,
+    /// Bits of error allowed on a well-conditioned root.
+    pub bits: f64,
+    /// The kernel's relative working precision.
+    pub precision: f64,
+    /// Class tolerance, as a multiple of the unit band (0: none).
+    pub band_scale: f64,
+    /// Feed only unit-length directions (normalised in f32 first).
+    pub unit_dirs_only: bool,
+}
+
+impl Declared {
+    /// A careful f32 kernel: 2 bits, a few f32 roundings of working
+    /// precision (`2⁻²²`), a band of `2²⁰` units (a plain f32 kernel needs
+    /// about that much).
+    pub fn f32(semantics: Semantics) -> Declared {
+        Declared {
+            semantics,
+            bits: 2.0,
+            precision: 2f64.powi(-22),
+            band_scale: 2f64.powi(20),
+            unit_dirs_only: false,
+        }
+    }
+
+    /// A faithfully rounded kernel: every root within one ulp of the exact
+    /// one, with about `2⁻⁴²` of working precision and the unit band.
+    pub fn faithful(semantics: Semantics) -> Declared {
+        Declared {
+            semantics,
+            bits: 1.0,
+            precision: 2f64.powi(-42),
+            band_scale: 1.0,
+            unit_dirs_only: false,
+        }
+    }
+
+    /// A correctly rounded kernel, what rayoracle's own promise: every root
+    /// the exact root's bits, whatever its κ, the exact class (no band),
+    /// and every camera component the oracle's bits. [`check`](super)
+    /// holds rayoracle's kernels to this.
+    ///
+    /// ```
+    /// use rayoracle::check::rules::{Declared, Semantics};
+    /// let d = Declared::correctly_rounded(Semantics::WholeLine);
+    /// assert_eq!((d.allowed_ulps(1e30), d.band_scale, d.camera_ulps()), (0.0, 0.0, 0.0));
+    /// ```
+    pub fn correctly_rounded(semantics: Semantics) -> Declared {
+        Declared {
+            semantics,
+            bits: 0.0,
+            precision: 0.0,
+            band_scale: 0.0,
+            unit_dirs_only: false,
+        }
+    }
+
+    /// The same, fed only unit-length directions.
+    pub fn unit_dirs(self) -> Declared {
+        Declared {
+            unit_dirs_only: true,
+            ..self
+        }
+    }
+
+    /// The ulps allowed on a root of condition `kappa`:
+    /// `2^bits − 1 + κ · precision · 2²⁴`; a NaN κ counts as infinite, and
+    /// a precision of 0 allows nothing for κ.
+    ///
+    /// ```
+    /// use rayoracle::check::rules::{Declared, Semantics};
+    /// let d = Declared::f32(Semantics::WholeLine);
+    /// assert_eq!(d.allowed_ulps(3.0), 3.0 + 12.0);
+    /// assert_eq!(d.allowed_ulps(f64::NAN), f64::INFINITY);
+    /// ```
+    pub fn allowed_ulps(&self, kappa: f64) -> f64 {
+        let k = if kappa.is_finite() {
+            kappa
+        } else {
+            f64::INFINITY
+        };
+        let spread = if self.precision == 0.0 {
+            0.0
+        } else {
+            k * self.precision * 2f64.powi(24)
+        };
+        (2f64.powf(self.bits) - 1.0) + spread
+    }
+
+    /// The ulps of `Sᵢ` allowed on a camera direction component: none
+    /// where nothing is allowed on a root of κ = 4 (the oracle's bits),
+    /// else at least [`CAMERA_ULPS`].
+    ///
+    /// ```
+    /// use rayoracle::check::rules::{CAMERA_ULPS, Declared, Semantics};
+    /// assert_eq!(Declared::faithful(Semantics::WholeLine).camera_ulps(), CAMERA_ULPS);
+    /// ```
+    pub fn camera_ulps(&self) -> f64 {
+        match self.allowed_ulps(4.0) {
+            0.0 => 0.0,
+            a => a.max(CAMERA_ULPS),
+        }
+    }
+}
+
+/// The exact answer of a plane, sphere or quadric case, and the scales its
+/// tolerances are measured in.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Exact {
+    /// Whole-line roots, ascending, correctly rounded; empty for none;
+    /// `None` for every `t`.
+    pub roots: Option<Vec<f32>>,
+    /// Each root's condition number (infinite at a double root): one a
+    /// root.
+    pub kappa: Vec<f64>,
+    /// The exact classification margin (`d·n`, `aΔ` or `β² − 4αγ`)
+    /// rounded to f64.
+    pub margin: f64,
+    /// The margin's unit band, which `band_scale` multiplies.
+    pub band: f64,
+    /// A quadric's exact α and its unit band (`2⁻⁴⁴ Σ|α terms|`).
+    pub alpha: Option<(f64, f64)>,
+    /// Every input is an integer of magnitude at most 16: every margin is
+    /// then computed exactly even in plain f32.
+    pub small_integers: bool,
+}
+
+impl Exact {
+    /// Whether a class other than the exact one is forgiven under `d`.
+    ///
+    /// ```
+    /// # #[cfg(feature = "plane")] {
+    /// use rayoracle::check::rules::{self, Declared, Semantics};
+    /// use rayoracle::{Ray, plane::Plane};
+    /// use glam::Vec3;
+    /// let above = Ray::new(Vec3::new(0.0, 2f32.powi(-40), 0.0), Vec3::X);
+    /// let (_, e) = rules::plane(&above, &Plane::new(Vec3::ZERO, Vec3::Y)).unwrap();
+    /// assert!(e.in_band(&Declared::f32(Semantics::WholeLine)));
+    /// assert!(!e.in_band(&Declared::correctly_rounded(Semantics::WholeLine)));
+    /// # }
+    /// ```
+    pub fn in_band(&self, d: &Declared) -> bool {
+        if d.band_scale == 0.0 || (self.margin == 0.0 && self.small_integers) {
+            return false;
+        }
+        self.margin.abs() <= self.band * d.band_scale
+    }
+
+    /// Whether a quadric's α is within the band of its terms under `d`, so
+    /// that the kernel may take it for 0 or not.
+    pub fn alpha_small(&self, d: &Declared) -> bool {
+        d.band_scale != 0.0
+            && !self.small_integers
+            && self
+                .alpha
+                .is_some_and(|(a, unit)| a.abs() <= unit * d.band_scale)
+    }
+
+    /// The answer a kernel of the declared semantics should give.
+    pub fn expected(&self, d: &Declared) -> Answer {
+        match &self.roots {
+            None => Answer::Everywhere,
+            Some(r) => match d.semantics {
+                Semantics::WholeLine => Answer::Roots(r.clone()),
+                Semantics::NearestPositive => Answer::Nearest(r.iter().copied().find(|&t| t > 0.0)),
+            },
+        }
+    }
+}
+
+/// Whether every input is an integer of magnitude at most 16.
+fn small_integers(inputs: &[&[f32]]) -> bool {
+    inputs
+        .iter()
+        .flat_map(|x| x.iter())
+        .all(|&x| x.fract() == 0.0 && x.abs() <= 16.0)
+}
+
+/// A plane case's exact answer, or `None` for a non-finite input.
+///
+/// ```
+/// use rayoracle::check::rules;
+/// use rayoracle::{Ray, plane::{Plane, PlaneHit}};
+/// use glam::Vec3;
+/// let (h, e) = rules::plane(&Ray::new(Vec3::ZERO, Vec3::Z), &Plane::new(Vec3::Z, Vec3::Z)).unwrap();
+/// assert_eq!((h, e.roots, e.kappa, e.margin), (PlaneHit::Hit(1.0), Some(vec![1.0]), vec![2.0], 1.0));
+/// ```
+#[cfg(feature = "plane")]
+pub fn plane(ray: &Ray, p: &Plane) -> Option<(PlaneHit, Exact)> {
+    let exact = plane::exact::intersect(ray, p).ok()?;
+    let (d, n) = (
+        vec3(ray.dir.to_array()).ok()?,
+        vec3(p.normal.to_array()).ok()?,
+    );
+    let roots = (!exact.is_everywhere()).then(|| exact.roots().as_slice().to_vec());
+    let k = plane_condition(ray, p);
+    let e = Exact {
+        kappa: vec![k; roots.as_ref().map_or(0, Vec::len)],
+        roots,
+        margin: dot(&d, &n).to_f64(),
+        band: plane_band(ray, p),
+        alpha: None,
+        small_integers: small_integers(&[
+            &ray.origin.to_array(),
+            &ray.dir.to_array(),
+            &p.point.to_array(),
+            &p.normal.to_array(),
+        ]),
+    };
+    Some((exact, e))
+}
+
+/// A sphere case's exact answer, or `None` for a non-finite input.
+#[cfg(feature = "sphere")]
+pub fn sphere(ray: &Ray, s: &Sphere) -> Option<(SphereHit, Exact)> {
+    let q = sphere::exact::quadratic(ray, s).ok()?;
+    let exact = sphere::exact::classify(&q);
+    Some((exact, sphere_given(ray, s, &q, exact)))
+}
+
+/// [`sphere`], given the exact quadratic and its solution.
+#[cfg(feature = "sphere")]
+pub(crate) fn sphere_given(
+    ray: &Ray,
+    s: &Sphere,
+    q: &crate::exact::Quadratic,
+    exact: SphereHit,
+) -> Exact {
+    let roots = exact.roots().as_slice().to_vec();
+    let kappa = roots
+        .iter()
+        .map(|&t| match exact {
+            SphereHit::Two(..) => sphere::condition_at(ray, s, t as f64),
+            _ => f64::INFINITY,
+        })
+        .collect();
+    Exact {
+        roots: Some(roots),
+        kappa,
+        margin: (&q.alpha * &q.discriminant()).mul_pow2(-2).to_f64(),
+        band: sphere_band(ray, s),
+        alpha: None,
+        small_integers: small_integers(&[
+            &ray.origin.to_array(),
+            &ray.dir.to_array(),
+            &s.center.to_array(),
+            &[s.radius],
+        ]),
+    }
+}
+
+/// A quadric case's exact answer, or `None` for a non-finite input.
+#[cfg(feature = "quadric")]
+pub fn quadric(ray: &Ray, q: &Quadric) -> Option<(QuadricHit, Exact)> {
+    let eq = quadric::exact::quadratic(ray, q).ok()?;
+    let exact = quadric::exact::classify(&eq);
+    Some((exact, quadric_given(ray, q, &eq, exact)))
+}
+
+/// [`quadric`], given the exact quadratic and its solution.
+#[cfg(feature = "quadric")]
+pub(crate) fn quadric_given(
+    ray: &Ray,
+    q: &Quadric,
+    eq: &crate::exact::Quadratic,
+    exact: QuadricHit,
+) -> Exact {
+    let roots = (!exact.is_everywhere()).then(|| exact.roots().as_slice().to_vec());
+    let double = matches!(exact, QuadricHit::One(_)) && !eq.alpha.is_zero();
+    let kappa = roots
+        .iter()
+        .flatten()
+        .map(|&t| {
+            if double {
+                f64::INFINITY
+            } else {
+                quadric_kappa_at(ray, q, eq, t as f64)
+            }
+        })
+        .collect();
+    Exact {
+        roots,
+        kappa,
+        margin: eq.discriminant().to_f64(),
+        band: quadric_band(ray, q),
+        alpha: Some((eq.alpha.to_f64(), alpha_terms(ray, q) * 2f64.powi(-44))),
+        small_integers: small_integers(&[&ray.origin.to_array(), &ray.dir.to_array(), &q.coeffs]),
+    }
+}
+
+/// The plane root's condition number, as the plane module documents it:
+/// `κ = Σ|dᵢnᵢ| / |d·n| + Σ|(aᵢ−oᵢ)nᵢ| / |(a−o)·n|`, with the two dot
+/// products exact (a `0/0` term counts as 0, `x/0` as ∞). NaN for a
+/// non-finite input.
+///
+/// ```
+/// use rayoracle::check::plane_condition;
+/// use rayoracle::{Ray, plane::Plane};
+/// use glam::Vec3;
+/// let k = plane_condition(&Ray::new(Vec3::ZERO, Vec3::Z), &Plane::new(Vec3::Z, Vec3::Z));
+/// assert_eq!(k, 2.0);
+/// ```
+#[cfg(feature = "plane")]
+pub fn plane_condition(ray: &Ray, p: &Plane) -> f64 {
+    let (Ok(o), Ok(d), Ok(a), Ok(n)) = (
+        vec3(ray.origin.to_array()),
+        vec3(ray.dir.to_array()),
+        vec3(p.point.to_array()),
+        vec3(p.normal.to_array()),
+    ) else {
+        return f64::NAN;
+    };
+    let den = dot(&d, &n).to_f64().abs();
+    let num = dot(&sub3(&a, &o), &n).to_f64().abs();
+    let sd: f64 = (0..3)
+        .map(|i| (ray.dir[i] as f64 * p.normal[i] as f64).abs())
+        .sum();
+    let sn: f64 = (0..3)
+        .map(|i| ((p.point[i] as f64 - ray.origin[i] as f64) * p.normal[i] as f64).abs())
+        .sum();
+    let ratio = |s: f64, x: f64| if s == 0.0 { 0.0 } else { s / x };
+    ratio(sd, den) + ratio(sn, num)
+}
+
+/// [`quadric::condition`]'s κ, `(3Σ|α terms| t² + 3Σ|β terms| |t| +
+/// 3Σ|γ terms|) / (|2αt + β| |t|)`, at a given root `t`, with the exact α
+/// and β in `p'(t) = 2αt + β`.
+#[cfg(feature = "quadric")]
+fn quadric_kappa_at(ray: &Ray, q: &Quadric, eq: &crate::exact::Quadratic, t: f64) -> f64 {
+    let (at, bt, gt) = quadric::terms(ray, q);
+    let abs_sum = |xs: &[f64]| xs.iter().map(|x| x.abs()).sum::<f64>();
+    let (sa, sb, sg) = (abs_sum(&at), abs_sum(&bt), abs_sum(&gt));
+    if t == 0.0 || !t.is_finite() {
+        // A zero root is exact when γ has no terms at all.
+        return if t == 0.0 && sg == 0.0 {
+            0.0
+        } else {
+            f64::INFINITY
+        };
+    }
+    let dp = (2.0 * eq.alpha.to_f64() * t + eq.beta.to_f64()).abs();
+    (3.0 * sa * t * t + 3.0 * sb * t.abs() + 3.0 * sg) / (dp * t.abs())
+}
+
+/// The sphere's unit band, in units of the margin `aΔ = (aR)² − |af −
+/// bd|²`: `a²(R² + R|f|)·2⁻⁴⁴`. Near a tangent `|af − bd| ≈ aR`, and a
+/// careful kernel forms it with an error of about `a|f|` times its
+/// precision, so its square errs by about `2a²R|f|` times that. A band
+/// from `(a|f|)²` instead would forgive a plain f32 kernel every class of
+/// a far sphere.
+#[cfg(feature = "sphere")]
+fn sphere_band(ray: &Ray, s: &Sphere) -> f64 {
+    let d = ray.dir.as_dvec3();
+    let f = ray.origin.as_dvec3() - s.center.as_dvec3();
+    let (a, r) = (d.length_squared(), f64::from(s.radius).abs());
+    a * a * (r * r + r * f.length()) * 2f64.powi(-44)
+}
+
+/// The plane's unit band on the margin `d·n`: `2⁻⁴⁴ Σ|dᵢnᵢ|`.
+#[cfg(feature = "plane")]
+fn plane_band(ray: &Ray, p: &Plane) -> f64 {
+    let s: f64 = (0..3)
+        .map(|i| (f64::from(ray.dir[i]) * f64::from(p.normal[i])).abs())
+        .sum();
+    s * 2f64.powi(-44)
+}
+
+/// The quadric's unit band on the discriminant `β² − 4αγ`: `2⁻⁴⁰((Σ|β
+/// terms|)² + 4 Σ|α terms| Σ|γ terms|)`.
+#[cfg(feature = "quadric")]
+fn quadric_band(ray: &Ray, q: &Quadric) -> f64 {
+    let (a, b, g) = quadric::terms(ray, q);
+    let sum = |x: &[f64]| x.iter().map(|x| x.abs()).sum::<f64>();
+    let (sa, sb, sg) = (sum(&a), sum(&b), sum(&g));
+    (sb * sb + 4.0 * sa * sg) * 2f64.powi(-40)
+}
+
+/// `Σ |kᵢ dⱼ dₖ|` over α's six terms: the scale α's rounding error is
+/// relative to.
+#[cfg(feature = "quadric")]
+fn alpha_terms(ray: &Ray, q: &Quadric) -> f64 {
+    let k = q.coeffs.map(f64::from);
+    let dd = ray.dir.to_array().map(f64::from);
+    (k[0] * dd[0] * dd[0]).abs()
+        + (k[1] * dd[1] * dd[1]).abs()
+        + (k[2] * dd[2] * dd[2]).abs()
+        + (k[3] * dd[0] * dd[1]).abs()
+        + (k[4] * dd[0] * dd[2]).abs()
+        + (k[5] * dd[1] * dd[2]).abs()
+}
+
+/// One root compared with the exact one, and what was allowed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RootJudged {
+    /// Which exact root (ascending).
+    pub index: usize,
+    /// The exact, correctly rounded root.
+    pub exact: f32,
+    /// The kernel's root.
+    pub got: f32,
+    /// The distance between them in ulps.
+    pub ulps: u64,
+    /// The ulps allowed ([`Declared::allowed_ulps`] at κ).
+    pub allowed: f64,
+    /// The root's condition number.
+    pub kappa: f64,
+}
+
+impl RootJudged {
+    fn new(d: &Declared, index: usize, exact: f32, got: f32, kappa: f64) -> RootJudged {
+        RootJudged {
+            index,
+            exact,
+            got,
+            ulps: ulps(exact, got),
+            allowed: d.allowed_ulps(kappa),
+            kappa,
+        }
+    }
+
+    /// Whether the root is within what is allowed: the exact root's bits
+    /// where nothing is.
+    ///
+    /// ```
+    /// use rayoracle::check::rules::RootJudged;
+    /// let r = RootJudged { index: 0, exact: 0.0, got: -0.0, ulps: 0, allowed: 0.0, kappa: 1.0 };
+    /// assert!(!r.ok() && RootJudged { allowed: 1.0, ..r }.ok());
+    /// ```
+    pub fn ok(&self) -> bool {
+        root_within(self.exact, self.got, self.allowed)
+    }
+}
+
+/// Whether `got` is within `allowed` ulps of `exact`; where nothing is
+/// allowed, whether it is `exact`'s bits (`−0` is not `+0`).
+///
+/// ```
+/// use rayoracle::check::rules::root_within;
+/// assert!(root_within(1.0, 1.0, 0.0) && !root_within(0.0, -0.0, 0.0));
+/// assert!(root_within(1.0, 1.0 + f32::EPSILON, 1.0) && !root_within(1.0, f32::NAN, 1e9));
+/// ```
+pub fn root_within(exact: f32, got: f32, allowed: f64) -> bool {
+    if allowed == 0.0 {
+        got.to_bits() == exact.to_bits()
+    } else {
+        ulps(exact, got) as f64 <= allowed
+    }
+}
+
+/// Why an answer fails; its `Display` is the reason the gate prints.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Fault {
+    /// The lanes of a four-lane kernel disagree (the message).
+    Inconsistent(String),
+    /// A root is NaN.
+    NanRoot,
+    /// A different class, outside the band.
+    Class,
+    /// Every `t` solves it and the kernel says otherwise.
+    NotEverywhere,
+    /// The answer is of the other semantics.
+    Semantics(Semantics),
+    /// Whole-line roots out of order.
+    NotAscending,
+    /// A root farther from the exact one than allowed.
+    Root(RootJudged),
+    /// With a small α, a root near none of the exact ones.
+    Stray(f32),
+    /// With α = 0, neither of two roots is the exact one.
+    Neither(f32),
+    /// A nearest hit that exists was missed.
+    Missed,
+    /// A nearest hit at `t ≤ 0` was returned.
+    NotPositive,
+    /// A nearest hit where there is none.
+    Spurious,
+}
+
+impl fmt::Display for Fault {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Fault::Inconsistent(why) => write!(f, "{why}"),
+            Fault::NanRoot => write!(f, "a NaN root"),
+            Fault::Class => write!(
+                f,
+                "a different class, and the exact margin is outside the declared band"
+            ),
+            Fault::NotEverywhere => write!(
+                f,
+                "every t solves it (the ray lies on the surface), and the kernel says otherwise"
+            ),
+            Fault::Semantics(s) => write!(f, "the kernel answers in the wrong semantics for {s:?}"),
+            Fault::NotAscending => write!(f, "the roots are not ascending"),
+            Fault::Root(r) if r.ulps == 0 => write!(
+                f,
+                "the sign of zero is not the correctly rounded root's (κ = {:.3e})",
+                r.kappa
+            ),
+            Fault::Root(r) => write!(
+                f,
+                "{} ulps from the correctly rounded root, allowed {:.1} (κ = {:.3e})",
+                r.ulps, r.allowed, r.kappa
+            ),
+            Fault::Stray(t) => write!(f, "the root {t:?} is near none of the exact roots"),
+            Fault::Neither(x) => write!(f, "neither root is near the exact root {x:?}"),
+            Fault::Missed => write!(f, "a hit was missed"),
+            Fault::NotPositive => write!(f, "a hit at t ≤ 0 was returned"),
+            Fault::Spurious => write!(f, "a hit where there is none"),
+        }
+    }
+}
+
+/// What [`judge`] found: the roots it compared one to one, and the fault,
+/// if any.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Judgement {
+    /// The roots compared with their exact counterparts (all of them when
+    /// the counts match, the nearest one in `NearestPositive`).
+    pub roots: Vec<RootJudged>,
+    /// Why the answer fails; `None` if it passes.
+    pub fault: Option<Fault>,
+}
+
+impl Judgement {
+    /// Whether the answer passes.
+    pub fn passed(&self) -> bool {
+        self.fault.is_none()
+    }
+}
+
+/// Judges `got` against the exact answer `e` under the declaration `d`, by
+/// the rules in the [module docs](self).
+///
+/// ```
+/// # #[cfg(feature = "quadric")] {
+/// use rayoracle::check::rules::{self, Answer, Declared, Fault, Semantics};
+/// use rayoracle::{Ray, quadric::Quadric};
+/// use glam::Vec3;
+/// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+/// let (_, e) = rules::quadric(&Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), &cyl).unwrap();
+/// let d = Declared::correctly_rounded(Semantics::WholeLine);
+/// assert!(rules::judge(&d, &e, &Answer::Roots(vec![4.0, 6.0])).passed());
+/// assert_eq!(rules::judge(&d, &e, &Answer::Roots(vec![4.0])).fault, Some(Fault::Class));
+/// # }
+/// ```
+pub fn judge(d: &Declared, e: &Exact, got: &Answer) -> Judgement {
+    let mut roots = Vec::new();
+    let fault = fault(d, e, got, &mut roots);
+    Judgement { roots, fault }
+}
+
+fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> Option<Fault> {
+    if let Answer::Inconsistent(why) = got {
+        return Some(Fault::Inconsistent(why.clone()));
+    }
+    let (in_band, alpha_small) = (e.in_band(d), e.alpha_small(d));
+    let kappa = |i: usize| e.kappa.get(i).copied().unwrap_or(f64::INFINITY);
+    let close = |i: usize, x: f32, g: f32| RootJudged::new(d, i, x, g, kappa(i)).ok();
+    let nan = match got {
+        Answer::Roots(g) => g.iter().any(|t| t.is_nan()),
+        Answer::Nearest(Some(t)) => t.is_nan(),
+        _ => false,
+    };
+    let expected = e.expected(d);
+    if let (Answer::Roots(x), Answer::Roots(g)) = (&expected, got) {
+        // With a band, a single root may come twice.
+        let g = match g.as_slice() {
+            [a, b] if x.len() == 1 && a == b && d.band_scale != 0.0 => &g[..1],
+            g => g,
+        };
+        if x.len() == g.len() {
+            seen.extend((0..x.len()).map(|i| RootJudged::new(d, i, x[i], g[i], kappa(i))));
+        }
+    }
+    if nan {
+        return Some(Fault::NanRoot);
+    }
+    let fault = match (&expected, got) {
+        (Answer::Everywhere, Answer::Everywhere) => return None,
+        // A ray lying on the surface has no nearest hit to compare.
+        (Answer::Everywhere, _) if d.semantics == Semantics::NearestPositive => return None,
+        (Answer::Roots(x), Answer::Roots(g)) => {
+            let one_or_two = x.len().min(g.len()) == 1 && x.len().max(g.len()) == 2;
+            if !seen.is_empty() || x.is_empty() && g.is_empty() {
+                if g.windows(2).any(|w| !(w[0] <= w[1])) {
+                    Fault::NotAscending
+                } else {
+                    Fault::Root(*seen.iter().find(|r| !r.ok())?)
+                }
+            } else if in_band {
+                // Near a double root (infinite κ) any nearby value passes.
+                return None;
+            } else if alpha_small && one_or_two && g.len() == 1 {
+                // The kernel took a tiny α for 0: its one root must be one
+                // of the exact two; what a band excuses is the count, not
+                // the values.
+                if (0..x.len()).any(|i| close(i, x[i], g[0])) {
+                    return None;
+                }
+                Fault::Stray(g[0])
+            } else if alpha_small && one_or_two {
+                // α = 0 exactly, and the kernel kept a tiny α: one of its
+                // two roots must be the exact one.
+                if g.iter().any(|&t| close(0, x[0], t)) {
+                    return None;
+                }
+                Fault::Neither(x[0])
+            } else {
+                Fault::Class
+            }
+        }
+        (Answer::Nearest(x), Answer::Nearest(g)) => match (x, g) {
+            (None, None) => return None,
+            (Some(x), Some(g)) => {
+                let i = e
+                    .roots
+                    .as_ref()
+                    .and_then(|r| r.iter().position(|t| t == x))
+                    .unwrap_or(0);
+                let r = RootJudged::new(d, i, *x, *g, kappa(i));
+                seen.push(r);
+                if r.ok() {
+                    return None;
+                }
+                Fault::Root(r)
+            }
+            // A root at t ≈ 0, or a class in the band, may go either way.
+            (Some(x), None) | (None, Some(x)) if in_band || x.abs() <= 1e-30 => return None,
+            (Some(_), None) => Fault::Missed,
+            (None, Some(g)) if *g <= 0.0 => Fault::NotPositive,
+            (None, Some(_)) => Fault::Spurious,
+        },
+        _ if in_band => return None,
+        (Answer::Everywhere, Answer::Nearest(_) | Answer::Roots(_)) => Fault::NotEverywhere,
+        _ => Fault::Semantics(d.semantics),
+    };
+    Some(fault)
+}
+
+/// One camera direction component compared with the oracle's.
+///
+/// ```
+/// use rayoracle::check::ComponentCheck;
+/// let c = ComponentCheck { axis: 0, exact: 1.0, got: 1.0, scale: 1.0, err_ulps: 0.0, bound: 4.0 };
+/// assert!(c.ok());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ComponentCheck {
+    /// 0, 1 or 2 for x, y, z.
+    pub axis: usize,
+    /// The oracle's component (rounded to f32).
+    pub exact: f32,
+    /// The candidate's component.
+    pub got: f32,
+    /// `Sᵢ`, the size of the terms the component is made of.
+    pub scale: f64,
+    /// `|got − exact| / ulp_of(Sᵢ)`; where the bits differ but the values
+    /// do not (`−0` against `+0`), the least positive f64; NaN for a NaN.
+    pub err_ulps: f64,
+    /// The allowance in ulps of `Sᵢ` ([`Declared::camera_ulps`]).
+    pub bound: f64,
+}
+
+impl ComponentCheck {
+    /// Whether the component is within its bound (NaN error is not).
+    ///
+    /// ```
+    /// use rayoracle::check::ComponentCheck;
+    /// let c = ComponentCheck { axis: 2, exact: 1.0, got: f32::NAN, scale: 1.0, err_ulps: f64::NAN, bound: 4.0 };
+    /// assert!(!c.ok());
+    /// ```
+    pub fn ok(&self) -> bool {
+        self.err_ulps <= self.bound
+    }
+}
+
+/// Why a camera's answer fails.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CameraFault {
+    /// The oracle refuses the parameters and the camera does not.
+    NotRefused,
+    /// The camera refuses valid parameters.
+    Refused,
+    /// Both refuse, with different errors.
+    OtherError,
+    /// The ray's origin is not the camera position.
+    Origin,
+    /// A direction component is outside its bound.
+    Component(ComponentCheck),
+}
+
+/// What [`judge_camera`] found: the components compared (up to the first
+/// failing one) and the fault, if any.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CameraJudgement {
+    /// The direction components compared.
+    pub components: Vec<ComponentCheck>,
+    /// Why the answer fails; `None` if it passes.
+    pub fault: Option<CameraFault>,
+}
+
+/// Whether two camera errors are the same (NaN angles compare by bits).
+fn same_error(a: &CameraError, b: &CameraError) -> bool {
+    match (a, b) {
+        (CameraError::AngleOutOfRange(x), CameraError::AngleOutOfRange(y)) => {
+            x.to_bits() == y.to_bits()
+        }
+        _ => a == b,
+    }
+}
+
+/// Judges a camera's answer for `pixel` (a ray, or a refusal with the
+/// error if the camera names one) against the oracle's, `exact`
+/// ([`camera::exact::ray`](crate::camera::exact::ray)).
+///
+/// ```
+/// use rayoracle::check::rules::{CameraFault, Declared, Semantics, judge_camera};
+/// use rayoracle::camera::{CameraParams, exact};
+/// use glam::Vec3;
+/// let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [64, 48]);
+/// let d = Declared::correctly_rounded(Semantics::WholeLine);
+/// let exact = exact::ray(&p, 5, 7);
+/// let mut ray = p.build().unwrap().ray(5, 7);
+/// assert_eq!(judge_camera(&d, &p, [5, 7], &exact, &Ok(ray)).fault, None);
+/// ray.dir.x = f32::from_bits(ray.dir.x.to_bits() + 1);
+/// let j = judge_camera(&d, &p, [5, 7], &exact, &Ok(ray));
+/// assert!(matches!(j.fault, Some(CameraFault::Component(c)) if c.axis == 0));
+/// ```
+pub fn judge_camera(
+    d: &Declared,
+    p: &CameraParams,
+    pixel: [u32; 2],
+    exact: &Result<Ray, CameraError>,
+    got: &Result<Ray, Option<CameraError>>,
+) -> CameraJudgement {
+    let mut components = Vec::new();
+    let fault = match (exact, got) {
+        (Err(_), Err(None)) => None,
+        (Err(e), Err(Some(g))) if same_error(e, g) => None,
+        (Err(_), Err(Some(_))) => Some(CameraFault::OtherError),
+        (Err(_), Ok(_)) => Some(CameraFault::NotRefused),
+        (Ok(_), Err(_)) => Some(CameraFault::Refused),
+        (Ok(x), Ok(g)) => {
+            let bits = |v: glam::Vec3| v.to_array().map(f32::to_bits);
+            // The oracle builds exactly when the reference does.
+            match p.build() {
+                _ if bits(g.origin) != bits(x.origin) => Some(CameraFault::Origin),
+                Err(_) => None,
+                Ok(cam) => {
+                    let scale = component_scale(&cam, pixel[0], pixel[1]);
+                    (0..3).find_map(|axis| {
+                        let (e, g) = (x.dir[axis], g.dir[axis]);
+                        let err_ulps = if e.to_bits() == g.to_bits() {
+                            0.0
+                        } else {
+                            let err = (f64::from(g) - f64::from(e)).abs() / ulp_of(scale[axis]);
+                            if err.is_nan() {
+                                err
+                            } else {
+                                err.max(f64::MIN_POSITIVE)
+                            }
+                        };
+                        let c = ComponentCheck {
+                            axis,
+                            exact: e,
+                            got: g,
+                            scale: scale[axis],
+                            err_ulps,
+                            bound: d.camera_ulps(),
+                        };
+                        components.push(c);
+                        (!c.ok()).then_some(CameraFault::Component(c))
+                    })
+                }
+            }
+        }
+    };
+    CameraJudgement { components, fault }
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    /// `2^bits − 1 + κ · precision · 2²⁴`, term by term; a precision of 0
+    /// allows nothing even for an infinite κ.
+    #[test]
+    fn allowed_ulps_term_by_term() {
+        let faithful = Declared::faithful(Semantics::WholeLine);
+        // 2¹ − 1 + 4 · 2⁻⁴² · 2²⁴.
+        assert_eq!(faithful.allowed_ulps(4.0), 1.0 + 4.0 * 2f64.powi(-18));
+        let f32 = Declared::f32(Semantics::WholeLine);
+        // 2² − 1 + 3 · 2⁻²² · 2²⁴.
+        assert_eq!(f32.allowed_ulps(3.0), 3.0 + 12.0);
+        assert_eq!(f32.allowed_ulps(f64::NAN), f64::INFINITY);
+        let cr = Declared::correctly_rounded(Semantics::WholeLine);
+        assert_eq!(cr.allowed_ulps(f64::INFINITY), 0.0);
+        assert_eq!(cr.allowed_ulps(f64::NAN), 0.0);
+        // A camera gets at least CAMERA_ULPS unless nothing is allowed.
+        assert_eq!(f32.camera_ulps(), 3.0 + 16.0);
+        assert_eq!(cr.camera_ulps(), 0.0);
+        assert_eq!(Declared { bits: 0.5, ..cr }.camera_ulps(), CAMERA_ULPS);
+    }
+
+    #[test]
+    fn unit_dirs_changes_only_that() {
+        let d = Declared::faithful(Semantics::NearestPositive);
+        let u = d.unit_dirs();
+        assert!(!d.unit_dirs_only && u.unit_dirs_only);
+        assert_eq!(
+            Declared {
+                unit_dirs_only: false,
+                ..u
+            },
+            d
+        );
+    }
+
+    /// `a² (r² + r|f|) 2⁻⁴⁴` with `a = d·d = 4`, `r = 3`, `f = o − c =
+    /// (3, 4, 0)`: `16 · (9 + 15) · 2⁻⁴⁴`. (With `r = 2`, `r·r` and `r + r`
+    /// agree.)
+    #[cfg(feature = "sphere")]
+    #[test]
+    fn sphere_band_term_by_term() {
+        let ray = Ray::new(Vec3::new(4.0, 4.0, 0.0), Vec3::new(0.0, 0.0, 2.0));
+        let s = Sphere::new(Vec3::X, 3.0);
+        assert_eq!(sphere_band(&ray, &s), 384.0 * 2f64.powi(-44));
+    }
+
+    /// `Σ |kᵢ dⱼ dₖ|` for `k = 1..6` and `d = (2, 3, 5)`:
+    /// 4 + 18 + 75 + 4·6 + 5·10 + 6·15 = 261.
+    #[cfg(feature = "quadric")]
+    #[test]
+    fn alpha_terms_term_by_term() {
+        let q = Quadric::new([1.0, 2.0, -3.0, 4.0, 5.0, -6.0, 7.0, 8.0, 9.0, 10.0]);
+        let ray = Ray::new(Vec3::ONE, Vec3::new(2.0, 3.0, -5.0));
+        assert_eq!(alpha_terms(&ray, &q), 261.0);
+    }
+
+    /// The sphere's margin is `α · (β² − 4αγ) / 4`: from z = −5 along
+    /// (0, 0, 2) to the unit sphere, α = 4, β = −20, γ = 24, so
+    /// 4 · 16 / 4 = 16. A band of 32 holds it and a band of 8 does not;
+    /// no band holds nothing.
+    #[cfg(feature = "sphere")]
+    #[test]
+    fn the_sphere_margin_against_its_band() {
+        let (ray, s) = (
+            Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::new(0.0, 0.0, 2.0)),
+            Sphere::new(Vec3::ZERO, 1.0),
+        );
+        let (_, e) = sphere(&ray, &s).unwrap();
+        assert_eq!(e.margin, 16.0);
+        // sphere_band = 4² · (1 + 5) · 2⁻⁴⁴ = 96 · 2⁻⁴⁴.
+        let with_band = |band: f64| Declared {
+            band_scale: band / (96.0 * 2f64.powi(-44)),
+            ..Declared::f32(Semantics::WholeLine)
+        };
+        assert!(e.in_band(&with_band(32.0)));
+        assert!(!e.in_band(&with_band(8.0)));
+        assert!(!e.in_band(&Declared::correctly_rounded(Semantics::WholeLine)));
+    }
+
+    /// A zero margin is in any band but none; on small integers in none.
+    #[cfg(feature = "plane")]
+    #[test]
+    fn a_zero_margin_is_in_every_band_but_none() {
+        let p = Plane::new(Vec3::ZERO, Vec3::Y);
+        let (_, on) = plane(&Ray::new(Vec3::ZERO, Vec3::X), &p).unwrap();
+        let (_, off) = plane(&Ray::new(Vec3::splat(0.5), Vec3::X), &p).unwrap();
+        let f32 = Declared::f32(Semantics::WholeLine);
+        assert_eq!((on.margin, on.small_integers), (0.0, true));
+        assert!(!on.in_band(&f32));
+        assert_eq!((off.margin, off.small_integers), (0.0, false));
+        assert!(off.in_band(&f32));
+        assert!(!off.in_band(&Declared::correctly_rounded(Semantics::WholeLine)));
+    }
+
+    /// A plane's band is scaled by the declared factor, not offset by it:
+    /// a ray at 30° to the plane is far outside rayoracle's own band.
+    #[cfg(feature = "plane")]
+    #[test]
+    fn a_steep_ray_is_outside_the_plane_band() {
+        let (ray, p) = (
+            Ray::new(Vec3::Y, Vec3::new(1.0, -0.5, 0.0)),
+            Plane::new(Vec3::ZERO, Vec3::Y),
+        );
+        let (_, e) = plane(&ray, &p).unwrap();
+        assert!(!e.in_band(&Declared::faithful(Semantics::WholeLine)));
+    }
+
+    /// The quadric margin (here β² − 4αγ = 100 − 99.0625 = 0.9375) is
+    /// judged against the band times the declared scale.
+    #[cfg(feature = "quadric")]
+    #[test]
+    fn the_quadric_margin_against_its_band() {
+        let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+        let r = Ray::new(Vec3::new(0.0, 0.875, -5.0), Vec3::Z);
+        let (_, e) = quadric(&r, &ball).unwrap();
+        assert_eq!((e.margin, e.band), (0.9375, quadric_band(&r, &ball)));
+        let with_band = |band: f64| Declared {
+            band_scale: band / e.band,
+            ..Declared::f32(Semantics::WholeLine)
+        };
+        assert!(e.in_band(&with_band(2.0 * 0.9375)));
+        assert!(!e.in_band(&with_band(0.5 * 0.9375)));
+    }
+
+    /// `x² − (1 − 2⁻²⁴)y² + z − 1` along `(1, 1, 1)`: α = 2⁻²⁴ against
+    /// terms 2 − 2⁻²⁴, so α is small for a band scale of 2²⁰ (bound 2⁻²³ −
+    /// 2⁻⁴⁸) and not for 2¹⁹ (bound 2⁻²⁴ − 2⁻⁴⁹) nor without a band; and
+    /// small-integer inputs never are.
+    #[cfg(feature = "quadric")]
+    #[test]
+    fn alpha_small_at_its_bound() {
+        let q = tiny_alpha();
+        let scaled = |e: i32| Declared {
+            band_scale: 2f64.powi(e),
+            ..Declared::f32(Semantics::WholeLine)
+        };
+        let (_, e) = quadric(&Ray::new(Vec3::ZERO, Vec3::ONE), &q).unwrap();
+        assert!(e.alpha_small(&scaled(20)));
+        assert!(!e.alpha_small(&scaled(19)));
+        assert!(!e.alpha_small(&Declared::correctly_rounded(Semantics::WholeLine)));
+        // The unit sphere as a quadric, from (0, 0.875, −5): α = 1.
+        let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+        let r = Ray::new(Vec3::new(0.0, 0.875, -5.0), Vec3::Z);
+        assert!(!quadric(&r, &ball).unwrap().1.alpha_small(&scaled(20)));
+        // x² − y² + z − 1 along (1, 1, 1): α = 0 exactly, on small integers.
+        let q = Quadric::new([1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, -1.0]);
+        let (_, e) = quadric(&Ray::new(Vec3::ZERO, Vec3::ONE), &q).unwrap();
+        assert_eq!(e.alpha, Some((0.0, 2f64.powi(-43))));
+        assert!(!e.alpha_small(&scaled(20)));
+    }
+
+    /// κ at a root by hand: the unit sphere as a quadric, o = (0, 0, −5),
+    /// d = z. The term sums are 1 (α), 10 (β) and 25 + 1 (γ), and
+    /// p'(t) = 2t − 10, so κ(4) = (48 + 120 + 78) / (2·4) and κ(6) =
+    /// (108 + 180 + 78) / (2·6). A zero root is exact only without γ terms.
+    #[cfg(feature = "quadric")]
+    #[test]
+    fn quadric_kappa_at_a_root_by_hand() {
+        let q = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+        let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
+        let eq = quadric::exact::quadratic(&ray, &q).unwrap();
+        assert_eq!(quadric_kappa_at(&ray, &q, &eq, 4.0), 30.75);
+        assert_eq!(quadric_kappa_at(&ray, &q, &eq, 6.0), 30.5);
+        assert_eq!(quadric(&ray, &q).unwrap().1.kappa, [30.75, 30.5]);
+        assert_eq!(
+            quadric_kappa_at(&ray, &q, &eq, f64::INFINITY),
+            f64::INFINITY
+        );
+        assert_eq!(quadric_kappa_at(&ray, &q, &eq, 0.0), f64::INFINITY);
+        // A cone x² + y² − z² = 0 from its apex: no γ term at all.
+        let cone = Quadric::new([1.0, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
+        let apex = Ray::new(Vec3::ZERO, Vec3::new(1.0, 0.0, 2.0));
+        let eq = quadric::exact::quadratic(&apex, &cone).unwrap();
+        assert_eq!(quadric_kappa_at(&apex, &cone, &eq, 0.0), 0.0);
+    }
+
+    /// Two equal roots are a tangent only where there is a band: without
+    /// one they are the other class.
+    #[cfg(feature = "sphere")]
+    #[test]
+    fn a_tangent_twice_needs_a_band() {
+        let (ray, s) = (
+            Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z),
+            Sphere::new(Vec3::ZERO, 1.0),
+        );
+        let (_, e) = sphere(&ray, &s).unwrap();
+        let twice = Answer::Roots(vec![5.0, 5.0]);
+        assert!(judge(&Declared::faithful(Semantics::WholeLine), &e, &twice).passed());
+        let cr = Declared::correctly_rounded(Semantics::WholeLine);
+        assert_eq!(judge(&cr, &e, &twice).fault, Some(Fault::Class));
+        assert!(judge(&cr, &e, &Answer::Roots(vec![5.0])).passed());
+    }
+
+    /// The roots compared are recorded whatever the fault: a NaN root and
+    /// unsorted roots still list each pair.
+    #[cfg(feature = "sphere")]
+    #[test]
+    fn the_roots_compared_are_recorded() {
+        let (ray, s) = (
+            Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z),
+            Sphere::new(Vec3::ZERO, 1.0),
+        );
+        let (_, e) = sphere(&ray, &s).unwrap();
+        let d = Declared::correctly_rounded(Semantics::WholeLine);
+        let j = judge(&d, &e, &Answer::Roots(vec![6.0, 4.0]));
+        assert_eq!(j.fault, Some(Fault::NotAscending));
+        assert_eq!(
+            j.roots.iter().map(|r| r.ulps).collect::<Vec<_>>(),
+            [1 << 22, 1 << 22]
+        );
+        let j = judge(&d, &e, &Answer::Roots(vec![4.0, f32::NAN]));
+        assert_eq!((j.fault, j.roots[1].ulps), (Some(Fault::NanRoot), u64::MAX));
+        let j = judge(&d, &e, &Answer::Roots(vec![-0.0, 6.0]));
+        assert!(matches!(j.fault, Some(Fault::Root(r)) if r.index == 0));
+        assert_eq!(
+            j.fault.unwrap().to_string(),
+            format!(
+                "{} ulps from the correctly rounded root, allowed 0.0 (κ = {:.3e})",
+                ulps(4.0, -0.0),
+                e.kappa[0]
+            )
+        );
+    }
+
+    /// A NaN camera component is out of any bound, and a +0 for the
+    /// centre pixel's −0 only out of a zero one.
+    #[test]
+    fn a_nan_camera_component_fails_any_bound() {
+        let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [3, 3]);
+        let exact = crate::camera::exact::ray(&p, 1, 1);
+        assert_eq!(exact.unwrap().dir.x.to_bits(), (-0f32).to_bits());
+        let with_x = |x: f32| {
+            let mut r = exact.unwrap();
+            r.dir.x = x;
+            Ok(r)
+        };
+        let f32 = Declared::f32(Semantics::WholeLine);
+        let cr = Declared::correctly_rounded(Semantics::WholeLine);
+        let fault = |d: &Declared, x: f32| judge_camera(d, &p, [1, 1], &exact, &with_x(x)).fault;
+        assert!(
+            matches!(fault(&f32, f32::NAN), Some(CameraFault::Component(c)) if c.err_ulps.is_nan())
+        );
+        assert_eq!(fault(&f32, 0.0), None);
+        assert!(
+            matches!(fault(&cr, 0.0), Some(CameraFault::Component(c)) if c.err_ulps == f64::MIN_POSITIVE)
+        );
+        let moved = Ok(Ray::new(Vec3::X, exact.unwrap().dir));
+        assert_eq!(
+            judge_camera(&f32, &p, [1, 1], &exact, &moved).fault,
+            Some(CameraFault::Origin)
+        );
+    }
+
+    /// `x² − (1 − 2⁻²⁴)y² + z − 1`, crossed along `(1, 1, 1)` from 0 with
+    /// α = 2⁻²⁴.
+    #[cfg(feature = "quadric")]
+    pub(crate) fn tiny_alpha() -> Quadric {
+        Quadric::new([
+            1.0,
+            -(1.0 - 2f32.powi(-24)),
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            1.0,
+            -1.0,
+        ])
+    }
+}
