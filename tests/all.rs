@@ -10,6 +10,7 @@ mod determinism;
 mod fixtures;
 mod known_wrong;
 mod non_finite;
+mod one_judge;
 mod props_camera;
 mod props_plane;
 mod props_quadric;
