@@ -2,8 +2,8 @@
 //! of a case is ([`Exact`]), what a kernel declares it promises
 //! ([`Declared`]), and one [`judge`] that compares the two. rayoracle's own
 //! kernels are held by [`check`](super) to the strictest declaration,
-//! [`Declared::correctly_rounded`]; [`gate`](super::gate) holds an outside
-//! kernel to the declaration its author chooses. Both call the same
+//! [`Declared::correctly_rounded`]; the gate (`check::gate`) holds an
+//! outside kernel to the declaration its author chooses. Both call the same
 //! [`judge`] (and [`judge_camera`]), so a rule changed here changes for
 //! both.
 //!
@@ -97,8 +97,8 @@ pub enum Answer {
     Nearest(Option<f32>),
     /// Every `t` is a solution (a ray in the plane, a line on the quadric).
     Everywhere,
-    /// The [`Lanes`](super::gate::Lanes) adapter saw the lanes disagree;
-    /// always a failure.
+    /// The gate's `Lanes` adapter saw the lanes disagree; always a
+    /// failure.
     Inconsistent(String),
 }
 
@@ -193,10 +193,10 @@ impl Declared {
         }
     }
 
-    /// A correctly rounded kernel, what rayoracle's own promise: every root
-    /// the exact root's bits, whatever its κ, the exact class (no band),
-    /// and every camera component the oracle's bits. [`check`](super)
-    /// holds rayoracle's kernels to this.
+    /// A correctly rounded kernel, what rayoracle's own kernels promise:
+    /// every root the exact root's bits, whatever its κ, the exact class
+    /// (no band), and every camera component the oracle's bits.
+    /// [`check`](super) holds rayoracle's kernels to this.
     ///
     /// ```
     /// use rayoracle::check::rules::{Declared, Semantics};

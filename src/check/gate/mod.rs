@@ -22,7 +22,8 @@
 //! `fixtures/cases/KIND.jsonl`, of the stiff catalogue (`fixtures/stiff/`),
 //! and of seeded random families (`random/*`). Every case is judged against
 //! the exact oracle by the declared [`Semantics`] and tolerance
-//! ([`Declared`]). A failing case is shrunk (fewer significant bits, small
+//! ([`Declared`]), by the rules of [`rules`], which
+//! rayoracle's own [`check`](super) shares. A failing case is shrunk (fewer significant bits, small
 //! integers, zeros, while it still fails) and reported with its inputs as
 //! an `eval` line, the expected and computed answers, the ulps and the
 //! family ([`Failure`]).
