@@ -429,11 +429,11 @@ fn exact_answer(
 #[cfg(feature = "plane")]
 pub fn check_plane(ray: &Ray, p: &Plane, got: PlaneHit) -> Result<CaseReport, Violation> {
     let Ok(exact) = plane::exact::intersect(ray, p) else {
-        let mut r = report("plane", "non_finite", got.class());
+        let mut r = report("plane", "non_finite", got.class().as_str());
         r.status = Status::NonFinite;
         return Ok(r);
     };
-    let mut r = report("plane", exact.class(), got.class());
+    let mut r = report("plane", exact.class().as_str(), got.class().as_str());
     // Finite inputs, so the exact d·n exists.
     let d = vec3(ray.dir.to_array()).expect("finite");
     let n = vec3(p.normal.to_array()).expect("finite");
@@ -460,7 +460,7 @@ pub fn check_plane(ray: &Ray, p: &Plane, got: PlaneHit) -> Result<CaseReport, Vi
 #[cfg(feature = "sphere")]
 pub fn check_sphere(ray: &Ray, s: &Sphere, got: SphereHit) -> Result<CaseReport, Violation> {
     let Ok(q) = sphere::exact::quadratic(ray, s) else {
-        let mut r = report("sphere", "non_finite", got.class());
+        let mut r = report("sphere", "non_finite", got.class().as_str());
         r.status = Status::NonFinite;
         return Ok(r);
     };
@@ -477,7 +477,7 @@ fn check_sphere_against(
     q: &crate::exact::Quadratic,
     exact: SphereHit,
 ) -> Result<CaseReport, Violation> {
-    let mut r = report("sphere", exact.class(), got.class());
+    let mut r = report("sphere", exact.class().as_str(), got.class().as_str());
     r.margin = (&q.alpha * &q.discriminant()).mul_pow2(-2).to_f64();
     let tangent = matches!(exact, SphereHit::Tangent(_));
     exact_answer(r, exact.roots().as_slice(), got.roots().as_slice(), |t| {
@@ -505,7 +505,7 @@ fn check_sphere_against(
 #[cfg(feature = "quadric")]
 pub fn check_quadric(ray: &Ray, q: &Quadric, got: QuadricHit) -> Result<CaseReport, Violation> {
     let Ok(eq) = quadric::exact::quadratic(ray, q) else {
-        let mut r = report("quadric", "non_finite", got.class());
+        let mut r = report("quadric", "non_finite", got.class().as_str());
         r.status = Status::NonFinite;
         return Ok(r);
     };
@@ -522,7 +522,7 @@ fn check_quadric_against(
     eq: &crate::exact::Quadratic,
     exact: QuadricHit,
 ) -> Result<CaseReport, Violation> {
-    let mut r = report("quadric", exact.class(), got.class());
+    let mut r = report("quadric", exact.class().as_str(), got.class().as_str());
     r.margin = eq.discriminant().to_f64();
     let double = matches!(exact, QuadricHit::One(_)) && !eq.alpha.is_zero();
     exact_answer(r, exact.roots().as_slice(), got.roots().as_slice(), |t| {
