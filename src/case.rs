@@ -280,6 +280,8 @@ impl Fields {
 ///     r#"unknown kind "cube"; expected plane, sphere, quadric or camera"#
 /// );
 /// assert_eq!(serde_json::to_string(&Kind::Camera).unwrap(), r#""camera""#);
+/// assert_eq!(serde_json::from_str::<Kind>(r#""plane""#).unwrap(), Kind::Plane);
+/// assert!(serde_json::from_str::<Kind>(r#""cube""#).unwrap_err().to_string().contains("unknown kind"));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Kind {
@@ -598,6 +600,19 @@ mod tests {
             );
         }
         assert!(compiled_out > 0);
+    }
+
+    /// `Kind::ALL` is in declaration order (tallies index by `kind as
+    /// usize`), every name reads back to its kind, and a name differing
+    /// only in case is unknown.
+    #[test]
+    fn kinds_are_listed_in_order_and_read_back() {
+        for (i, k) in Kind::ALL.into_iter().enumerate() {
+            assert_eq!(k as usize, i);
+            assert_eq!(k.as_str().parse(), Ok(k));
+            assert_eq!(k.to_string(), k.as_str());
+        }
+        assert_eq!("Plane".parse::<Kind>(), Err(UnknownKind("Plane".into())));
     }
 
     #[test]

@@ -241,3 +241,24 @@ pub fn same_bits<H: Intersection>(a: &H, b: &H) -> bool {
             .zip(rb.as_slice())
             .all(|(&x, &y)| same(x, y))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Class;
+
+    /// Every class has its own name, which reads back to it, and compares
+    /// equal to it as a string.
+    #[test]
+    fn every_class_name_is_distinct_and_reads_back() {
+        let mut names: Vec<&str> = Class::ALL.iter().map(|c| c.as_str()).collect();
+        for c in Class::ALL {
+            assert_eq!(c.as_str().parse(), Ok(c));
+            assert!(c == c.as_str());
+            assert_eq!(serde_json::to_string(&c).unwrap(), format!("\"{c}\""));
+        }
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), Class::ALL.len());
+        assert!(Class::Hit != "hit ");
+    }
+}

@@ -602,27 +602,50 @@ mod tests {
     use arbitrary::{Arbitrary, Unstructured};
 
     /// What `encode_case` writes, the targets' decoder reads back: the
-    /// same four cases (bit for bit, −0 and NaN included) and the interval.
+    /// same four cases (bit for bit, −0 and NaN included) and the interval,
+    /// for every primitive (each decoy, and the ray below with the decoy's
+    /// primitive, its inputs negated).
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+    fn encoded_cases_decode_to_themselves<P: crate::primitive::Primitive>() {
+        use super::{decode, encode_case, one};
+        use crate::Ray;
+        use glam::Vec3;
+        let odd = Ray::new(Vec3::new(-0.0, 1.5, f32::NAN), Vec3::new(3.0, -2.0, 1e-40));
+        let negated = |p: &P| P::from_inputs(&P::inputs(p).iter().map(|x| -x).collect::<Vec<_>>());
+        let mut all: Vec<(Ray, P)> = P::decoys().to_vec();
+        all.extend(P::decoys().iter().map(|(_, p)| (odd, negated(p))));
+        let bits = |r: Ray, p: P| {
+            let mut v: Vec<f32> = [r.origin.to_array(), r.dir.to_array()].concat();
+            v.extend(P::inputs(&p));
+            v.into_iter().map(f32::to_bits).collect::<Vec<u32>>()
+        };
+        for (r, p) in all {
+            let mut b = Vec::new();
+            encode_case(&P::case(r, p), &mut b);
+            let (cases, interval) = decode(&b, one::<P>).unwrap();
+            for (rd, pd) in cases {
+                assert_eq!(bits(rd, pd), bits(r, p), "{:?}", P::KIND);
+            }
+            assert_eq!((interval.0, interval.1), (0.0, f32::INFINITY));
+        }
+    }
+
+    #[cfg(feature = "plane")]
+    #[test]
+    fn an_encoded_plane_case_decodes_to_itself() {
+        encoded_cases_decode_to_themselves::<crate::plane::Plane>();
+    }
+
     #[cfg(feature = "sphere")]
     #[test]
     fn an_encoded_sphere_case_decodes_to_itself() {
-        use super::{decode, encode_case, one};
-        use crate::{Ray, case::Case, sphere::Sphere};
-        use glam::Vec3;
-        let (r, s) = (
-            Ray::new(Vec3::new(-0.0, 1.5, f32::NAN), Vec3::new(3.0, -2.0, 1e-40)),
-            Sphere::new(Vec3::new(7.0, -8.0, 9.0), 0.25),
-        );
-        let mut b = Vec::new();
-        encode_case(&Case::Sphere(r, s), &mut b);
-        let (cases, interval) = decode(&b, one::<Sphere>).unwrap();
-        let bits = |v: Vec3| v.to_array().map(f32::to_bits);
-        for (rd, sd) in cases {
-            assert_eq!(bits(rd.origin), bits(r.origin));
-            assert_eq!(bits(rd.dir), bits(r.dir));
-            assert_eq!((bits(sd.center), sd.radius), (bits(s.center), s.radius));
-        }
-        assert!(interval.0 <= interval.1, "{interval:?}");
+        encoded_cases_decode_to_themselves::<crate::sphere::Sphere>();
+    }
+
+    #[cfg(feature = "quadric")]
+    #[test]
+    fn an_encoded_quadric_case_decodes_to_itself() {
+        encoded_cases_decode_to_themselves::<crate::quadric::Quadric>();
     }
 
     /// A violation becomes a failure naming its lane and case; an
