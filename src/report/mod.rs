@@ -50,8 +50,8 @@ pub const KERNELS: [Kind; 4] = [Kind::Sphere, Kind::Plane, Kind::Quadric, Kind::
 /// One kernel × variant × family line of the report (also its JSON form).
 ///
 /// ```
-/// use rayoracle::report::Row;
-/// let r = Row { kernel: "sphere".into(), variant: "x4".into(), family: "sphere/far-tiny".into(),
+/// use rayoracle::{case::Kind, report::{Row, Variant}};
+/// let r = Row { kernel: Kind::Sphere, variant: Variant::X4, family: "sphere/far-tiny".into(),
 ///     conditioning: "well".into(), cases: 4, max_bits: 1.0, p99_bits: 1.0, mean_bits: 0.25,
 ///     class_mismatches: 0, ns_per_ray: 20.0, stages: [("filter".into(), 0.75), ("exact".into(), 0.25)].into(),
 ///     front: true };
@@ -61,10 +61,10 @@ pub const KERNELS: [Kind; 4] = [Kind::Sphere, Kind::Plane, Kind::Quadric, Kind::
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Row {
-    /// `sphere`, `plane`, `quadric` or `camera`.
-    pub kernel: String,
-    /// [`Variant::name`].
-    pub variant: String,
+    /// The kernel (its name in JSON).
+    pub kernel: Kind,
+    /// The variant ([`Variant::name`] in JSON).
+    pub variant: Variant,
     /// The family, `kernel/name`.
     pub family: String,
     /// `well` or `ill`, as the catalogue says of the family.
@@ -173,8 +173,8 @@ fn accuracy_against(
         bits.iter().sum::<f64>() / bits.len() as f64
     };
     Row {
-        kernel: family.kernel.as_str().into(),
-        variant: variant.name().into(),
+        kernel: family.kernel,
+        variant,
         family: family.name.clone(),
         conditioning: if family.well_conditioned {
             "well"
@@ -241,8 +241,8 @@ pub fn mark_front(rows: &mut [Row]) {
             .filter(|p| p.front)
             .map(|p| p.variant)
             .collect();
-        for r in rows.iter_mut().filter(|r| r.kernel == kernel.as_str()) {
-            r.front = front.contains(&r.variant);
+        for r in rows.iter_mut().filter(|r| r.kernel == kernel) {
+            r.front = front.iter().any(|v| v == r.variant.name());
         }
     }
 }
@@ -336,7 +336,7 @@ pub fn points(rows: &[Row], kernel: Kind) -> Vec<Point> {
         .filter_map(|v| {
             let mine: Vec<&Row> = rows
                 .iter()
-                .filter(|r| r.kernel == kernel.as_str() && r.variant == v.name())
+                .filter(|r| r.kernel == kernel && r.variant == v)
                 .collect();
             if mine.is_empty() {
                 return None;
@@ -369,10 +369,7 @@ pub fn points(rows: &[Row], kernel: Kind) -> Vec<Point> {
 pub fn markdown(rows: &[Row], catalogue: &Catalogue) -> String {
     let mut out = String::new();
     for kernel in KERNELS {
-        let mine: Vec<&Row> = rows
-            .iter()
-            .filter(|r| r.kernel == kernel.as_str())
-            .collect();
+        let mine: Vec<&Row> = rows.iter().filter(|r| r.kernel == kernel).collect();
         if mine.is_empty() {
             continue;
         }
@@ -428,7 +425,7 @@ pub fn markdown(rows: &[Row], catalogue: &Catalogue) -> String {
 #[cfg(test)]
 mod tests {
     use super::variant::Timed;
-    use super::{Catalogue, Row, markdown, median_pass, points};
+    use super::{Catalogue, Row, Variant, markdown, median_pass, points};
     use crate::case::Kind;
 
     /// The calibration pass sets the repetitions (2·10⁵ ns over a pass of
@@ -468,8 +465,8 @@ mod tests {
 
     fn row(kernel: &str, variant: &str, family: &str, ns: f64, mismatches: usize) -> Row {
         Row {
-            kernel: kernel.into(),
-            variant: variant.into(),
+            kernel: kernel.parse().unwrap(),
+            variant: Variant::parse(variant).unwrap(),
             family: family.into(),
             conditioning: "well".into(),
             cases: 4,
@@ -539,7 +536,7 @@ mod tests {
         super::mark_front(&mut rs);
         let front: Vec<(&str, &str, bool)> = rs
             .iter()
-            .map(|r| (r.kernel.as_str(), r.variant.as_str(), r.front))
+            .map(|r| (r.kernel.as_str(), r.variant.name(), r.front))
             .collect();
         assert_eq!(
             front,

@@ -63,6 +63,19 @@ impl Variant {
     }
 }
 
+impl core::fmt::Display for Variant {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A variant serialises as its [`name`](Variant::name).
+impl serde::Serialize for Variant {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
+}
+
 /// A family's cases, unpacked by kind (and packed four-wide for x4), so
 /// that timing measures the kernels and not a dispatch per case.
 pub(super) enum Batch {
