@@ -12,7 +12,7 @@
 /// assert_eq!("tangent".parse(), Ok(Class::Tangent));
 /// assert!("cube".parse::<Class>().is_err());
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Class {
     /// No point of the line is on the surface (sphere, quadric).
     None,
@@ -65,6 +65,14 @@ impl Class {
             Class::InPlane => "in_plane",
             Class::Ray => "ray",
         }
+    }
+}
+
+/// As its name, quoted (`"two"`): the form results and messages have
+/// always shown.
+impl core::fmt::Debug for Class {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "{:?}", self.as_str())
     }
 }
 
@@ -254,6 +262,7 @@ mod tests {
         for c in Class::ALL {
             assert_eq!(c.as_str().parse(), Ok(c));
             assert!(c == c.as_str());
+            assert_eq!(format!("{c:?}"), format!("{:?}", c.as_str()));
             assert_eq!(serde_json::to_string(&c).unwrap(), format!("\"{c}\""));
         }
         names.sort_unstable();

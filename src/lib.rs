@@ -67,7 +67,6 @@ pub mod hit;
 pub mod num;
 #[cfg(feature = "plane")]
 pub mod plane;
-#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 pub mod primitive;
 #[cfg(feature = "quadric")]
 pub mod quadric;

@@ -88,6 +88,7 @@ pub trait Primitive: Copy + core::fmt::Debug + PartialEq + Sized + 'static {
 /// the function of the same role in the primitive's module: the modules
 /// `reference`, `textbook`, `plain`, `exact` and `x4` must be in scope
 /// where it is invoked.
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 macro_rules! kernels {
     () => {
         fn reference(ray: &$crate::Ray, p: &Self) -> Self::Hit {
@@ -120,7 +121,53 @@ macro_rules! kernels {
         }
     };
 }
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 pub(crate) use kernels;
+
+/// `case` in lane `lane` of a packet and `decoys` in the other lanes, in
+/// order.
+///
+/// ```
+/// use rayoracle::primitive::packet;
+/// assert_eq!(packet(9, [1, 2, 3], 0), [9, 1, 2, 3]);
+/// assert_eq!(packet(9, [1, 2, 3], 2), [1, 2, 9, 3]);
+/// assert_eq!(packet(9, [1, 2, 3], 3), [1, 2, 3, 9]);
+/// ```
+pub fn packet<T: Copy>(case: T, decoys: [T; 3], lane: usize) -> [T; 4] {
+    let mut d = decoys.into_iter();
+    core::array::from_fn(|i| {
+        if i == lane {
+            case
+        } else {
+            d.next().unwrap_or(case)
+        }
+    })
+}
+
+/// Runs a ray and a primitive in each lane of a packet in turn, its
+/// [`Primitive::decoys`] in the other lanes: `run` takes the four cases
+/// and answers for each lane, and the result holds the answer of the
+/// case's own lane in each placement. A four-lane kernel that keeps its
+/// lanes apart gives four equal answers.
+///
+/// ```
+/// # #[cfg(feature = "sphere")] {
+/// use rayoracle::{Ray, primitive::{in_every_lane, x4_lanes}, sphere::{Sphere, SphereHit}};
+/// use glam::Vec3;
+/// let (r, s) = (Ray::new(Vec3::new(0.0, 0.0, -3.0), Vec3::Z), Sphere::new(Vec3::ZERO, 1.0));
+/// assert_eq!(in_every_lane(r, s, x4_lanes), [SphereHit::Two(2.0, 4.0); 4]);
+/// // A kernel that answers from lane 0 only is caught.
+/// let leaky = in_every_lane(r, s, |c| [x4_lanes(c)[0]; 4]);
+/// assert_ne!(leaky[1], leaky[0]);
+/// # }
+/// ```
+pub fn in_every_lane<P: Primitive, A: Clone>(
+    ray: Ray,
+    p: P,
+    run: impl Fn([(Ray, P); 4]) -> [A; 4],
+) -> [A; 4] {
+    core::array::from_fn(|lane| run(packet((ray, p), P::decoys(), lane))[lane].clone())
+}
 
 /// Runs the x4 kernel on four `(ray, primitive)` cases and unpacks the
 /// answers.
@@ -147,6 +194,7 @@ pub fn x4_packet<P: Primitive>(cases: [(Ray, P); 4]) -> P::Hit4 {
 
 /// The first `n` values of `v`, zero-padded: the fields of
 /// [`Primitive::from_inputs`].
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 pub(crate) fn padded<const N: usize>(v: &[f32]) -> [f32; N] {
     core::array::from_fn(|i| v.get(i).copied().unwrap_or(0.0))
 }
@@ -154,8 +202,10 @@ pub(crate) fn padded<const N: usize>(v: &[f32]) -> [f32; N] {
 #[cfg(test)]
 mod tests {
     use super::*;
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
     use crate::hit::{Class, same_bits};
 
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
     /// Every primitive's decoys give different classes, one of them from a
     /// NaN ray; a kind's inputs read back to the same primitive; a case
     /// built from a pair gives that pair back and is of the kind.
@@ -210,6 +260,7 @@ mod tests {
         holds_for::<crate::quadric::Quadric>();
     }
 
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
     #[test]
     fn padded_fills_missing_values_with_zero() {
         assert_eq!(padded::<3>(&[1.0]), [1.0, 0.0, 0.0]);

@@ -4,11 +4,9 @@
 
 use crate::case::{Case, match_case};
 use crate::eval::Outcome;
+use crate::primitive::packet;
 #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
-use crate::{
-    Ray,
-    primitive::{Primitive, x4_lanes},
-};
+use crate::primitive::{in_every_lane, x4_lanes};
 
 /// Neighbours for a camera pixel: two corners and the middle of the top
 /// row, all inside the image.
@@ -16,19 +14,8 @@ fn camera_decoys([w, h]: [u32; 2]) -> [[u32; 2]; 3] {
     [[0, 0], [w - 1, h - 1], [w / 2, 0]]
 }
 
-/// The case placed in lane `lane` and the decoys in the others.
-fn packet<T: Copy>(case: T, decoys: [T; 3], lane: usize) -> [T; 4] {
-    let mut d = decoys.into_iter();
-    core::array::from_fn(|i| {
-        if i == lane {
-            case
-        } else {
-            d.next().unwrap_or(case)
-        }
-    })
-}
-
-/// Runs `case` through the x4 kernels in each of the four lanes.
+/// Runs `case` through the x4 kernels in each of the four lanes
+/// ([`in_every_lane`](crate::primitive::in_every_lane) for a primitive).
 ///
 /// ```
 /// # #[cfg(feature = "sphere")] {
@@ -40,7 +27,17 @@ fn packet<T: Copy>(case: T, decoys: [T; 3], lane: usize) -> [T; 4] {
 /// # }
 /// ```
 pub fn run(case: &Case) -> Outcome {
-    let per_lane: Vec<Outcome> = (0..4).map(|lane| in_lane(case, lane)).collect();
+    let per_lane: [Outcome; 4] = match_case!(
+        case,
+        |r, p| in_every_lane(*r, *p, |c| x4_lanes(c).map(|h| Outcome::hit(&h))),
+        |p, px| match p.build() {
+            Ok(cam) => core::array::from_fn(|lane| {
+                let pk = packet(*px, camera_decoys(p.res), lane);
+                Outcome::Ray(cam.ray4(pk).to_rays()[lane])
+            }),
+            Err(e) => core::array::from_fn(|_| Outcome::Error(e.to_string())),
+        },
+    );
     if per_lane.iter().all(|o| o.same_bits(&per_lane[0])) {
         per_lane[0].clone()
     } else {
@@ -48,40 +45,10 @@ pub fn run(case: &Case) -> Outcome {
     }
 }
 
-fn in_lane(case: &Case, lane: usize) -> Outcome {
-    match_case!(
-        case,
-        |r, p| primitive_in_lane(*r, *p, lane),
-        |p, px| match p.build() {
-            Ok(cam) => {
-                let pk = packet(*px, camera_decoys(p.res), lane);
-                Outcome::Ray(cam.ray4(pk).to_rays()[lane])
-            }
-            Err(e) => Outcome::Error(e.to_string()),
-        },
-    )
-}
-
-/// A ray and a primitive in lane `lane` of a packet, its
-/// [`Primitive::decoys`] in the others.
-#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
-fn primitive_in_lane<P: Primitive>(ray: Ray, p: P, lane: usize) -> Outcome {
-    let pk = packet((ray, p), P::decoys(), lane);
-    Outcome::hit(&x4_lanes(pk)[lane])
-}
-
 #[cfg(test)]
 mod tests {
     #[test]
     fn the_camera_decoys_are_corners_and_the_top_middle() {
         assert_eq!(super::camera_decoys([5, 3]), [[0, 0], [4, 2], [2, 0]]);
-    }
-
-    /// The case is in its lane and the decoys fill the others in order.
-    #[test]
-    fn a_packet_holds_the_case_in_its_lane() {
-        assert_eq!(super::packet(9, [1, 2, 3], 0), [9, 1, 2, 3]);
-        assert_eq!(super::packet(9, [1, 2, 3], 2), [1, 2, 9, 3]);
-        assert_eq!(super::packet(9, [1, 2, 3], 3), [1, 2, 3, 9]);
     }
 }

@@ -37,7 +37,7 @@ use crate::num::Lane;
 #[cfg(feature = "plane")]
 use crate::plane::Plane;
 #[cfg(feature = "quadric")]
-use crate::quadric::{self, Quadric};
+use crate::quadric::Quadric;
 #[cfg(feature = "sphere")]
 use crate::sphere::{self, Sphere};
 #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
@@ -305,6 +305,7 @@ fn sphere_accepts(ray: &Ray, s: &Sphere, got: &sphere::SphereHit) -> bool {
         if !exact || ray.dir == Vec3::ZERO {
             return true;
         }
+        use crate::quadric;
         let Ok(eq) = quadric::exact::quadratic(ray, &q) else {
             return true;
         };
