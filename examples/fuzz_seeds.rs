@@ -32,7 +32,7 @@ fn main() -> std::io::Result<()> {
                 continue;
             };
             // The fuzz targets are named after the kinds.
-            let target = parsed.case.kind();
+            let target = parsed.case.kind().as_str();
             let mut bytes = Vec::new();
             rayoracle::fuzz::encode_case(&parsed.case, &mut bytes);
             write(root, target, &name, &bytes)?;

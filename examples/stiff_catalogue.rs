@@ -548,7 +548,7 @@ fn sphere_rel_margin(case: &Case) -> f64 {
 
 fn exact_class(case: &Case) -> (&'static str, Vec<f32>) {
     fn of(h: impl Intersection) -> (&'static str, Vec<f32>) {
-        (h.class(), h.roots().as_slice().to_vec())
+        (h.class().as_str(), h.roots().as_slice().to_vec())
     }
     match case {
         Case::Sphere(r, s) => of(sphere::exact::intersect(r, s).expect("finite")),

@@ -61,25 +61,46 @@ pub enum Case {
 }
 
 impl Case {
-    /// The `kind` string.
+    /// The case's kind.
     ///
     /// ```
-    /// use rayoracle::case::parse_line;
+    /// use rayoracle::case::{Kind, parse_line};
     /// let c = parse_line(r#"{"kind":"camera","position":[0,0,0],"dir":[0,0,-1],"up":[0,1,0],"angle":1,"res":[4,3],"pixel":[0,2]}"#).unwrap();
-    /// assert_eq!(c.case.kind(), "camera");
+    /// assert_eq!(c.case.kind(), Kind::Camera);
     /// ```
-    pub fn kind(&self) -> &'static str {
+    pub fn kind(&self) -> Kind {
         match self {
             #[cfg(feature = "plane")]
-            Case::Plane(..) => "plane",
+            Case::Plane(..) => Kind::Plane,
             #[cfg(feature = "sphere")]
-            Case::Sphere(..) => "sphere",
+            Case::Sphere(..) => Kind::Sphere,
             #[cfg(feature = "quadric")]
-            Case::Quadric(..) => "quadric",
-            Case::Camera(..) => "camera",
+            Case::Quadric(..) => Kind::Quadric,
+            Case::Camera(..) => Kind::Camera,
         }
     }
 }
+
+/// One expression per case, written once for every primitive: `$prim`
+/// with `$r` and `$p` bound to the ray and the primitive (of whichever
+/// type the case holds, so `$prim` is usually a generic call over
+/// [`crate::primitive::Primitive`]), `$camera` with `$c` and `$px` bound to
+/// the camera parameters and the pixel. The arms of kinds that are not
+/// compiled in are left out, as in [`Case`].
+macro_rules! match_case {
+    ($case:expr, |$r:pat_param, $p:pat_param| $prim:expr, |$c:pat_param, $px:pat_param| $camera:expr $(,)?) => {
+        match $case {
+            #[cfg(feature = "plane")]
+            $crate::case::Case::Plane($r, $p) => $prim,
+            #[cfg(feature = "sphere")]
+            $crate::case::Case::Sphere($r, $p) => $prim,
+            #[cfg(feature = "quadric")]
+            $crate::case::Case::Quadric($r, $p) => $prim,
+            $crate::case::Case::Camera($c, $px) => $camera,
+        }
+    };
+}
+pub(crate) use match_case;
 
 /// A case with the optional fields that travel with it.
 ///
@@ -246,33 +267,120 @@ impl Fields {
     }
 }
 
-/// Every kind a case line may name, whether or not it is compiled in.
+/// The kind of a case: which primitive, or the camera. Every kind exists
+/// whatever the build; [`Kind::compiled_in`] says whether its cases can be
+/// run. It reads and writes as the lowercase names of the `kind` field.
 ///
 /// ```
-/// assert_eq!(rayoracle::case::KINDS, ["plane", "sphere", "quadric", "camera"]);
+/// use rayoracle::case::Kind;
+/// assert_eq!(Kind::ALL.map(Kind::as_str), ["plane", "sphere", "quadric", "camera"]);
+/// assert_eq!("quadric".parse(), Ok(Kind::Quadric));
+/// assert_eq!(
+///     "cube".parse::<Kind>().unwrap_err().to_string(),
+///     r#"unknown kind "cube"; expected plane, sphere, quadric or camera"#
+/// );
+/// assert_eq!(serde_json::to_string(&Kind::Camera).unwrap(), r#""camera""#);
+/// assert_eq!(serde_json::from_str::<Kind>(r#""plane""#).unwrap(), Kind::Plane);
+/// assert!(serde_json::from_str::<Kind>(r#""cube""#).unwrap_err().to_string().contains("unknown kind"));
 /// ```
-pub const KINDS: [&str; 4] = ["plane", "sphere", "quadric", "camera"];
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Kind {
+    /// A ray against a plane.
+    Plane,
+    /// A ray against a sphere.
+    Sphere,
+    /// A ray against a quadric.
+    Quadric,
+    /// A camera and a pixel.
+    Camera,
+}
 
-/// Whether cases of `kind` exist in this build: the camera always, the
-/// plane, sphere and quadric when the cargo feature of the same name is on.
-/// [`parse_line`] reports a line of a kind that is not compiled in as an
-/// error in its `kind` field.
+impl Kind {
+    /// Every kind, in the order rayoracle lists them.
+    pub const ALL: [Kind; 4] = [Kind::Plane, Kind::Sphere, Kind::Quadric, Kind::Camera];
+
+    /// The name, as in the `kind` field.
+    ///
+    /// ```
+    /// assert_eq!(rayoracle::case::Kind::Plane.as_str(), "plane");
+    /// ```
+    pub const fn as_str(self) -> &'static str {
+        match self {
+            Kind::Plane => "plane",
+            Kind::Sphere => "sphere",
+            Kind::Quadric => "quadric",
+            Kind::Camera => "camera",
+        }
+    }
+
+    /// Whether cases of this kind exist in this build: the camera always,
+    /// the plane, sphere and quadric when the cargo feature of the same
+    /// name is on. [`parse_line`] reports a line of a kind that is not
+    /// compiled in as an error in its `kind` field.
+    ///
+    /// ```
+    /// use rayoracle::case::Kind;
+    /// assert!(Kind::Camera.compiled_in());
+    /// assert_eq!(Kind::Quadric.compiled_in(), cfg!(feature = "quadric"));
+    /// ```
+    pub const fn compiled_in(self) -> bool {
+        match self {
+            Kind::Plane => cfg!(feature = "plane"),
+            Kind::Sphere => cfg!(feature = "sphere"),
+            Kind::Quadric => cfg!(feature = "quadric"),
+            Kind::Camera => true,
+        }
+    }
+}
+
+impl core::fmt::Display for Kind {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// A kind name that is not one of [`Kind::ALL`]; the message lists them.
 ///
 /// ```
-/// use rayoracle::case::compiled_in;
-/// assert!(compiled_in("camera"));
-/// assert_eq!(compiled_in("quadric"), cfg!(feature = "quadric"));
-/// assert!(!compiled_in("cube"));
+/// let e = "torus".parse::<rayoracle::case::Kind>().unwrap_err();
+/// assert_eq!(e.0, "torus");
 /// ```
-pub fn compiled_in(kind: &str) -> bool {
-    // In the order of KINDS.
-    let on = [
-        cfg!(feature = "plane"),
-        cfg!(feature = "sphere"),
-        cfg!(feature = "quadric"),
-        true,
-    ];
-    KINDS.iter().zip(on).any(|(&k, on)| on && k == kind)
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct UnknownKind(pub String);
+
+impl core::fmt::Display for UnknownKind {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(
+            f,
+            "unknown kind \"{}\"; expected plane, sphere, quadric or camera",
+            self.0
+        )
+    }
+}
+
+impl std::error::Error for UnknownKind {}
+
+impl core::str::FromStr for Kind {
+    type Err = UnknownKind;
+    fn from_str(s: &str) -> Result<Kind, UnknownKind> {
+        Kind::ALL
+            .into_iter()
+            .find(|k| k.as_str() == s)
+            .ok_or_else(|| UnknownKind(s.to_string()))
+    }
+}
+
+impl serde::Serialize for Kind {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.as_str())
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for Kind {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Kind, D::Error> {
+        let s = <std::borrow::Cow<'de, str>>::deserialize(d)?;
+        s.parse().map_err(serde::de::Error::custom)
+    }
 }
 
 /// Parses one line.
@@ -301,6 +409,9 @@ pub fn parse_line(line: &str) -> Result<CaseLine, CaseError> {
             format!("expected a string, got {}", show(&kind_raw)),
         )
     })?;
+    let kind: Kind = kind
+        .parse()
+        .map_err(|e: UnknownKind| err("kind", e.to_string()))?;
     let family = match fields.0.remove("family") {
         None => None,
         Some(raw) => Some(
@@ -314,9 +425,9 @@ pub fn parse_line(line: &str) -> Result<CaseLine, CaseError> {
             Some(serde_json::from_str(raw.get()).map_err(|e| err("expect", e.to_string()))?)
         }
     };
-    let case = match kind.as_str() {
+    let case = match kind {
         #[cfg(feature = "plane")]
-        "plane" => {
+        Kind::Plane => {
             let ray = Ray::new(fields.vec3("origin")?, fields.vec3("dir")?);
             Case::Plane(
                 ray,
@@ -324,7 +435,7 @@ pub fn parse_line(line: &str) -> Result<CaseLine, CaseError> {
             )
         }
         #[cfg(feature = "sphere")]
-        "sphere" => {
+        Kind::Sphere => {
             let ray = Ray::new(fields.vec3("origin")?, fields.vec3("dir")?);
             Case::Sphere(
                 ray,
@@ -332,12 +443,12 @@ pub fn parse_line(line: &str) -> Result<CaseLine, CaseError> {
             )
         }
         #[cfg(feature = "quadric")]
-        "quadric" => {
+        Kind::Quadric => {
             let ray = Ray::new(fields.vec3("origin")?, fields.vec3("dir")?);
             let coeffs = parse_f32s::<10>("coeffs", &fields.take("coeffs")?)?;
             Case::Quadric(ray, Quadric::new(coeffs))
         }
-        "camera" => {
+        Kind::Camera => {
             let position = fields.vec3("position")?;
             let dir = fields.vec3("dir")?;
             let up = fields.vec3("up")?;
@@ -355,18 +466,13 @@ pub fn parse_line(line: &str) -> Result<CaseLine, CaseError> {
             Case::Camera(CameraParams::new(position, dir, up, angle, res), pixel)
         }
         // A kind the earlier arms do not take is one whose feature is off.
-        other if KINDS.contains(&other) => {
+        #[allow(unreachable_patterns)]
+        _ => {
             return Err(err(
                 "kind",
                 format!(
-                    "\"{other}\" is not compiled into this build (cargo feature \"{other}\" is off)"
+                    "\"{kind}\" is not compiled into this build (cargo feature \"{kind}\" is off)"
                 ),
-            ));
-        }
-        other => {
-            return Err(err(
-                "kind",
-                format!("unknown kind \"{other}\"; expected plane, sphere, quadric or camera"),
             ));
         }
     };
@@ -494,6 +600,19 @@ mod tests {
             );
         }
         assert!(compiled_out > 0);
+    }
+
+    /// `Kind::ALL` is in declaration order (tallies index by `kind as
+    /// usize`), every name reads back to its kind, and a name differing
+    /// only in case is unknown.
+    #[test]
+    fn kinds_are_listed_in_order_and_read_back() {
+        for (i, k) in Kind::ALL.into_iter().enumerate() {
+            assert_eq!(k as usize, i);
+            assert_eq!(k.as_str().parse(), Ok(k));
+            assert_eq!(k.to_string(), k.as_str());
+        }
+        assert_eq!("Plane".parse::<Kind>(), Err(UnknownKind("Plane".into())));
     }
 
     #[test]

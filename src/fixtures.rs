@@ -5,14 +5,14 @@
 //! rayoracle see the same data as a checkout.
 //!
 //! ```
-//! use rayoracle::fixtures;
-//! assert!(fixtures::cases("sphere").unwrap().lines().count() > 10);
-//! assert!(fixtures::stiff("quadric").unwrap().contains("\"family\""));
-//! assert!(fixtures::cases("torus").is_none());
+//! use rayoracle::{case::Kind, fixtures};
+//! assert!(fixtures::cases(Kind::Sphere).lines().count() > 10);
+//! assert!(fixtures::stiff(Kind::Quadric).contains("\"family\""));
+//! // A kind is named by a `Kind`, so an unknown one is a parse error:
+//! assert!("torus".parse::<Kind>().is_err());
 //! ```
 
-/// The kinds that have fixture files, in the order rayoracle lists them.
-pub const KINDS: [&str; 4] = ["plane", "sphere", "quadric", "camera"];
+use crate::case::Kind;
 
 /// `fixtures/stiff/families.json`: the stiff families, their kernels,
 /// conditioning and reasons.
@@ -66,26 +66,25 @@ pub const SCENES: [(&str, &str); 9] = [
 ];
 
 /// `fixtures/cases/KIND.jsonl`: hand-written cases of a kind, one `eval`
-/// line each, with their families and expectations.
-pub fn cases(kind: &str) -> Option<&'static str> {
-    Some(match kind {
-        "plane" => include_str!("../fixtures/cases/plane.jsonl"),
-        "sphere" => include_str!("../fixtures/cases/sphere.jsonl"),
-        "quadric" => include_str!("../fixtures/cases/quadric.jsonl"),
-        "camera" => include_str!("../fixtures/cases/camera.jsonl"),
-        _ => return None,
-    })
+/// line each, with their families and expectations. Every kind has the
+/// file, whether or not it is compiled in.
+pub fn cases(kind: Kind) -> &'static str {
+    match kind {
+        Kind::Plane => include_str!("../fixtures/cases/plane.jsonl"),
+        Kind::Sphere => include_str!("../fixtures/cases/sphere.jsonl"),
+        Kind::Quadric => include_str!("../fixtures/cases/quadric.jsonl"),
+        Kind::Camera => include_str!("../fixtures/cases/camera.jsonl"),
+    }
 }
 
 /// `fixtures/stiff/KIND.jsonl`: the stiff catalogue's cases of a kind.
-pub fn stiff(kind: &str) -> Option<&'static str> {
-    Some(match kind {
-        "plane" => include_str!("../fixtures/stiff/plane.jsonl"),
-        "sphere" => include_str!("../fixtures/stiff/sphere.jsonl"),
-        "quadric" => include_str!("../fixtures/stiff/quadric.jsonl"),
-        "camera" => include_str!("../fixtures/stiff/camera.jsonl"),
-        _ => return None,
-    })
+pub fn stiff(kind: Kind) -> &'static str {
+    match kind {
+        Kind::Plane => include_str!("../fixtures/stiff/plane.jsonl"),
+        Kind::Sphere => include_str!("../fixtures/stiff/sphere.jsonl"),
+        Kind::Quadric => include_str!("../fixtures/stiff/quadric.jsonl"),
+        Kind::Camera => include_str!("../fixtures/stiff/camera.jsonl"),
+    }
 }
 
 #[cfg(test)]
@@ -93,12 +92,12 @@ mod tests {
     /// Every kind has both files, and every line of them parses.
     #[test]
     fn every_compiled_in_line_parses() {
-        for kind in super::KINDS
+        for kind in crate::case::Kind::ALL
             .into_iter()
-            .filter(|k| crate::case::compiled_in(k))
+            .filter(|k| k.compiled_in())
         {
             for (what, text) in [("cases", super::cases(kind)), ("stiff", super::stiff(kind))] {
-                let text = text.unwrap_or_else(|| panic!("{what} of {kind}"));
+                assert!(!text.trim().is_empty(), "{what} of {kind}");
                 for (i, line) in text.lines().enumerate() {
                     if !line.trim().is_empty() {
                         let c = crate::case::parse_line(line)

@@ -1,5 +1,133 @@
-//! What every primitive's result has in common: a class name, its roots, and
+//! What every primitive's result has in common: a class, its roots, and
 //! the nearest root in an interval.
+
+/// The class of an answer: what kind of solution set the line has. Each
+/// primitive uses its own few ([`Intersection::class`]); the camera's
+/// answer is a [`Class::Ray`].
+///
+/// ```
+/// use rayoracle::hit::Class;
+/// assert_eq!(Class::InPlane.as_str(), "in_plane");
+/// assert_eq!(Class::Two.to_string(), "two");
+/// assert_eq!("tangent".parse(), Ok(Class::Tangent));
+/// assert!("cube".parse::<Class>().is_err());
+/// ```
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Class {
+    /// No point of the line is on the surface (sphere, quadric).
+    None,
+    /// One simple root (quadric).
+    One,
+    /// Two roots (sphere, quadric).
+    Two,
+    /// A double root: the line touches the sphere.
+    Tangent,
+    /// Every point of the line is on the quadric.
+    All,
+    /// The line crosses the plane once.
+    Hit,
+    /// The line is parallel to the plane and off it.
+    Parallel,
+    /// The line lies in the plane.
+    InPlane,
+    /// A camera's ray.
+    Ray,
+}
+
+impl Class {
+    /// Every class.
+    pub const ALL: [Class; 9] = [
+        Class::None,
+        Class::One,
+        Class::Two,
+        Class::Tangent,
+        Class::All,
+        Class::Hit,
+        Class::Parallel,
+        Class::InPlane,
+        Class::Ray,
+    ];
+
+    /// The name used in `eval` output and reports.
+    ///
+    /// ```
+    /// assert_eq!(rayoracle::hit::Class::None.as_str(), "none");
+    /// ```
+    pub const fn as_str(self) -> &'static str {
+        match self {
+            Class::None => "none",
+            Class::One => "one",
+            Class::Two => "two",
+            Class::Tangent => "tangent",
+            Class::All => "all",
+            Class::Hit => "hit",
+            Class::Parallel => "parallel",
+            Class::InPlane => "in_plane",
+            Class::Ray => "ray",
+        }
+    }
+}
+
+/// As its name, quoted (`"two"`): the form results and messages have
+/// always shown.
+impl core::fmt::Debug for Class {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "{:?}", self.as_str())
+    }
+}
+
+impl core::fmt::Display for Class {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// A class name that is not one of [`Class::ALL`].
+///
+/// ```
+/// let e = "cube".parse::<rayoracle::hit::Class>().unwrap_err();
+/// assert!(e.to_string().starts_with(r#"unknown class "cube"; expected none, one,"#));
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct UnknownClass(pub String);
+
+impl core::fmt::Display for UnknownClass {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let names: Vec<&str> = Class::ALL.iter().map(|c| c.as_str()).collect();
+        write!(
+            f,
+            "unknown class \"{}\"; expected {}",
+            self.0,
+            names.join(", ")
+        )
+    }
+}
+
+impl std::error::Error for UnknownClass {}
+
+impl core::str::FromStr for Class {
+    type Err = UnknownClass;
+    fn from_str(s: &str) -> Result<Class, UnknownClass> {
+        Class::ALL
+            .into_iter()
+            .find(|c| c.as_str() == s)
+            .ok_or_else(|| UnknownClass(s.to_string()))
+    }
+}
+
+/// A class compares equal to its name, so that tests and fixtures can
+/// write `h.class() == "two"`.
+impl PartialEq<&str> for Class {
+    fn eq(&self, other: &&str) -> bool {
+        self.as_str() == *other
+    }
+}
+
+impl serde::Serialize for Class {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.as_str())
+    }
+}
 
 /// Up to two roots, ascending.
 ///
@@ -72,12 +200,12 @@ impl Roots {
 /// let h = SphereHit::Two(-1.0, 3.0);
 /// assert_eq!(h.nearest(0.0, f32::INFINITY), Some(3.0));
 /// assert_eq!(h.nearest(0.0, 2.0), None);
-/// assert_eq!(h.class(), "two");
+/// assert_eq!(h.class(), rayoracle::hit::Class::Two);
 /// # }
 /// ```
 pub trait Intersection {
-    /// The class name used in `eval` output (`hit`, `two`, `none`, …).
-    fn class(&self) -> &'static str;
+    /// The class ([`Class::Hit`], [`Class::Two`], [`Class::None`], …).
+    fn class(&self) -> Class;
     /// The roots, ascending.
     fn roots(&self) -> Roots;
     /// Whether every `t` is a solution.
@@ -120,4 +248,26 @@ pub fn same_bits<H: Intersection>(a: &H, b: &H) -> bool {
             .iter()
             .zip(rb.as_slice())
             .all(|(&x, &y)| same(x, y))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Class;
+
+    /// Every class has its own name, which reads back to it, and compares
+    /// equal to it as a string.
+    #[test]
+    fn every_class_name_is_distinct_and_reads_back() {
+        let mut names: Vec<&str> = Class::ALL.iter().map(|c| c.as_str()).collect();
+        for c in Class::ALL {
+            assert_eq!(c.as_str().parse(), Ok(c));
+            assert!(c == c.as_str());
+            assert_eq!(format!("{c:?}"), format!("{:?}", c.as_str()));
+            assert_eq!(serde_json::to_string(&c).unwrap(), format!("\"{c}\""));
+        }
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), Class::ALL.len());
+        assert!(Class::Hit != "hit ");
+    }
 }

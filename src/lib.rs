@@ -39,6 +39,7 @@
 //! | module | what |
 //! |---|---|
 //! | [`plane`], [`sphere`], [`quadric`], [`camera`] | one per primitive: types, the derivation, the filter and its bound, the kernels, the exact solution |
+//! | [`primitive`] | the trait the plane, sphere and quadric share, which the harnesses are written against |
 //! | [`exact`] | the exact oracle: dyadic rationals on fixed-width integers, big integers beyond |
 //! | [`num`] | the lane types, certified rounding, error-free transformations |
 //! | [`check`] | the judge: an answer against the oracle, and the gate for outside kernels |
@@ -66,6 +67,7 @@ pub mod hit;
 pub mod num;
 #[cfg(feature = "plane")]
 pub mod plane;
+pub mod primitive;
 #[cfg(feature = "quadric")]
 pub mod quadric;
 pub mod ray;

@@ -59,7 +59,7 @@ type Answer = (&'static str, Vec<u32>);
 fn answer(h: &impl Intersection) -> Answer {
     let r = h.roots();
     (
-        h.class(),
+        h.class().as_str(),
         r.as_slice().iter().map(|t| t.to_bits()).collect(),
     )
 }
@@ -390,7 +390,7 @@ pub fn climb(rng: &mut SmallRng, start: &Case, q: Quantity, steps: usize) -> Vec
         if next.iter().any(|x| !x.is_finite()) {
             continue;
         }
-        let c = from_fields(kind, &next);
+        let c = from_fields(kind.as_str(), &next);
         if let Some(s) = score(&c).filter(|&s| s >= best) {
             if s > best {
                 out.push(Found {

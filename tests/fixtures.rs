@@ -17,7 +17,7 @@
 //! Run with `--nocapture` for a per-family summary of the worst errors.
 
 use rayoracle::camera;
-use rayoracle::case::{Case, CaseLine, KINDS, compiled_in, parse_line};
+use rayoracle::case::{Case, CaseLine, Kind, parse_line};
 use rayoracle::check::{CaseReport, Status, reference_case};
 #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 use rayoracle::hit::Intersection;
@@ -73,10 +73,10 @@ const REQUIRED_FAMILIES: &[&str] = &[
 fn compiled_out_kind(line: &str) -> Option<&'static str> {
     let v: Value = serde_json::from_str(line).ok()?;
     let kind = v.get("kind")?.as_str()?;
-    KINDS
-        .into_iter()
-        .find(|k| *k == kind)
-        .filter(|k| !compiled_in(k))
+    kind.parse::<Kind>()
+        .ok()
+        .filter(|k| !k.compiled_in())
+        .map(Kind::as_str)
 }
 
 fn fixture_files() -> Vec<PathBuf> {
@@ -102,7 +102,7 @@ fn oracle(case: &Case) -> Oracle {
     fn hit(r: Result<impl Intersection, rayoracle::exact::NonFinite>) -> Oracle {
         match r {
             Ok(h) => Oracle {
-                class: h.class(),
+                class: h.class().as_str(),
                 bits: h.roots().as_slice().iter().map(|t| t.to_bits()).collect(),
                 error: None,
             },
@@ -315,7 +315,7 @@ fn every_fixture_line_passes() {
                     continue;
                 }
             };
-            *ran.entry(parsed.case.kind()).or_default() += 1;
+            *ran.entry(parsed.case.kind().as_str()).or_default() += 1;
             let family = parsed.family.clone().unwrap_or_else(|| "?".into());
             let prefix = format!("{}/", parsed.case.kind());
             match run_line(&parsed, &prefix) {
@@ -328,14 +328,15 @@ fn every_fixture_line_passes() {
             }
         }
     }
-    for kind in KINDS.into_iter().filter(|k| compiled_in(k)) {
-        if !ran.contains_key(kind) {
+    for kind in Kind::ALL.into_iter().filter(|k| k.compiled_in()) {
+        if !ran.contains_key(kind.as_str()) {
             failures.push(format!("no fixture line of kind {kind} ran"));
         }
     }
-    let families = REQUIRED_FAMILIES
-        .iter()
-        .filter(|f| compiled_in(f.split('/').next().unwrap_or_default()));
+    let families = REQUIRED_FAMILIES.iter().filter(|f| {
+        let kind = f.split('/').next().unwrap_or_default();
+        kind.parse::<Kind>().is_ok_and(Kind::compiled_in)
+    });
     for f in families {
         if !worst.contains_key(*f) && !failures.iter().any(|x| x.contains(&format!("[{f}]"))) {
             failures.push(format!("no fixture line of family {f}"));

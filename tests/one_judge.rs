@@ -23,12 +23,10 @@ fn strict() -> Gate {
 
 /// Every case of a kind, from the fixtures and the stiff catalogue.
 fn cases(kind: &str) -> Vec<(String, Case)> {
-    let text = [
-        rayoracle::fixtures::cases(kind),
-        rayoracle::fixtures::stiff(kind),
-    ];
+    let k: rayoracle::case::Kind = kind.parse().expect("a kind");
+    let text = [rayoracle::fixtures::cases(k), rayoracle::fixtures::stiff(k)];
     let mut out = Vec::new();
-    for (i, line) in text.iter().flatten().flat_map(|t| t.lines()).enumerate() {
+    for (i, line) in text.iter().flat_map(|t| t.lines()).enumerate() {
         if line.trim().is_empty() {
             continue;
         }

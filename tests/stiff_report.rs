@@ -349,7 +349,7 @@ fn ftz_and_daz_change_no_answer() {
     let bits = |c: &Case| -> Vec<u32> {
         let roots = |h: &dyn rayoracle::hit::Intersection| {
             let mut v: Vec<u32> = h.roots().as_slice().iter().map(|t| t.to_bits()).collect();
-            v.push(h.class().len() as u32);
+            v.push(h.class().as_str().len() as u32);
             v
         };
         match c {

@@ -17,6 +17,7 @@
 mod plot;
 
 use clap::{Parser, Subcommand};
+use rayoracle::case::Kind;
 use rayoracle::eval::{Summary, evaluate};
 use rayoracle::render::{Channels, Path as RenderPath, Plan, render_with_progress, write_pngs};
 use rayoracle::scene::{Scene, SceneError};
@@ -179,7 +180,7 @@ struct ReportArgs {
 /// Runs the report; exit 2 if the catalogue cannot be read or an output
 /// cannot be written.
 fn report_command(args: &ReportArgs) -> u8 {
-    use rayoracle::report::{self, Catalogue, Kernel, Options, Variant};
+    use rayoracle::report::{self, Catalogue, KERNELS, Options, Variant};
     let catalogue = match &args.stiff {
         Some(dir) => Catalogue::load(dir),
         None => Catalogue::builtin(),
@@ -237,16 +238,16 @@ fn report_command(args: &ReportArgs) -> u8 {
         outputs.push((p.clone(), table.clone()));
     }
     if let Some(p) = &args.svg {
-        for kernel in Kernel::ALL {
+        for kernel in KERNELS {
             let stem = p
                 .file_stem()
                 .map_or("report".into(), |s| s.to_string_lossy().into_owned());
             let ext = p
                 .extension()
                 .map_or("svg".into(), |e| e.to_string_lossy().into_owned());
-            let file = p.with_file_name(format!("{stem}-{}.{ext}", kernel.name()));
+            let file = p.with_file_name(format!("{stem}-{kernel}.{ext}"));
             let points = report::points(&rows, kernel);
-            outputs.push((file, plot::svg(kernel.name(), &points)));
+            outputs.push((file, plot::svg(kernel.as_str(), &points)));
         }
     }
     for (path, text) in outputs {
@@ -592,10 +593,10 @@ fn expected_error_lines(text: &str) -> usize {
 /// The compiled-in case files of every kind this build has, as
 /// `(KIND.jsonl, text)`.
 fn builtin_cases() -> Vec<(String, &'static str)> {
-    rayoracle::fixtures::KINDS
+    Kind::ALL
         .into_iter()
-        .filter(|k| rayoracle::case::compiled_in(k))
-        .filter_map(|k| Some((format!("{k}.jsonl"), rayoracle::fixtures::cases(k)?)))
+        .filter(|k| k.compiled_in())
+        .map(|k| (format!("{k}.jsonl"), rayoracle::fixtures::cases(k)))
         .collect()
 }
 
@@ -676,10 +677,7 @@ mod tests {
     #[test]
     fn the_builtin_cases_are_compiled_in() {
         let files = builtin_cases();
-        let want = rayoracle::fixtures::KINDS
-            .into_iter()
-            .filter(|k| rayoracle::case::compiled_in(k))
-            .count();
+        let want = Kind::ALL.into_iter().filter(|k| k.compiled_in()).count();
         assert_eq!(files.len(), want);
         assert!(files.iter().all(|f| f.1.lines().count() > 10), "{files:?}");
     }

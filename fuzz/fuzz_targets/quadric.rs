@@ -1,10 +1,11 @@
 #![no_main]
-//! The `quadric` target: a thin wrapper; the checks are `rayoracle::fuzz::quadric`.
+//! The `quadric` target: a thin wrapper; the checks are
+//! `rayoracle::fuzz::primitive`, generic over the primitive.
 
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
-    if let Err(failure) = rayoracle::fuzz::quadric(data) {
+    if let Err(failure) = rayoracle::fuzz::primitive::<rayoracle::quadric::Quadric>(data) {
         panic!("{failure}");
     }
 });

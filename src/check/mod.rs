@@ -364,11 +364,11 @@ fn judged(
 #[cfg(feature = "plane")]
 pub fn check_plane(ray: &Ray, p: &Plane, got: PlaneHit) -> Result<CaseReport, Violation> {
     let Some((exact, e)) = rules::plane(ray, p) else {
-        let mut r = report("plane", "non_finite", got.class());
+        let mut r = report("plane", "non_finite", got.class().as_str());
         r.status = Status::NonFinite;
         return Ok(r);
     };
-    judged(report("plane", exact.class(), got.class()), &e, got)
+    judged(report("plane", exact.class().as_str(), got.class().as_str()), &e, got)
 }
 
 /// Judges an answer to a ray–sphere case: it must be the exact answer, bit
@@ -389,7 +389,7 @@ pub fn check_plane(ray: &Ray, p: &Plane, got: PlaneHit) -> Result<CaseReport, Vi
 #[cfg(feature = "sphere")]
 pub fn check_sphere(ray: &Ray, s: &Sphere, got: SphereHit) -> Result<CaseReport, Violation> {
     let Ok(q) = sphere::exact::quadratic(ray, s) else {
-        let mut r = report("sphere", "non_finite", got.class());
+        let mut r = report("sphere", "non_finite", got.class().as_str());
         r.status = Status::NonFinite;
         return Ok(r);
     };
@@ -407,7 +407,7 @@ fn check_sphere_against(
     exact: SphereHit,
 ) -> Result<CaseReport, Violation> {
     let e = rules::sphere_given(ray, s, q, exact);
-    judged(report("sphere", exact.class(), got.class()), &e, got)
+    judged(report("sphere", exact.class().as_str(), got.class().as_str()), &e, got)
 }
 
 /// Judges an answer to a ray–quadric case: it must be the exact answer, bit
@@ -426,7 +426,7 @@ fn check_sphere_against(
 #[cfg(feature = "quadric")]
 pub fn check_quadric(ray: &Ray, q: &Quadric, got: QuadricHit) -> Result<CaseReport, Violation> {
     let Ok(eq) = quadric::exact::quadratic(ray, q) else {
-        let mut r = report("quadric", "non_finite", got.class());
+        let mut r = report("quadric", "non_finite", got.class().as_str());
         r.status = Status::NonFinite;
         return Ok(r);
     };
@@ -444,7 +444,7 @@ fn check_quadric_against(
     exact: QuadricHit,
 ) -> Result<CaseReport, Violation> {
     let e = rules::quadric_given(ray, q, eq, exact);
-    judged(report("quadric", exact.class(), got.class()), &e, got)
+    judged(report("quadric", exact.class().as_str(), got.class().as_str()), &e, got)
 }
 
 /// Judges an answer (`got`, the ray for `pixel` or a construction error) to

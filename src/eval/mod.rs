@@ -26,14 +26,10 @@
 pub mod x4;
 
 use crate::Ray;
-use crate::case::{Case, CaseError, KINDS, parse_line};
-use crate::hit::{Intersection, Roots};
-#[cfg(feature = "plane")]
-use crate::plane;
-#[cfg(feature = "quadric")]
-use crate::quadric;
-#[cfg(feature = "sphere")]
-use crate::sphere;
+use crate::case::{Case, CaseError, Kind, match_case, parse_line};
+use crate::hit::{Class, Intersection, Roots};
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+use crate::primitive::Primitive;
 use crate::{camera, ulp};
 use serde::Serialize;
 use serde::ser::{SerializeMap, Serializer};
@@ -87,28 +83,24 @@ impl Implementation {
     /// # #[cfg(feature = "sphere")] {
     /// use rayoracle::case::parse_line;
     /// use rayoracle::eval::{Implementation, Outcome};
-    /// use rayoracle::hit::Roots;
+    /// use rayoracle::hit::{Class, Roots};
     /// let c = parse_line(r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap();
     /// assert_eq!(
     ///     Implementation::Reference.run(&c.case),
-    ///     Outcome::Hit { class: "two", roots: Roots::two(4.0, 6.0) }
+    ///     Outcome::Hit { class: Class::Two, roots: Roots::two(4.0, 6.0) }
     /// );
     /// # }
     /// ```
     pub fn run(self, case: &Case) -> Outcome {
         match self {
-            Implementation::Reference => match case {
-                #[cfg(feature = "plane")]
-                Case::Plane(r, p) => Outcome::hit(&plane::reference::intersect(r, p)),
-                #[cfg(feature = "sphere")]
-                Case::Sphere(r, s) => Outcome::hit(&sphere::reference::intersect(r, s)),
-                #[cfg(feature = "quadric")]
-                Case::Quadric(r, q) => Outcome::hit(&quadric::reference::intersect(r, q)),
-                Case::Camera(p, [px, py]) => match p.build() {
+            Implementation::Reference => match_case!(
+                case,
+                |r, p| Outcome::hit(&Primitive::reference(r, p)),
+                |p, [px, py]| match p.build() {
                     Ok(cam) => Outcome::Ray(cam.ray(*px, *py)),
                     Err(e) => Outcome::Error(e.to_string()),
                 },
-            },
+            ),
             Implementation::X4 => x4::run(case),
         }
     }
@@ -122,24 +114,31 @@ impl Implementation {
 /// use rayoracle::case::parse_line;
 /// use rayoracle::eval::{exact, Outcome};
 /// let c = parse_line(r#"{"kind":"plane","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,2],"normal":[0,0,1]}"#).unwrap();
-/// assert_eq!(exact(&c.case).class(), Some("hit"));
+/// assert_eq!(exact(&c.case).class(), Some(rayoracle::hit::Class::Hit));
 /// let nan = parse_line(r#"{"kind":"plane","origin":["nan",0,0],"dir":[0,0,1],"point":[0,0,2],"normal":[0,0,1]}"#).unwrap();
 /// assert!(matches!(exact(&nan.case), Outcome::Error(_)));
 /// # }
 /// ```
 pub fn exact(case: &Case) -> Outcome {
-    fn or_error<T>(r: Result<T, impl ToString>, f: impl FnOnce(T) -> Outcome) -> Outcome {
-        r.map_or_else(|e| Outcome::Error(e.to_string()), f)
-    }
-    match case {
-        #[cfg(feature = "plane")]
-        Case::Plane(r, p) => or_error(plane::exact::intersect(r, p), |h| Outcome::hit(&h)),
-        #[cfg(feature = "sphere")]
-        Case::Sphere(r, s) => or_error(sphere::exact::intersect(r, s), |h| Outcome::hit(&h)),
-        #[cfg(feature = "quadric")]
-        Case::Quadric(r, q) => or_error(quadric::exact::intersect(r, q), |h| Outcome::hit(&h)),
-        Case::Camera(p, [px, py]) => or_error(camera::exact::ray(p, *px, *py), Outcome::Ray),
-    }
+    match_case!(case, |r, p| exact_of(r, p), |p, [px, py]| {
+        camera::exact::ray(p, *px, *py).map_or_else(|e| Outcome::Error(e.to_string()), Outcome::Ray)
+    },)
+}
+
+/// [`exact`] for a ray and a primitive.
+///
+/// ```
+/// # #[cfg(feature = "plane")] {
+/// use rayoracle::{Ray, eval::{exact_of, Outcome}, hit::{Class, Roots}, plane::Plane};
+/// use glam::Vec3;
+/// let p = Plane::new(Vec3::new(0.0, 0.0, 2.0), Vec3::Z);
+/// let o = exact_of(&Ray::new(Vec3::ZERO, Vec3::Z), &p);
+/// assert_eq!(o, Outcome::Hit { class: Class::Hit, roots: Roots::one(2.0) });
+/// # }
+/// ```
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+pub fn exact_of<P: Primitive>(ray: &Ray, p: &P) -> Outcome {
+    P::exact(ray, p).map_or_else(|e| Outcome::Error(e.to_string()), |h| Outcome::hit(&h))
 }
 
 /// What one implementation (or the exact oracle) produced for one case.
@@ -147,19 +146,19 @@ pub fn exact(case: &Case) -> Outcome {
 /// ```
 /// # #[cfg(feature = "sphere")] {
 /// use rayoracle::eval::Outcome;
-/// use rayoracle::hit::Roots;
+/// use rayoracle::hit::{Class, Roots};
 /// use rayoracle::sphere::SphereHit;
 /// let o = Outcome::hit(&SphereHit::Tangent(5.0));
-/// assert_eq!(o, Outcome::Hit { class: "tangent", roots: Roots::one(5.0) });
-/// assert_eq!(o.class(), Some("tangent"));
+/// assert_eq!(o, Outcome::Hit { class: Class::Tangent, roots: Roots::one(5.0) });
+/// assert_eq!(o.class(), Some(Class::Tangent));
 /// # }
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub enum Outcome {
     /// A classified plane, sphere or quadric result.
     Hit {
-        /// The class name ([`Intersection::class`]).
-        class: &'static str,
+        /// The class ([`Intersection::class`]).
+        class: Class,
         /// The roots, ascending.
         roots: Roots,
     },
@@ -176,7 +175,7 @@ impl Outcome {
     /// # #[cfg(feature = "plane")] {
     /// use rayoracle::eval::Outcome;
     /// use rayoracle::plane::PlaneHit;
-    /// assert_eq!(Outcome::hit(&PlaneHit::Parallel).class(), Some("parallel"));
+    /// assert_eq!(Outcome::hit(&PlaneHit::Parallel).class(), Some(rayoracle::hit::Class::Parallel));
     /// # }
     /// ```
     pub fn hit(h: &impl Intersection) -> Outcome {
@@ -186,16 +185,16 @@ impl Outcome {
         }
     }
 
-    /// The class name (`"ray"` for a camera ray), or `None` for an error.
+    /// The class ([`Class::Ray`] for a camera ray), or `None` for an error.
     ///
     /// ```
     /// use rayoracle::eval::Outcome;
     /// assert_eq!(Outcome::Error("no".into()).class(), None);
     /// ```
-    pub fn class(&self) -> Option<&'static str> {
+    pub fn class(&self) -> Option<Class> {
         match self {
-            Outcome::Hit { class, .. } => Some(class),
-            Outcome::Ray(_) => Some("ray"),
+            Outcome::Hit { class, .. } => Some(*class),
+            Outcome::Ray(_) => Some(Class::Ray),
             Outcome::Error(_) => None,
         }
     }
@@ -224,12 +223,12 @@ impl Outcome {
     ///
     /// ```
     /// use rayoracle::eval::Outcome;
-    /// use rayoracle::hit::Roots;
-    /// let a = Outcome::Hit { class: "hit", roots: Roots::one(0.0) };
-    /// let b = Outcome::Hit { class: "hit", roots: Roots::one(-0.0) };
+    /// use rayoracle::hit::{Class, Roots};
+    /// let a = Outcome::Hit { class: Class::Hit, roots: Roots::one(0.0) };
+    /// let b = Outcome::Hit { class: Class::Hit, roots: Roots::one(-0.0) };
     /// assert!(a.same_bits(&a) && !a.same_bits(&b));
-    /// let n = Outcome::Hit { class: "hit", roots: Roots::one(f32::NAN) };
-    /// assert!(n.same_bits(&Outcome::Hit { class: "hit", roots: Roots::one(-f32::NAN) }));
+    /// let n = Outcome::Hit { class: Class::Hit, roots: Roots::one(f32::NAN) };
+    /// assert!(n.same_bits(&Outcome::Hit { class: Class::Hit, roots: Roots::one(-f32::NAN) }));
     /// ```
     pub fn same_bits(&self, other: &Outcome) -> bool {
         let bits = |o: &Outcome| -> Vec<u32> {
@@ -316,10 +315,10 @@ pub struct Column {
 ///
 /// ```
 /// # #[cfg(feature = "quadric")] {
-/// use rayoracle::eval::{evaluate, LineReport};
+/// use rayoracle::{case::Kind, eval::{evaluate, LineReport}};
 /// let line = r#"{"kind":"quadric","family":"cyl","origin":[-5,0,0],"dir":[1,0,0],"coeffs":[1,1,0,0,0,0,0,0,0,-1]}"#;
 /// let Some(LineReport::Evaluated(e)) = evaluate(7, line) else { panic!() };
-/// assert_eq!((e.line, e.kind, e.family.as_deref()), (7, "quadric", Some("cyl")));
+/// assert_eq!((e.line, e.kind, e.family.as_deref()), (7, Kind::Quadric, Some("cyl")));
 /// assert_eq!(e.exact.values(), vec![4.0, 6.0]);
 /// # }
 /// ```
@@ -328,7 +327,7 @@ pub struct Evaluation {
     /// 1-based input line number.
     pub line: usize,
     /// The case's kind.
-    pub kind: &'static str,
+    pub kind: Kind,
     /// The case's `family`, if given.
     pub family: Option<String>,
     /// The exact oracle's outcome.
@@ -361,7 +360,7 @@ pub enum LineReport {
         /// 1-based line number.
         line: usize,
         /// The case's kind.
-        kind: &'static str,
+        kind: Kind,
         /// The case's `family`, if given.
         family: Option<String>,
         /// Why, starting with the field name.
@@ -447,7 +446,7 @@ impl LineReport {
             } => serde_json::to_string(&ErrorJson {
                 file,
                 line: *line,
-                kind: Some(kind),
+                kind: Some(kind.as_str()),
                 family: family.as_deref(),
                 error,
             }),
@@ -461,7 +460,7 @@ impl LineReport {
             LineReport::Evaluated(e) => serde_json::to_string(&EvaluationJson {
                 file,
                 line: e.line,
-                kind: e.kind,
+                kind: e.kind.as_str(),
                 family: e.family.as_deref(),
                 results: ResultsJson(e),
             }),
@@ -671,13 +670,13 @@ impl OutcomeJson {
         let cmp = c.and_then(ComparisonJson::new);
         match o {
             Outcome::Hit { class, roots } => OutcomeJson::Hit {
-                class,
+                class: class.as_str(),
                 roots: roots.as_slice().to_vec(),
                 roots_bits: roots.as_slice().iter().map(|&t| bits_str(t)).collect(),
                 cmp,
             },
             Outcome::Ray(r) => OutcomeJson::Ray {
-                class: "ray",
+                class: Class::Ray.as_str(),
                 origin: r.origin.to_array(),
                 dir: r.dir.to_array(),
                 dir_bits: r.dir.to_array().map(bits_str),
@@ -736,12 +735,12 @@ pub struct KindTally {
 ///
 /// ```
 /// # #[cfg(feature = "sphere")] {
-/// use rayoracle::eval::{evaluate, Summary};
+/// use rayoracle::{case::Kind, eval::{evaluate, Summary}};
 /// let mut s = Summary::default();
 /// s.add(&evaluate(1, r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap());
 /// s.add(&evaluate(2, r#"{"kind":"sphere"}"#).unwrap());
-/// assert_eq!(s.kind("sphere").unwrap().cases, 1);
-/// let t = &s.kind("sphere").unwrap().impls[0];
+/// assert_eq!(s.kind(Kind::Sphere).cases, 1);
+/// let t = &s.kind(Kind::Sphere).impls[0];
 /// assert_eq!((t.compared, t.values, t.zero_ulp), (1, 2, 2));
 /// assert_eq!(s.malformed, 1);
 /// assert!(!s.all_ok());
@@ -759,45 +758,40 @@ pub struct Summary {
     pub invalid: usize,
     /// Lines whose evaluation panicked (caught).
     pub internal: usize,
-    /// Per kind, in the order plane, sphere, quadric, camera.
+    /// Per kind, in [`Kind::ALL`] order.
     pub kinds: [KindTally; 4],
 }
 
 impl Summary {
-    /// The tally for `kind`, if it is one of the four kinds.
+    /// The tally for `kind`.
     ///
     /// ```
-    /// use rayoracle::eval::Summary;
-    /// assert!(Summary::default().kind("plane").is_some());
-    /// assert!(Summary::default().kind("cube").is_none());
+    /// use rayoracle::{case::Kind, eval::Summary};
+    /// assert_eq!(Summary::default().kind(Kind::Plane).cases, 0);
     /// ```
-    pub fn kind(&self, kind: &str) -> Option<&KindTally> {
-        KINDS
-            .iter()
-            .position(|&k| k == kind)
-            .map(|i| &self.kinds[i])
+    pub fn kind(&self, kind: Kind) -> &KindTally {
+        &self.kinds[kind as usize]
     }
 
-    fn kind_mut(&mut self, kind: &str) -> Option<&mut KindTally> {
-        let i = KINDS.iter().position(|&k| k == kind)?;
-        let t = &mut self.kinds[i];
+    fn kind_mut(&mut self, kind: Kind) -> &mut KindTally {
+        let t = &mut self.kinds[kind as usize];
         if t.impls.len() < Implementation::ALL.len() {
             t.impls
                 .resize(Implementation::ALL.len(), ImplTally::default());
         }
-        Some(t)
+        t
     }
 
     /// Adds one line's report.
     ///
     /// ```
     /// # #[cfg(feature = "plane")] {
-    /// use rayoracle::eval::{evaluate, Summary};
+    /// use rayoracle::{case::Kind, eval::{evaluate, Summary}};
     /// let mut s = Summary::default();
     /// s.add(&evaluate(1, r#"{"kind":"plane","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,3],"normal":["inf",0,1]}"#).unwrap());
-    /// assert_eq!(s.kind("plane").unwrap().errors, 1);
+    /// assert_eq!(s.kind(Kind::Plane).errors, 1);
     /// s.add(&evaluate(2, r#"{"kind":"plane","origin":[0,0,0],"dir":[0,0,1],"point":[0,0,3],"normal":[0,0,1]}"#).unwrap());
-    /// assert_eq!((s.lines, s.kind("plane").unwrap().cases), (2, 2));
+    /// assert_eq!((s.lines, s.kind(Kind::Plane).cases), (2, 2));
     /// assert!(s.all_ok());
     /// # }
     /// ```
@@ -808,15 +802,12 @@ impl Summary {
             LineReport::Internal { .. } => self.internal += 1,
             LineReport::Invalid { kind, .. } => {
                 self.invalid += 1;
-                if let Some(t) = self.kind_mut(kind) {
-                    t.cases += 1;
-                    t.errors += 1;
-                }
+                let t = self.kind_mut(*kind);
+                t.cases += 1;
+                t.errors += 1;
             }
             LineReport::Evaluated(e) => {
-                let Some(t) = self.kind_mut(e.kind) else {
-                    return;
-                };
+                let t = self.kind_mut(e.kind);
                 t.cases += 1;
                 if matches!(e.exact, Outcome::Error(_)) {
                     t.errors += 1;
@@ -883,7 +874,7 @@ impl Summary {
             "{:<8} {:>6} {:>6}  {:<10} {:>8} {:>7} {:>7} {:>9}",
             "kind", "cases", "errors", "impl", "mismatch", "values", "0-ulp", "max-ulps"
         );
-        for (kind, t) in KINDS.iter().zip(&self.kinds) {
+        for (kind, t) in Kind::ALL.iter().zip(&self.kinds) {
             if t.cases == 0 {
                 continue;
             }
@@ -944,7 +935,7 @@ mod tests {
         };
         let invalid = || LineReport::Invalid {
             line: 2,
-            kind: "camera",
+            kind: Kind::Camera,
             family: None,
             error: "angle".into(),
         };
@@ -953,7 +944,7 @@ mod tests {
             s.add(&invalid());
         }
         s.add(&evaluate(3, "{").unwrap());
-        let cam = s.kind("camera").unwrap();
+        let cam = s.kind(Kind::Camera);
         assert_eq!(
             (
                 s.lines,
@@ -1005,17 +996,17 @@ mod tests {
         let column = |implementation| Column {
             implementation,
             outcome: Outcome::Hit {
-                class: "two",
+                class: Class::Two,
                 roots: Roots::two(4.0, 6.0),
             },
             comparison: Comparison::ClassMismatch,
         };
         let r = LineReport::Evaluated(Evaluation {
             line: 1,
-            kind: "sphere",
+            kind: Kind::Sphere,
             family: None,
             exact: Outcome::Hit {
-                class: "tangent",
+                class: Class::Tangent,
                 roots: Roots::one(5.0),
             },
             columns: vec![
@@ -1026,7 +1017,7 @@ mod tests {
         let mut s = Summary::default();
         s.add(&r);
         s.add(&r);
-        let impls = &s.kind("sphere").unwrap().impls;
+        let impls = &s.kind(Kind::Sphere).impls;
         assert_eq!(impls.len(), 2);
         for t in impls {
             assert_eq!((t.compared, t.class_mismatches, t.values), (2, 2, 0));
@@ -1086,9 +1077,9 @@ mod tests {
             let report = evaluate(1, &line).unwrap();
             match &report {
                 LineReport::Malformed { error, .. } => {
-                    prop_assert!(error.field == "kind" && !crate::case::compiled_in(KINDS[kind]), "{line}: {report:?}");
+                    prop_assert!(error.field == "kind" && !Kind::ALL[kind].compiled_in(), "{line}: {report:?}");
                 }
-                _ => prop_assert!(crate::case::compiled_in(KINDS[kind]), "{line}: {report:?}"),
+                _ => prop_assert!(Kind::ALL[kind].compiled_in(), "{line}: {report:?}"),
             }
             let json: serde_json::Value = serde_json::from_str(&report.to_json()).unwrap();
             prop_assert_eq!(json["line"].as_u64(), Some(1));
@@ -1097,7 +1088,7 @@ mod tests {
                     let keys: Vec<&String> = json["results"].as_object().unwrap().keys().collect();
                     prop_assert_eq!(keys.len(), 1 + Implementation::ALL.len());
                     prop_assert_eq!(e.columns.len(), Implementation::ALL.len());
-                    prop_assert_eq!(json["kind"].as_str(), Some(e.kind));
+                    prop_assert_eq!(json["kind"].as_str(), Some(e.kind.as_str()));
                 }
                 LineReport::Internal { error, .. } => {
                     prop_assert!(json["error"].as_str().unwrap().starts_with("internal error: "), "{error}");
@@ -1122,7 +1113,7 @@ mod tests {
         assert_eq!(
             e.exact,
             Outcome::Hit {
-                class: "hit",
+                class: Class::Hit,
                 roots: Roots::one(-f32::MAX)
             }
         );
@@ -1132,16 +1123,16 @@ mod tests {
     fn a_class_mismatch_has_null_ulps_and_bits() {
         let e = Evaluation {
             line: 5,
-            kind: "plane",
+            kind: Kind::Plane,
             family: None,
             exact: Outcome::Hit {
-                class: "hit",
+                class: Class::Hit,
                 roots: Roots::one(1.0),
             },
             columns: vec![Column {
                 implementation: Implementation::Reference,
                 outcome: Outcome::Hit {
-                    class: "parallel",
+                    class: Class::Parallel,
                     roots: Roots::none(),
                 },
                 comparison: Comparison::ClassMismatch,
@@ -1154,7 +1145,7 @@ mod tests {
         );
         let mut s = Summary::default();
         s.add(&r);
-        let t = &s.kind("plane").unwrap().impls[0];
+        let t = &s.kind(Kind::Plane).impls[0];
         assert_eq!((t.compared, t.class_mismatches, t.values), (1, 1, 0));
     }
 
@@ -1162,25 +1153,25 @@ mod tests {
     fn non_finite_roots_are_null_with_exact_bits_and_nan_ulps_render_as_nan() {
         let e = Evaluation {
             line: 1,
-            kind: "sphere",
+            kind: Kind::Sphere,
             family: None,
             exact: Outcome::Hit {
-                class: "two",
+                class: Class::Two,
                 roots: Roots::two(1.0, f32::INFINITY),
             },
             columns: vec![Column {
                 implementation: Implementation::Reference,
                 outcome: Outcome::Hit {
-                    class: "two",
+                    class: Class::Two,
                     roots: Roots::two(f32::NAN, f32::INFINITY),
                 },
                 comparison: compare(
                     &Outcome::Hit {
-                        class: "two",
+                        class: Class::Two,
                         roots: Roots::two(1.0, f32::INFINITY),
                     },
                     &Outcome::Hit {
-                        class: "two",
+                        class: Class::Two,
                         roots: Roots::two(f32::NAN, f32::INFINITY),
                     },
                 ),
@@ -1195,7 +1186,7 @@ mod tests {
         );
         let mut s = Summary::default();
         s.add(&r);
-        assert_eq!(s.kind("sphere").unwrap().impls[0].max_ulps, u64::MAX);
+        assert_eq!(s.kind(Kind::Sphere).impls[0].max_ulps, u64::MAX);
         assert!(s.render().contains(" nan\n"), "{}", s.render());
     }
 }

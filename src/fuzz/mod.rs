@@ -1,8 +1,8 @@
 //! What each `cargo fuzz` target checks, as library functions: a target in
-//! `fuzz/fuzz_targets/` is one line around one of [`plane()`], [`sphere()`],
-//! [`quadric()`], [`camera()`] or [`eval_line`], and `cargo test` replays every
-//! committed corpus and regression input through the same functions
-//! (`tests/fuzz_replay.rs`).
+//! `fuzz/fuzz_targets/` is one line around [`primitive`] (the `plane`,
+//! `sphere` and `quadric` targets, one generic check), [`camera()`] or
+//! [`eval_line`], and `cargo test` replays every committed corpus and
+//! regression input through the same functions ([`TARGETS`]).
 //!
 //! A kernel input is four cases, one per lane, decoded with `arbitrary`
 //! from the fuzzer's bytes, so the fuzzer chooses what goes in which lane.
@@ -31,28 +31,21 @@
 //! built from the fixtures ([`encode_case`]).
 
 use crate::camera::{Camera, CameraParams};
-use crate::case::Case;
+use crate::case::{Case, match_case};
 use crate::check::{self, Violation};
 use crate::num::Lane;
 #[cfg(feature = "plane")]
-use crate::plane::{self, Plane};
+use crate::plane::Plane;
 #[cfg(feature = "quadric")]
-use crate::quadric::{self, Quadric};
+use crate::quadric::Quadric;
 #[cfg(feature = "sphere")]
 use crate::sphere::{self, Sphere};
 #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
-use crate::{Ray, hit::Intersection, ray4::Ray4};
+use crate::{Ray, hit::Intersection, primitive::Primitive, ray4::Ray4};
 use arbitrary::{Arbitrary, Unstructured};
 use glam::Vec3;
 #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 use wide::f32x4;
-
-#[cfg(all(feature = "sphere", not(feature = "quadric")))]
-use check::check_sphere as check_sphere_case;
-/// What the `sphere` target judges each case with: with the quadric
-/// compiled in, also the same sphere written as a quadric.
-#[cfg(all(feature = "sphere", feature = "quadric"))]
-use check::check_sphere_and_quadric as check_sphere_case;
 
 /// Special values the fuzzer can pick by index.
 const SPECIALS: [f32; 16] = [
@@ -247,6 +240,48 @@ pub fn accepts<H: Intersection>(got: &H, oracle: Result<H, crate::exact::NonFini
     }
 }
 
+/// A primitive with a fuzz target: how the target judges the reference's
+/// answer against the exact oracle. [`primitive`] is the target.
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+pub trait Target: Primitive {
+    /// Whether the oracle alone accepts `got` ([`accepts`]); `false` sends
+    /// it to [`Target::check`], which decides.
+    fn accepts(ray: &Ray, p: &Self, got: &Self::Hit) -> bool {
+        accepts(got, Self::exact(ray, p))
+    }
+    /// The full check ([`crate::check`]).
+    fn check(ray: &Ray, p: &Self, got: Self::Hit) -> Result<check::CaseReport, Violation>;
+}
+
+#[cfg(feature = "plane")]
+impl Target for Plane {
+    fn check(ray: &Ray, p: &Plane, got: Self::Hit) -> Result<check::CaseReport, Violation> {
+        check::check_plane(ray, p, got)
+    }
+}
+
+/// The `sphere` target checks, with the quadric compiled in, the same
+/// sphere written as a quadric too.
+#[cfg(feature = "sphere")]
+impl Target for Sphere {
+    fn accepts(ray: &Ray, s: &Sphere, got: &Self::Hit) -> bool {
+        sphere_accepts(ray, s, got)
+    }
+    fn check(ray: &Ray, s: &Sphere, got: Self::Hit) -> Result<check::CaseReport, Violation> {
+        #[cfg(feature = "quadric")]
+        return check::check_sphere_and_quadric(ray, s, got);
+        #[cfg(not(feature = "quadric"))]
+        return check::check_sphere(ray, s, got);
+    }
+}
+
+#[cfg(feature = "quadric")]
+impl Target for Quadric {
+    fn check(ray: &Ray, q: &Quadric, got: Self::Hit) -> Result<check::CaseReport, Violation> {
+        check::check_quadric(ray, q, got)
+    }
+}
+
 /// [`accepts`] for what the `sphere` target checks: the sphere reference's
 /// answer is the oracle's and, with the quadric compiled in, the sphere
 /// written as a quadric passes [`check::sphere_as_quadric`]: where
@@ -270,6 +305,7 @@ fn sphere_accepts(ray: &Ray, s: &Sphere, got: &sphere::SphereHit) -> bool {
         if !exact || ray.dir == Vec3::ZERO {
             return true;
         }
+        use crate::quadric;
         let Ok(eq) = quadric::exact::quadratic(ray, &q) else {
             return true;
         };
@@ -297,154 +333,87 @@ pub(crate) struct Kernels<R, X> {
     pub(crate) x4: X,
 }
 
-/// The plane kernels a target can be given.
-#[cfg(feature = "plane")]
-pub(crate) type PlaneKernels = Kernels<
-    fn(&Ray, &Plane) -> plane::PlaneHit,
-    fn(&Ray4, &plane::x4::Plane4) -> plane::x4::PlaneHit4,
->;
-/// The sphere kernels a target can be given.
-#[cfg(feature = "sphere")]
-pub(crate) type SphereKernels = Kernels<
-    fn(&Ray, &Sphere) -> sphere::SphereHit,
-    fn(&Ray4, &sphere::x4::Sphere4) -> sphere::x4::SphereHit4,
->;
-/// The quadric kernels a target can be given.
-#[cfg(feature = "quadric")]
-pub(crate) type QuadricKernels = Kernels<
-    fn(&Ray, &Quadric) -> quadric::QuadricHit,
-    fn(&Ray4, &quadric::x4::Quadric4) -> quadric::x4::QuadricHit4,
+/// The kernels of a primitive's target.
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+pub(crate) type PrimitiveKernels<P> = Kernels<
+    fn(&Ray, &P) -> <P as Primitive>::Hit,
+    fn(&Ray4, &<P as Primitive>::Packet) -> <P as Primitive>::Hit4,
 >;
 /// The camera kernels a target can be given: one pixel's ray, four pixels'.
 pub(crate) type CameraKernels =
     Kernels<fn(&Camera, u32, u32) -> crate::Ray, fn(&Camera, [[u32; 2]; 4]) -> crate::ray4::Ray4>;
 
-/// The `plane` target.
+/// The `plane`, `sphere` and `quadric` targets: four cases of `P`, one per
+/// lane, and an interval for `nearest`. The sphere's target also checks
+/// the sphere written as a quadric when the quadric is compiled in
+/// ([`Target`]).
 ///
 /// ```
+/// use rayoracle::{case::parse_line, fuzz::{encode_case, primitive}};
 /// let mut b = Vec::new();
-/// rayoracle::fuzz::encode_case(&rayoracle::case::parse_line(
+/// # #[cfg(feature = "plane")] {
+/// encode_case(&parse_line(
 ///     r#"{"kind":"plane","origin":[0,1,0],"dir":[0,-1,0],"point":[0,0,0],"normal":[0,1,0]}"#).unwrap().case, &mut b);
-/// assert_eq!(rayoracle::fuzz::plane(&b), Ok(()));
+/// assert_eq!(primitive::<rayoracle::plane::Plane>(&b), Ok(()));
+/// # }
+/// # #[cfg(feature = "sphere")] {
+/// b.clear();
+/// encode_case(&parse_line(
+///     r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap().case, &mut b);
+/// assert_eq!(primitive::<rayoracle::sphere::Sphere>(&b), Ok(()));
+/// # }
+/// # #[cfg(feature = "quadric")] {
+/// b.clear();
+/// encode_case(&parse_line(
+///     r#"{"kind":"quadric","origin":[-5,0,0],"dir":[1,0,0],"coeffs":[1,1,0,0,0,0,0,0,0,-1]}"#).unwrap().case, &mut b);
+/// assert_eq!(primitive::<rayoracle::quadric::Quadric>(&b), Ok(()));
+/// # }
 /// ```
-#[cfg(feature = "plane")]
-pub fn plane(data: &[u8]) -> Result<(), Failure> {
-    plane_with(
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+pub fn primitive<P: Target>(data: &[u8]) -> Result<(), Failure> {
+    primitive_with::<P>(
         data,
         Kernels {
-            reference: plane::reference::intersect,
-            x4: plane::x4::intersect,
+            reference: P::reference,
+            x4: P::x4,
         },
     )
 }
 
-/// [`plane()`] with the kernels given.
-#[cfg(feature = "plane")]
-pub(crate) fn plane_with(data: &[u8], k: PlaneKernels) -> Result<(), Failure> {
-    let Some((cases, interval)) = decode(data, |u| Ok((ray(u)?, Plane::new(vec3(u)?, vec3(u)?))))
-    else {
+/// One case of `P`: the ray, then the primitive's [`Primitive::inputs`].
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+fn one<P: Primitive>(u: &mut Unstructured<'_>) -> arbitrary::Result<(Ray, P)> {
+    let r = ray(u)?;
+    let v = (0..P::INPUTS)
+        .map(|_| f(u))
+        .collect::<arbitrary::Result<Vec<f32>>>()?;
+    Ok((r, P::from_inputs(&v)))
+}
+
+/// [`primitive()`] with the kernels given.
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+pub(crate) fn primitive_with<P: Target>(
+    data: &[u8],
+    k: PrimitiveKernels<P>,
+) -> Result<(), Failure> {
+    let Some((cases, interval)) = decode(data, one::<P>) else {
         return Ok(());
     };
     let reference = cases.map(|(r, p)| (k.reference)(&r, &p));
     let h4 = (k.x4)(
         &Ray4::from_rays(cases.map(|c| c.0)),
-        &plane::x4::Plane4::from_planes(cases.map(|c| c.1)),
+        &P::pack(cases.map(|c| c.1)),
     );
     let (lo, hi) = interval4(interval);
-    x4_matches(h4.lanes(), &reference, h4.nearest(lo, hi), interval)?;
+    x4_matches(
+        P::lanes(&h4),
+        &reference,
+        P::nearest4(&h4, lo, hi),
+        interval,
+    )?;
     for (i, (r, p)) in cases.iter().enumerate() {
-        if !accepts(&reference[i], plane::exact::intersect(r, p)) {
-            judged(i, &(r, p), check::check_plane(r, p, reference[i]))?;
-        }
-    }
-    Ok(())
-}
-
-/// The `sphere` target (including the sphere written as a quadric when the
-/// quadric is compiled in).
-///
-/// ```
-/// let mut b = Vec::new();
-/// rayoracle::fuzz::encode_case(&rayoracle::case::parse_line(
-///     r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#).unwrap().case, &mut b);
-/// assert_eq!(rayoracle::fuzz::sphere(&b), Ok(()));
-/// ```
-#[cfg(feature = "sphere")]
-pub fn sphere(data: &[u8]) -> Result<(), Failure> {
-    sphere_with(
-        data,
-        Kernels {
-            reference: sphere::reference::intersect,
-            x4: sphere::x4::intersect,
-        },
-    )
-}
-
-/// [`sphere()`] with the kernels given.
-#[cfg(feature = "sphere")]
-pub(crate) fn sphere_with(data: &[u8], k: SphereKernels) -> Result<(), Failure> {
-    let Some((cases, interval)) = decode(data, |u| Ok((ray(u)?, Sphere::new(vec3(u)?, f(u)?))))
-    else {
-        return Ok(());
-    };
-    let reference = cases.map(|(r, s)| (k.reference)(&r, &s));
-    let h4 = (k.x4)(
-        &Ray4::from_rays(cases.map(|c| c.0)),
-        &sphere::x4::Sphere4::from_spheres(cases.map(|c| c.1)),
-    );
-    let (lo, hi) = interval4(interval);
-    x4_matches(h4.lanes(), &reference, h4.nearest(lo, hi), interval)?;
-    for (i, (r, s)) in cases.iter().enumerate() {
-        if !sphere_accepts(r, s, &reference[i]) {
-            judged(i, &(r, s), check_sphere_case(r, s, reference[i]))?;
-        }
-    }
-    Ok(())
-}
-
-/// The `quadric` target.
-///
-/// ```
-/// let mut b = Vec::new();
-/// rayoracle::fuzz::encode_case(&rayoracle::case::parse_line(
-///     r#"{"kind":"quadric","origin":[-5,0,0],"dir":[1,0,0],"coeffs":[1,1,0,0,0,0,0,0,0,-1]}"#).unwrap().case, &mut b);
-/// assert_eq!(rayoracle::fuzz::quadric(&b), Ok(()));
-/// ```
-#[cfg(feature = "quadric")]
-pub fn quadric(data: &[u8]) -> Result<(), Failure> {
-    quadric_with(
-        data,
-        Kernels {
-            reference: quadric::reference::intersect,
-            x4: quadric::x4::intersect,
-        },
-    )
-}
-
-/// [`quadric()`] with the kernels given.
-#[cfg(feature = "quadric")]
-pub(crate) fn quadric_with(data: &[u8], k: QuadricKernels) -> Result<(), Failure> {
-    let one = |u: &mut Unstructured<'_>| -> arbitrary::Result<(Ray, Quadric)> {
-        let r = ray(u)?;
-        let mut coeffs = [0.0; 10];
-        for c in &mut coeffs {
-            *c = f(u)?;
-        }
-        Ok((r, Quadric::new(coeffs)))
-    };
-    let Some((cases, interval)) = decode(data, one) else {
-        return Ok(());
-    };
-    let reference = cases.map(|(r, q)| (k.reference)(&r, &q));
-    let h4 = (k.x4)(
-        &Ray4::from_rays(cases.map(|c| c.0)),
-        &quadric::x4::Quadric4::from_quadrics(cases.map(|c| c.1)),
-    );
-    let (lo, hi) = interval4(interval);
-    x4_matches(h4.lanes(), &reference, h4.nearest(lo, hi), interval)?;
-    for (i, (r, q)) in cases.iter().enumerate() {
-        if !accepts(&reference[i], quadric::exact::intersect(r, q)) {
-            judged(i, &(r, q), check::check_quadric(r, q, reference[i]))?;
+        if !P::accepts(r, p, &reference[i]) {
+            judged(i, &(r, p), P::check(r, p, reference[i]))?;
         }
     }
     Ok(())
@@ -566,37 +535,19 @@ pub(crate) fn eval_line_with(data: &[u8], eval: fn(usize, &str) -> String) -> Re
 /// # }
 /// ```
 pub fn encode_case(case: &Case, out: &mut Vec<u8>) {
-    match case {
-        #[cfg(feature = "plane")]
-        Case::Plane(r, p) => {
+    match_case!(
+        case,
+        |r, p| {
             for _ in 0..4 {
                 encode3(r.origin, out);
                 encode3(r.dir, out);
-                encode3(p.point, out);
-                encode3(p.normal, out);
+                Primitive::inputs(p)
+                    .iter()
+                    .for_each(|&x| encode_f32(x, out));
             }
             encode_interval(out);
-        }
-        #[cfg(feature = "sphere")]
-        Case::Sphere(r, s) => {
-            for _ in 0..4 {
-                encode3(r.origin, out);
-                encode3(r.dir, out);
-                encode3(s.center, out);
-                encode_f32(s.radius, out);
-            }
-            encode_interval(out);
-        }
-        #[cfg(feature = "quadric")]
-        Case::Quadric(r, q) => {
-            for _ in 0..4 {
-                encode3(r.origin, out);
-                encode3(r.dir, out);
-                q.coeffs.iter().for_each(|&c| encode_f32(c, out));
-            }
-            encode_interval(out);
-        }
-        Case::Camera(p, px) => {
+        },
+        |p, px| {
             encode3(p.position, out);
             encode3(p.dir, out);
             encode3(p.up, out);
@@ -609,8 +560,8 @@ pub fn encode_case(case: &Case, out: &mut Vec<u8>) {
                     out.extend((*c as u16).to_le_bytes());
                 }
             }
-        }
-    }
+        },
+    )
 }
 
 /// The interval `[0, ∞]` that ends a kernel input.
@@ -631,11 +582,11 @@ pub type Check = fn(&[u8]) -> Result<(), Failure>;
 pub const TARGETS: &[(&str, Check)] = &[
     ("camera", camera),
     #[cfg(feature = "plane")]
-    ("plane", plane),
+    ("plane", primitive::<Plane>),
     #[cfg(feature = "sphere")]
-    ("sphere", sphere),
+    ("sphere", primitive::<Sphere>),
     #[cfg(feature = "quadric")]
-    ("quadric", quadric),
+    ("quadric", primitive::<Quadric>),
     ("eval_line", eval_line),
     #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
     ("scene", scene::check),
@@ -652,28 +603,50 @@ mod tests {
     use arbitrary::{Arbitrary, Unstructured};
 
     /// What `encode_case` writes, the targets' decoder reads back: the
-    /// same four cases (bit for bit, −0 and NaN included) and the interval.
+    /// same four cases (bit for bit, −0 and NaN included) and the interval,
+    /// for every primitive (each decoy, and the ray below with the decoy's
+    /// primitive, its inputs negated).
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+    fn encoded_cases_decode_to_themselves<P: crate::primitive::Primitive>() {
+        use super::{decode, encode_case, one};
+        use crate::Ray;
+        use glam::Vec3;
+        let odd = Ray::new(Vec3::new(-0.0, 1.5, f32::NAN), Vec3::new(3.0, -2.0, 1e-40));
+        let negated = |p: &P| P::from_inputs(&P::inputs(p).iter().map(|x| -x).collect::<Vec<_>>());
+        let mut all: Vec<(Ray, P)> = P::decoys().to_vec();
+        all.extend(P::decoys().iter().map(|(_, p)| (odd, negated(p))));
+        let bits = |r: Ray, p: P| {
+            let mut v: Vec<f32> = [r.origin.to_array(), r.dir.to_array()].concat();
+            v.extend(P::inputs(&p));
+            v.into_iter().map(f32::to_bits).collect::<Vec<u32>>()
+        };
+        for (r, p) in all {
+            let mut b = Vec::new();
+            encode_case(&P::case(r, p), &mut b);
+            let (cases, interval) = decode(&b, one::<P>).unwrap();
+            for (rd, pd) in cases {
+                assert_eq!(bits(rd, pd), bits(r, p), "{:?}", P::KIND);
+            }
+            assert_eq!((interval.0, interval.1), (0.0, f32::INFINITY));
+        }
+    }
+
+    #[cfg(feature = "plane")]
+    #[test]
+    fn an_encoded_plane_case_decodes_to_itself() {
+        encoded_cases_decode_to_themselves::<crate::plane::Plane>();
+    }
+
     #[cfg(feature = "sphere")]
     #[test]
     fn an_encoded_sphere_case_decodes_to_itself() {
-        use super::{decode, encode_case, f, ray, vec3};
-        use crate::{Ray, case::Case, sphere::Sphere};
-        use glam::Vec3;
-        let (r, s) = (
-            Ray::new(Vec3::new(-0.0, 1.5, f32::NAN), Vec3::new(3.0, -2.0, 1e-40)),
-            Sphere::new(Vec3::new(7.0, -8.0, 9.0), 0.25),
-        );
-        let mut b = Vec::new();
-        encode_case(&Case::Sphere(r, s), &mut b);
-        let (cases, interval) =
-            decode(&b, |u| Ok((ray(u)?, Sphere::new(vec3(u)?, f(u)?)))).unwrap();
-        let bits = |v: Vec3| v.to_array().map(f32::to_bits);
-        for (rd, sd) in cases {
-            assert_eq!(bits(rd.origin), bits(r.origin));
-            assert_eq!(bits(rd.dir), bits(r.dir));
-            assert_eq!((bits(sd.center), sd.radius), (bits(s.center), s.radius));
-        }
-        assert!(interval.0 <= interval.1, "{interval:?}");
+        encoded_cases_decode_to_themselves::<crate::sphere::Sphere>();
+    }
+
+    #[cfg(feature = "quadric")]
+    #[test]
+    fn an_encoded_quadric_case_decodes_to_itself() {
+        encoded_cases_decode_to_themselves::<crate::quadric::Quadric>();
     }
 
     /// A violation becomes a failure naming its lane and case; an

@@ -49,7 +49,7 @@ fn head(r: Result<(), Failure>) -> String {
 #[cfg(feature = "plane")]
 mod plane {
     use super::*;
-    use crate::fuzz::{Kernels, PlaneKernels, encode3, plane_with};
+    use crate::fuzz::{Kernels, PrimitiveKernels, encode3, primitive_with};
     use crate::plane::{Plane, PlaneHit, reference, x4};
 
     /// Lane `i` is the line from `(0, 1 + i, 0)` straight down onto `y = 0`:
@@ -88,20 +88,20 @@ mod plane {
 
     #[test]
     fn the_plane_target_catches_swapped_lanes_and_a_wrong_root() {
-        assert_eq!(crate::fuzz::plane(&input()), Ok(()));
-        let swap: PlaneKernels = Kernels {
+        assert_eq!(crate::fuzz::primitive::<Plane>(&input()), Ok(()));
+        let swap: PrimitiveKernels<Plane> = Kernels {
             reference: reference::intersect,
             x4: swapped,
         };
         assert_eq!(
-            head(plane_with(&input(), swap)),
+            head(primitive_with::<Plane>(&input(), swap)),
             "lane 0: x4 Hit(2.0) but reference Hit(1.0)"
         );
-        let shift: PlaneKernels = Kernels {
+        let shift: PrimitiveKernels<Plane> = Kernels {
             reference: shifted,
             x4: shifted4,
         };
-        let e = head(plane_with(&input(), shift));
+        let e = head(primitive_with::<Plane>(&input(), shift));
         assert!(
             e.starts_with("lane 0: plane: root 0 is 2e0 (0x40000000), exact 1e0 (0x3f800000)"),
             "{e}"
@@ -112,7 +112,7 @@ mod plane {
 #[cfg(feature = "sphere")]
 mod sphere {
     use super::*;
-    use crate::fuzz::{Kernels, SphereKernels, encode3, sphere_with};
+    use crate::fuzz::{Kernels, PrimitiveKernels, encode3, primitive_with};
     use crate::ray4::scatter3;
     use crate::sphere::{Sphere, SphereHit, reference, textbook, x4};
 
@@ -167,20 +167,20 @@ mod sphere {
 
     #[test]
     fn the_sphere_target_catches_swapped_lanes_and_the_textbook_formula() {
-        assert_eq!(crate::fuzz::sphere(&input()), Ok(()));
-        let swap: SphereKernels = Kernels {
+        assert_eq!(crate::fuzz::primitive::<Sphere>(&input()), Ok(()));
+        let swap: PrimitiveKernels<Sphere> = Kernels {
             reference: reference::intersect,
             x4: swapped,
         };
         assert_eq!(
-            head(sphere_with(&input(), swap)),
+            head(primitive_with::<Sphere>(&input(), swap)),
             "lane 0: x4 Two(5.0, 7.0) but reference Two(9999.0, 10001.0)"
         );
-        let seed: SphereKernels = Kernels {
+        let seed: PrimitiveKernels<Sphere> = Kernels {
             reference: textbook::intersect,
             x4: textbook4,
         };
-        let e = head(sphere_with(&input(), seed));
+        let e = head(primitive_with::<Sphere>(&input(), seed));
         assert!(
             e.starts_with("lane 0: sphere: class tangent, exact two"),
             "{e}"
@@ -191,7 +191,7 @@ mod sphere {
 #[cfg(feature = "quadric")]
 mod quadric {
     use super::*;
-    use crate::fuzz::{Kernels, QuadricKernels, encode3, quadric_with};
+    use crate::fuzz::{Kernels, PrimitiveKernels, encode3, primitive_with};
     use crate::quadric::{Quadric, QuadricHit, reference, x4};
 
     /// Lane `i` runs along +x from `x = −(5 + i)` through the cylinder
@@ -234,20 +234,20 @@ mod quadric {
 
     #[test]
     fn the_quadric_target_catches_swapped_lanes_and_wrong_roots() {
-        assert_eq!(crate::fuzz::quadric(&input()), Ok(()));
-        let swap: QuadricKernels = Kernels {
+        assert_eq!(crate::fuzz::primitive::<Quadric>(&input()), Ok(()));
+        let swap: PrimitiveKernels<Quadric> = Kernels {
             reference: reference::intersect,
             x4: swapped,
         };
         assert_eq!(
-            head(quadric_with(&input(), swap)),
+            head(primitive_with::<Quadric>(&input(), swap)),
             "lane 0: x4 Two(5.0, 7.0) but reference Two(4.0, 6.0)"
         );
-        let shift: QuadricKernels = Kernels {
+        let shift: PrimitiveKernels<Quadric> = Kernels {
             reference: shifted,
             x4: shifted4,
         };
-        let e = head(quadric_with(&input(), shift));
+        let e = head(primitive_with::<Quadric>(&input(), shift));
         assert!(
             e.starts_with("lane 0: quadric: root 0 is 5e0 (0x40a00000), exact 4e0 (0x40800000)"),
             "{e}"

@@ -1,71 +1,17 @@
 //! The catalogue of stiff and extreme cases (`fixtures/stiff/`): named
 //! families of `eval` case lines, each documented with why it is stiff.
 
-use crate::case::{Case, parse_line};
+use crate::case::{Case, Kind, parse_line};
 use serde::Deserialize;
 use std::path::Path;
-
-/// The four kernels a family can exercise.
-///
-/// ```
-/// use rayoracle::report::Kernel;
-/// assert_eq!(Kernel::parse("sphere"), Some(Kernel::Sphere));
-/// assert_eq!(Kernel::Camera.name(), "camera");
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum Kernel {
-    /// The perspective camera.
-    Camera,
-    /// Ray–plane.
-    Plane,
-    /// Ray–sphere.
-    Sphere,
-    /// Ray–quadric.
-    Quadric,
-}
-
-impl Kernel {
-    /// Every kernel, in report order.
-    pub const ALL: [Kernel; 4] = [
-        Kernel::Sphere,
-        Kernel::Plane,
-        Kernel::Quadric,
-        Kernel::Camera,
-    ];
-
-    /// The kernel's name, as in case lines.
-    ///
-    /// ```
-    /// use rayoracle::report::Kernel;
-    /// assert_eq!(Kernel::Quadric.name(), "quadric");
-    /// ```
-    pub fn name(self) -> &'static str {
-        match self {
-            Kernel::Camera => "camera",
-            Kernel::Plane => "plane",
-            Kernel::Sphere => "sphere",
-            Kernel::Quadric => "quadric",
-        }
-    }
-
-    /// The kernel of a name.
-    ///
-    /// ```
-    /// use rayoracle::report::Kernel;
-    /// assert_eq!(Kernel::parse("cube"), None);
-    /// ```
-    pub fn parse(name: &str) -> Option<Kernel> {
-        Kernel::ALL.into_iter().find(|k| k.name() == name)
-    }
-}
 
 /// One family of the catalogue.
 ///
 /// ```
-/// use rayoracle::report::{Catalogue, Kernel};
+/// use rayoracle::{case::Kind, report::Catalogue};
 /// let c = Catalogue::builtin().unwrap();
 /// let far = c.family("sphere/far-tiny").unwrap();
-/// assert_eq!(far.kernel, Kernel::Sphere);
+/// assert_eq!(far.kernel, Kind::Sphere);
 /// assert!(far.well_conditioned && !far.cases.is_empty());
 /// ```
 #[derive(Clone, Debug)]
@@ -73,7 +19,7 @@ pub struct Family {
     /// `kernel/name`, as in the cases' `family` field.
     pub name: String,
     /// The kernel it exercises.
-    pub kernel: Kernel,
+    pub kernel: Kind,
     /// Whether its roots are well-conditioned (judged by a fixed bit
     /// budget) or ill-conditioned (judged by a condition-aware bound).
     pub well_conditioned: bool,
@@ -110,8 +56,8 @@ impl Catalogue {
     /// The crate's own catalogue, `fixtures/stiff/`, compiled in
     /// ([`crate::fixtures`]).
     pub fn builtin() -> Result<Catalogue, String> {
-        let files = ["camera", "plane", "quadric", "sphere"].map(|k| {
-            let text = crate::fixtures::stiff(k).expect("every kind has a stiff file");
+        let files = [Kind::Camera, Kind::Plane, Kind::Quadric, Kind::Sphere].map(|k| {
+            let text = crate::fixtures::stiff(k);
             (format!("fixtures/stiff/{k}.jsonl"), text.to_string())
         });
         Catalogue::parse(
@@ -164,7 +110,7 @@ impl Catalogue {
             serde_json::from_str(index_text).map_err(|e| format!("{index}: {e}"))?;
         let mut families = Vec::new();
         for e in entries {
-            let kernel = Kernel::parse(&e.kernel).ok_or_else(|| {
+            let kernel: Kind = e.kernel.parse().map_err(|_| {
                 format!("{index}: family {}: unknown kernel {}", e.family, e.kernel)
             })?;
             let well_conditioned = match e.conditioning.as_str() {
@@ -199,12 +145,12 @@ impl Catalogue {
                     .iter_mut()
                     .find(|f| f.name == name)
                     .ok_or_else(|| format!("{}: family {name} is not in {index}", at()))?;
-                if parsed.case.kind() != family.kernel.name() {
+                if parsed.case.kind() != family.kernel {
                     return Err(format!(
                         "{}: a {} case in the {} family {name}",
                         at(),
                         parsed.case.kind(),
-                        family.kernel.name()
+                        family.kernel
                     ));
                 }
                 family.cases.push(parsed.case);

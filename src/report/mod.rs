@@ -31,18 +31,27 @@ mod catalogue;
 mod error;
 mod variant;
 
-pub use catalogue::{Catalogue, Family, Kernel};
+pub use catalogue::{Catalogue, Family};
 pub use error::{CaseError, case_error};
 pub use variant::Variant;
 
+use crate::case::Kind;
 use serde::Serialize;
 use variant::Batch;
+
+/// Every kernel, in report order.
+///
+/// ```
+/// use rayoracle::{case::Kind, report::KERNELS};
+/// assert_eq!(KERNELS, [Kind::Sphere, Kind::Plane, Kind::Quadric, Kind::Camera]);
+/// ```
+pub const KERNELS: [Kind; 4] = [Kind::Sphere, Kind::Plane, Kind::Quadric, Kind::Camera];
 
 /// One kernel × variant × family line of the report (also its JSON form).
 ///
 /// ```
-/// use rayoracle::report::Row;
-/// let r = Row { kernel: "sphere".into(), variant: "x4".into(), family: "sphere/far-tiny".into(),
+/// use rayoracle::{case::Kind, report::{Row, Variant}};
+/// let r = Row { kernel: Kind::Sphere, variant: Variant::X4, family: "sphere/far-tiny".into(),
 ///     conditioning: "well".into(), cases: 4, max_bits: 1.0, p99_bits: 1.0, mean_bits: 0.25,
 ///     class_mismatches: 0, ns_per_ray: 20.0, stages: [("filter".into(), 0.75), ("exact".into(), 0.25)].into(),
 ///     front: true };
@@ -52,10 +61,10 @@ use variant::Batch;
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Row {
-    /// `sphere`, `plane`, `quadric` or `camera`.
-    pub kernel: String,
-    /// [`Variant::name`].
-    pub variant: String,
+    /// The kernel (its name in JSON).
+    pub kernel: Kind,
+    /// The variant ([`Variant::name`] in JSON).
+    pub variant: Variant,
     /// The family, `kernel/name`.
     pub family: String,
     /// `well` or `ill`, as the catalogue says of the family.
@@ -164,8 +173,8 @@ fn accuracy_against(
         bits.iter().sum::<f64>() / bits.len() as f64
     };
     Row {
-        kernel: family.kernel.name().into(),
-        variant: variant.name().into(),
+        kernel: family.kernel,
+        variant,
         family: family.name.clone(),
         conditioning: if family.well_conditioned {
             "well"
@@ -201,17 +210,13 @@ fn accuracy_against(
 /// assert_eq!(s.values().sum::<f64>(), 1.0);
 /// ```
 pub fn stage_shares(cases: &[crate::case::Case]) -> std::collections::BTreeMap<String, f64> {
-    use crate::case::Case;
+    use crate::case::match_case;
+    use crate::primitive::Primitive;
     use crate::stage::Stage;
     let mut counts = [0usize; Stage::ALL.len()];
     let mut n = 0;
     for case in cases {
-        let stage = match case {
-            Case::Plane(r, p) => crate::plane::reference::intersect_staged(r, p).1,
-            Case::Sphere(r, s) => crate::sphere::reference::intersect_staged(r, s).1,
-            Case::Quadric(r, q) => crate::quadric::reference::intersect_staged(r, q).1,
-            Case::Camera(..) => continue,
-        };
+        let stage = match_case!(case, |r, p| Primitive::staged(r, p).1, |_, _| continue);
         counts[Stage::ALL
             .iter()
             .position(|s| *s == stage)
@@ -230,14 +235,14 @@ pub fn stage_shares(cases: &[crate::case::Case]) -> std::collections::BTreeMap<S
 
 /// Marks each row whose variant is on its kernel's Pareto front.
 pub fn mark_front(rows: &mut [Row]) {
-    for kernel in Kernel::ALL {
+    for kernel in KERNELS {
         let front: Vec<String> = points(rows, kernel)
             .into_iter()
             .filter(|p| p.front)
             .map(|p| p.variant)
             .collect();
-        for r in rows.iter_mut().filter(|r| r.kernel == kernel.name()) {
-            r.front = front.contains(&r.variant);
+        for r in rows.iter_mut().filter(|r| r.kernel == kernel) {
+            r.front = front.iter().any(|v| v == r.variant.name());
         }
     }
 }
@@ -325,13 +330,13 @@ pub fn pareto(mut points: Vec<Point>) -> Vec<Point> {
 }
 
 /// The points of one kernel, front marked.
-pub fn points(rows: &[Row], kernel: Kernel) -> Vec<Point> {
+pub fn points(rows: &[Row], kernel: Kind) -> Vec<Point> {
     let pts = Variant::ALL
         .into_iter()
         .filter_map(|v| {
             let mine: Vec<&Row> = rows
                 .iter()
-                .filter(|r| r.kernel == kernel.name() && r.variant == v.name())
+                .filter(|r| r.kernel == kernel && r.variant == v)
                 .collect();
             if mine.is_empty() {
                 return None;
@@ -363,12 +368,12 @@ pub fn points(rows: &[Row], kernel: Kernel) -> Vec<Point> {
 /// points of each kernel under it.
 pub fn markdown(rows: &[Row], catalogue: &Catalogue) -> String {
     let mut out = String::new();
-    for kernel in Kernel::ALL {
-        let mine: Vec<&Row> = rows.iter().filter(|r| r.kernel == kernel.name()).collect();
+    for kernel in KERNELS {
+        let mine: Vec<&Row> = rows.iter().filter(|r| r.kernel == kernel).collect();
         if mine.is_empty() {
             continue;
         }
-        out += &format!("### {}\n\n", kernel.name());
+        out += &format!("### {kernel}\n\n");
         let names: Vec<&str> = crate::stage::Stage::ALL.iter().map(|s| s.name()).collect();
         out += &format!(
             "| family | cond. | variant | cases | max bits | p99 bits | mean bits | class mismatches | {} | ns/ray |\n",
@@ -420,7 +425,8 @@ pub fn markdown(rows: &[Row], catalogue: &Catalogue) -> String {
 #[cfg(test)]
 mod tests {
     use super::variant::Timed;
-    use super::{Catalogue, Kernel, Row, markdown, median_pass, points};
+    use super::{Catalogue, Row, Variant, markdown, median_pass, points};
+    use crate::case::Kind;
 
     /// The calibration pass sets the repetitions (2·10⁵ ns over a pass of
     /// 10³ ns: 200; capped at 10⁴ for a pass too fast to see, at least 1
@@ -459,8 +465,8 @@ mod tests {
 
     fn row(kernel: &str, variant: &str, family: &str, ns: f64, mismatches: usize) -> Row {
         Row {
-            kernel: kernel.into(),
-            variant: variant.into(),
+            kernel: kernel.parse().unwrap(),
+            variant: Variant::parse(variant).unwrap(),
             family: family.into(),
             conditioning: "well".into(),
             cases: 4,
@@ -488,7 +494,7 @@ mod tests {
     /// a misclassified case counts 32 bits.
     #[test]
     fn points_take_only_their_kernel_and_variant() {
-        let pts = points(&rows(), Kernel::Sphere);
+        let pts = points(&rows(), Kind::Sphere);
         let got: Vec<(&str, f64, f64, usize)> = pts
             .iter()
             .map(|p| (p.variant.as_str(), p.ns_per_ray, p.error_bits, p.mismatches))
@@ -505,7 +511,7 @@ mod tests {
         rs.push(row("sphere", "f64", "sphere/far-tiny", 1.0, 0));
         rs.push(row("sphere", "f64", "sphere/huge-near", 1.0, 3));
         rs[2].class_mismatches = 0;
-        let pts = points(&rs, Kernel::Sphere);
+        let pts = points(&rs, Kind::Sphere);
         let got: Vec<(&str, f64, usize, bool)> = pts
             .iter()
             .map(|p| (p.variant.as_str(), p.error_bits, p.mismatches, p.front))
@@ -530,7 +536,7 @@ mod tests {
         super::mark_front(&mut rs);
         let front: Vec<(&str, &str, bool)> = rs
             .iter()
-            .map(|r| (r.kernel.as_str(), r.variant.as_str(), r.front))
+            .map(|r| (r.kernel.as_str(), r.variant.name(), r.front))
             .collect();
         assert_eq!(
             front,

@@ -49,7 +49,7 @@ pub mod textbook;
 pub mod x4;
 
 use crate::Ray;
-use crate::hit::{Intersection, Roots};
+use crate::hit::{Class, Intersection, Roots};
 use glam::Vec3;
 
 /// A sphere with centre `center` and radius `radius`.
@@ -100,11 +100,11 @@ pub enum SphereHit {
 }
 
 impl Intersection for SphereHit {
-    fn class(&self) -> &'static str {
+    fn class(&self) -> Class {
         match self {
-            SphereHit::None => "none",
-            SphereHit::Tangent(_) => "tangent",
-            SphereHit::Two(..) => "two",
+            SphereHit::None => Class::None,
+            SphereHit::Tangent(_) => Class::Tangent,
+            SphereHit::Two(..) => Class::Two,
         }
     }
     fn roots(&self) -> Roots {
@@ -195,4 +195,43 @@ pub fn condition_at(ray: &Ray, s: &Sphere, t: f64) -> f64 {
     }
     sum += (r * 2.0 * r).abs(); // ∂g/∂R = −2R
     sum / (gt.abs() * t.abs())
+}
+
+impl crate::primitive::Primitive for Sphere {
+    const KIND: crate::case::Kind = crate::case::Kind::Sphere;
+    const INPUTS: usize = 4;
+    type Hit = SphereHit;
+    type Packet = x4::Sphere4;
+    type Hit4 = x4::SphereHit4;
+
+    crate::primitive::kernels!();
+
+    fn pack(s: [Sphere; 4]) -> x4::Sphere4 {
+        x4::Sphere4::from_spheres(s)
+    }
+    /// A two-hit, a NaN ray and a tangent.
+    fn decoys() -> [(Ray, Sphere); 3] {
+        let unit = Sphere::new(Vec3::ZERO, 1.0);
+        [
+            (Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), unit),
+            (Ray::new(Vec3::splat(f32::NAN), Vec3::Z), unit),
+            (Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z), unit),
+        ]
+    }
+    fn inputs(&self) -> Vec<f32> {
+        [self.center.to_array().as_slice(), &[self.radius]].concat()
+    }
+    fn from_inputs(v: &[f32]) -> Sphere {
+        let [x, y, z, r] = crate::primitive::padded(v);
+        Sphere::new(Vec3::new(x, y, z), r)
+    }
+    fn case(ray: Ray, s: Sphere) -> crate::case::Case {
+        crate::case::Case::Sphere(ray, s)
+    }
+    fn of_case(case: &crate::case::Case) -> Option<(Ray, Sphere)> {
+        match case {
+            crate::case::Case::Sphere(r, s) => Some((*r, *s)),
+            _ => None,
+        }
+    }
 }

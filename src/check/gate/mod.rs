@@ -569,9 +569,10 @@ impl Gate {
     fn sources(&self, kind: &str, random: usize) -> (Vec<Sourced>, Vec<String>) {
         let mut out = Vec::new();
         let mut errors = Vec::new();
+        let known = kind.parse::<crate::case::Kind>().ok();
         let files = [
-            ("cases", crate::fixtures::cases(kind)),
-            ("stiff", crate::fixtures::stiff(kind)),
+            ("cases", known.map(crate::fixtures::cases)),
+            ("stiff", known.map(crate::fixtures::stiff)),
         ];
         for (dir, text) in files {
             let Some(text) = text else {

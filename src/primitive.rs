@@ -1,0 +1,269 @@
+//! What the plane, the sphere and the quadric have in common, as one
+//! trait: the harnesses (`eval`, the fuzz targets, the report) are written
+//! once, generically, and each primitive's module says only what is its
+//! own.
+//!
+//! ```
+//! # #[cfg(feature = "sphere")] {
+//! use rayoracle::{Ray, primitive::Primitive, sphere::{Sphere, SphereHit}};
+//! use glam::Vec3;
+//! fn nearest<P: Primitive>(ray: &Ray, p: &P) -> Option<f32> {
+//!     use rayoracle::hit::Intersection;
+//!     P::reference(ray, p).nearest(0.0, f32::INFINITY)
+//! }
+//! let r = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
+//! assert_eq!(nearest(&r, &Sphere::new(Vec3::ZERO, 1.0)), Some(4.0));
+//! assert_eq!(Sphere::exact(&r, &Sphere::new(Vec3::ZERO, 1.0)), Ok(SphereHit::Two(4.0, 6.0)));
+//! # }
+//! ```
+
+use crate::Ray;
+use crate::case::{Case, Kind};
+use crate::exact::NonFinite;
+use crate::hit::Intersection;
+use crate::ray4::Ray4;
+use crate::stage::Stage;
+use wide::f32x4;
+
+/// A primitive a ray is intersected with: its answer type, its kernels, its
+/// four-lane packet, the exact oracle, and its place in a [`Case`].
+/// Implemented by [`Plane`](crate::plane::Plane),
+/// [`Sphere`](crate::sphere::Sphere) and [`Quadric`](crate::quadric::Quadric),
+/// each in its own module.
+///
+/// The kernels take `(ray, primitive)`, so `P::reference` is a
+/// `fn(&Ray, &P) -> P::Hit` as the fuzz targets and gates take them.
+pub trait Primitive: Copy + core::fmt::Debug + PartialEq + Sized + 'static {
+    /// The case kind.
+    const KIND: Kind;
+    /// How many `f32` inputs the primitive has ([`Primitive::inputs`]).
+    const INPUTS: usize;
+    /// The answer over the whole line.
+    type Hit: Intersection + Copy + core::fmt::Debug + PartialEq;
+    /// Four primitives, one per lane.
+    type Packet: Copy + core::fmt::Debug;
+    /// Four answers, one per lane.
+    type Hit4: Copy + core::fmt::Debug;
+
+    /// The scalar reference: exact class, roots correctly rounded.
+    fn reference(ray: &Ray, p: &Self) -> Self::Hit;
+    /// [`Primitive::reference`] and the stage that decided it.
+    fn staged(ray: &Ray, p: &Self) -> (Self::Hit, Stage);
+    /// The textbook formulas in f32 (`*::textbook`).
+    fn textbook(ray: &Ray, p: &Self) -> Self::Hit;
+    /// The reference's formulation in plain f64 (`*::plain`).
+    fn plain(ray: &Ray, p: &Self) -> Self::Hit;
+    /// The exact oracle; an error for a non-finite input.
+    fn exact(ray: &Ray, p: &Self) -> Result<Self::Hit, NonFinite>;
+
+    /// Packs four primitives, lane `i` from `p[i]`.
+    fn pack(p: [Self; 4]) -> Self::Packet;
+    /// The four-lane kernel (`*::x4::intersect`).
+    fn x4(ray: &Ray4, p: &Self::Packet) -> Self::Hit4;
+    /// The four answers of a packet.
+    fn lanes(h: &Self::Hit4) -> [Self::Hit; 4];
+    /// Per lane, whether there is a solution in `[t_min, t_max]` (a mask)
+    /// and the nearest one (`+∞` where there is none).
+    fn nearest4(h: &Self::Hit4, t_min: f32x4, t_max: f32x4) -> (f32x4, f32x4);
+
+    /// Three cases for the other lanes of a packet when one case is run in
+    /// each lane in turn: answers of different classes, one of them from a
+    /// NaN ray, so that a lane leaking into its neighbours shows.
+    fn decoys() -> [(Ray, Self); 3];
+
+    /// The primitive's `f32` inputs, [`Primitive::INPUTS`] of them, in the
+    /// order of its fields (the fuzz targets' byte order).
+    fn inputs(&self) -> Vec<f32>;
+    /// The primitive of [`Primitive::inputs`]; missing values are `0`.
+    fn from_inputs(v: &[f32]) -> Self;
+
+    /// The case of a ray and this primitive.
+    fn case(ray: Ray, p: Self) -> Case;
+    /// The ray and primitive of a case of this kind, `None` for another.
+    fn of_case(case: &Case) -> Option<(Ray, Self)>;
+}
+
+/// The kernel entry points of a [`Primitive`] impl ([`Primitive::reference`],
+/// `staged`, `textbook`, `plain`, `exact`, `x4`, `lanes`, `nearest4`), each
+/// the function of the same role in the primitive's module: the modules
+/// `reference`, `textbook`, `plain`, `exact` and `x4` must be in scope
+/// where it is invoked.
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+macro_rules! kernels {
+    () => {
+        fn reference(ray: &$crate::Ray, p: &Self) -> Self::Hit {
+            reference::intersect(ray, p)
+        }
+        fn staged(ray: &$crate::Ray, p: &Self) -> (Self::Hit, $crate::stage::Stage) {
+            reference::intersect_staged(ray, p)
+        }
+        fn textbook(ray: &$crate::Ray, p: &Self) -> Self::Hit {
+            textbook::intersect(ray, p)
+        }
+        fn plain(ray: &$crate::Ray, p: &Self) -> Self::Hit {
+            plain::intersect(ray, p)
+        }
+        fn exact(ray: &$crate::Ray, p: &Self) -> Result<Self::Hit, $crate::exact::NonFinite> {
+            exact::intersect(ray, p)
+        }
+        fn x4(ray: &$crate::ray4::Ray4, p: &Self::Packet) -> Self::Hit4 {
+            x4::intersect(ray, p)
+        }
+        fn lanes(h: &Self::Hit4) -> [Self::Hit; 4] {
+            h.lanes()
+        }
+        fn nearest4(
+            h: &Self::Hit4,
+            t_min: wide::f32x4,
+            t_max: wide::f32x4,
+        ) -> (wide::f32x4, wide::f32x4) {
+            h.nearest(t_min, t_max)
+        }
+    };
+}
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+pub(crate) use kernels;
+
+/// `case` in lane `lane` of a packet and `decoys` in the other lanes, in
+/// order.
+///
+/// ```
+/// use rayoracle::primitive::packet;
+/// assert_eq!(packet(9, [1, 2, 3], 0), [9, 1, 2, 3]);
+/// assert_eq!(packet(9, [1, 2, 3], 2), [1, 2, 9, 3]);
+/// assert_eq!(packet(9, [1, 2, 3], 3), [1, 2, 3, 9]);
+/// ```
+pub fn packet<T: Copy>(case: T, decoys: [T; 3], lane: usize) -> [T; 4] {
+    let mut d = decoys.into_iter();
+    core::array::from_fn(|i| {
+        if i == lane {
+            case
+        } else {
+            d.next().unwrap_or(case)
+        }
+    })
+}
+
+/// Runs a ray and a primitive in each lane of a packet in turn, its
+/// [`Primitive::decoys`] in the other lanes: `run` takes the four cases
+/// and answers for each lane, and the result holds the answer of the
+/// case's own lane in each placement. A four-lane kernel that keeps its
+/// lanes apart gives four equal answers.
+///
+/// ```
+/// # #[cfg(feature = "sphere")] {
+/// use rayoracle::{Ray, primitive::{in_every_lane, x4_lanes}, sphere::{Sphere, SphereHit}};
+/// use glam::Vec3;
+/// let (r, s) = (Ray::new(Vec3::new(0.0, 0.0, -3.0), Vec3::Z), Sphere::new(Vec3::ZERO, 1.0));
+/// assert_eq!(in_every_lane(r, s, x4_lanes), [SphereHit::Two(2.0, 4.0); 4]);
+/// // A kernel that answers from lane 0 only is caught.
+/// let leaky = in_every_lane(r, s, |c| [x4_lanes(c)[0]; 4]);
+/// assert_ne!(leaky[1], leaky[0]);
+/// # }
+/// ```
+pub fn in_every_lane<P: Primitive, A: Clone>(
+    ray: Ray,
+    p: P,
+    run: impl Fn([(Ray, P); 4]) -> [A; 4],
+) -> [A; 4] {
+    core::array::from_fn(|lane| run(packet((ray, p), P::decoys(), lane))[lane].clone())
+}
+
+/// Runs the x4 kernel on four `(ray, primitive)` cases and unpacks the
+/// answers.
+///
+/// ```
+/// # #[cfg(feature = "plane")] {
+/// use rayoracle::{Ray, plane::{Plane, PlaneHit}, primitive::x4_lanes};
+/// use glam::Vec3;
+/// let c = (Ray::new(Vec3::Y, -Vec3::Y), Plane::new(Vec3::ZERO, Vec3::Y));
+/// assert_eq!(x4_lanes([c; 4]), [PlaneHit::Hit(1.0); 4]);
+/// # }
+/// ```
+pub fn x4_lanes<P: Primitive>(cases: [(Ray, P); 4]) -> [P::Hit; 4] {
+    P::lanes(&x4_packet(cases))
+}
+
+/// Runs the x4 kernel on four `(ray, primitive)` cases.
+pub fn x4_packet<P: Primitive>(cases: [(Ray, P); 4]) -> P::Hit4 {
+    P::x4(
+        &Ray4::from_rays(cases.map(|c| c.0)),
+        &P::pack(cases.map(|c| c.1)),
+    )
+}
+
+/// The first `n` values of `v`, zero-padded: the fields of
+/// [`Primitive::from_inputs`].
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+pub(crate) fn padded<const N: usize>(v: &[f32]) -> [f32; N] {
+    core::array::from_fn(|i| v.get(i).copied().unwrap_or(0.0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+    use crate::hit::{Class, same_bits};
+
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+    /// Every primitive's decoys give different classes, one of them from a
+    /// NaN ray; a kind's inputs read back to the same primitive; a case
+    /// built from a pair gives that pair back and is of the kind.
+    fn holds_for<P: Primitive>() {
+        let d = P::decoys();
+        let classes: Vec<Class> = d.iter().map(|(r, p)| P::reference(r, p).class()).collect();
+        assert!(
+            classes[0] != classes[1] && classes[1] != classes[2] && classes[0] != classes[2],
+            "{:?}: {classes:?}",
+            P::KIND
+        );
+        assert!(d.iter().any(|(r, _)| r.origin.is_nan()));
+        for (r, p) in d {
+            assert_eq!(P::inputs(&p).len(), P::INPUTS);
+            assert_eq!(P::from_inputs(&P::inputs(&p)), p);
+            let c = P::case(r, p);
+            assert_eq!(c.kind(), P::KIND);
+            let (r2, p2) = P::of_case(&c).expect("a case of its own kind");
+            let bits = |r: Ray| [r.origin, r.dir].map(|v| v.to_array().map(f32::to_bits));
+            assert_eq!((bits(r2), p2), (bits(r), p));
+            let h = x4_lanes([(r, p); 4]);
+            assert!(h.iter().all(|x| same_bits(x, &P::reference(&r, &p))));
+        }
+        let camera = Case::Camera(
+            crate::camera::CameraParams::new(
+                glam::Vec3::ZERO,
+                -glam::Vec3::Z,
+                glam::Vec3::Y,
+                1.0,
+                [2, 2],
+            ),
+            [0, 0],
+        );
+        assert_eq!(P::of_case(&camera), None);
+    }
+
+    #[cfg(feature = "plane")]
+    #[test]
+    fn the_plane_is_a_primitive() {
+        holds_for::<crate::plane::Plane>();
+    }
+
+    #[cfg(feature = "sphere")]
+    #[test]
+    fn the_sphere_is_a_primitive() {
+        holds_for::<crate::sphere::Sphere>();
+    }
+
+    #[cfg(feature = "quadric")]
+    #[test]
+    fn the_quadric_is_a_primitive() {
+        holds_for::<crate::quadric::Quadric>();
+    }
+
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+    #[test]
+    fn padded_fills_missing_values_with_zero() {
+        assert_eq!(padded::<3>(&[1.0]), [1.0, 0.0, 0.0]);
+        assert_eq!(padded::<1>(&[1.0, 2.0]), [1.0]);
+    }
+}
