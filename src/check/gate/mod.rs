@@ -48,6 +48,7 @@ pub use super::rules::{Answer, CAMERA_ULPS, Declared, Semantics};
 use crate::Ray;
 use crate::camera::CameraParams;
 use crate::case::{Case, parse_line};
+use crate::primitive::{self, Primitive};
 use crate::plane::Plane;
 use crate::quadric::Quadric;
 use crate::sphere::Sphere;
@@ -133,29 +134,17 @@ pub trait QuadricKernel4 {
 /// ```
 pub struct Lanes<K>(pub K);
 
-/// Runs `case` in each lane among `decoys` and checks the placements agree.
-fn in_every_lane<P: Copy>(
-    case: (Ray, P),
-    decoys: [(Ray, P); 3],
+/// Runs the case in each lane in turn, the primitive's
+/// [`Primitive::decoys`] in the others ([`primitive::in_every_lane`]), and
+/// checks that the placements agree.
+fn in_every_lane<P: Primitive>(
+    ray: &Ray,
+    p: &P,
     run: impl Fn(&[Ray; 4], &[P; 4]) -> [Answer; 4],
 ) -> Answer {
-    let mut seen: Vec<Answer> = Vec::new();
-    for lane in 0..4 {
-        let mut items = [decoys[0], decoys[1], decoys[2], decoys[0]];
-        let mut d = 0;
-        for (i, item) in items.iter_mut().enumerate() {
-            if i == lane {
-                *item = case;
-            } else {
-                *item = decoys[d % 3];
-                d += 1;
-            }
-        }
-        let answers = run(&items.map(|x| x.0), &items.map(|x| x.1));
-        seen.push(answers[lane].clone());
-    }
+    let seen = primitive::in_every_lane(*ray, *p, |c| run(&c.map(|x| x.0), &c.map(|x| x.1)));
     if seen.iter().all(|a| a == &seen[0]) {
-        seen.swap_remove(0)
+        seen[0].clone()
     } else {
         Answer::Inconsistent(format!(
             "the case gives {} in lanes 0..3",
@@ -167,55 +156,19 @@ fn in_every_lane<P: Copy>(
     }
 }
 
-// The decoys that fill the other three lanes: for each kind, answers of
-// different classes and at different t (pinned in the tests), so a kernel
-// that leaks one lane's data into another shows as a wrong or inconsistent
-// answer.
-fn sphere_decoys() -> [(Ray, Sphere); 3] {
-    let unit = Sphere::new(Vec3::ZERO, 1.0);
-    [
-        (Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), unit),
-        (
-            Ray::new(Vec3::new(3.0, 7.0, 1.0), Vec3::X),
-            Sphere::new(Vec3::new(9.0, 7.0, 1.0), 2.0),
-        ),
-        (Ray::new(Vec3::new(0.0, 4.0, 0.0), Vec3::Y), unit),
-    ]
-}
-fn plane_decoys() -> [(Ray, Plane); 3] {
-    let ground = Plane::new(Vec3::ZERO, Vec3::Y);
-    [
-        (Ray::new(Vec3::Y, -Vec3::Y), ground),
-        (
-            Ray::new(Vec3::new(1.0, 2.0, 3.0), Vec3::X),
-            Plane::new(Vec3::new(7.0, 0.0, 0.0), Vec3::X),
-        ),
-        (Ray::new(Vec3::Y, Vec3::Z), ground),
-    ]
-}
-fn quadric_decoys() -> [(Ray, Quadric); 3] {
-    let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
-    let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -4.0]);
-    [
-        (Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), cyl),
-        (Ray::new(Vec3::new(0.0, 0.0, -9.0), Vec3::Z), ball),
-        (Ray::new(Vec3::new(0.5, 0.0, 0.0), Vec3::Z), cyl),
-    ]
-}
-
 impl<K: SphereKernel4> SphereKernel for Lanes<K> {
     fn intersect(&self, ray: &Ray, s: &Sphere) -> Answer {
-        in_every_lane((*ray, *s), sphere_decoys(), |r, p| self.0.intersect4(r, p))
+        in_every_lane(ray, s, |r, p| self.0.intersect4(r, p))
     }
 }
 impl<K: PlaneKernel4> PlaneKernel for Lanes<K> {
     fn intersect(&self, ray: &Ray, p: &Plane) -> Answer {
-        in_every_lane((*ray, *p), plane_decoys(), |r, q| self.0.intersect4(r, q))
+        in_every_lane(ray, p, |r, q| self.0.intersect4(r, q))
     }
 }
 impl<K: QuadricKernel4> QuadricKernel for Lanes<K> {
     fn intersect(&self, ray: &Ray, q: &Quadric) -> Answer {
-        in_every_lane((*ray, *q), quadric_decoys(), |r, p| self.0.intersect4(r, p))
+        in_every_lane(ray, q, |r, p| self.0.intersect4(r, p))
     }
 }
 

@@ -4,7 +4,7 @@
 
 use super::*;
 use crate::check::rules::tests::tiny_alpha;
-use crate::{plane, quadric, sphere};
+use crate::sphere;
 use std::cell::RefCell;
 
 #[test]
@@ -19,44 +19,32 @@ fn answers_print_by_class() {
     assert_eq!(Answer::Everywhere.to_string(), "every t");
 }
 
-/// The case goes into each lane in turn, and the other three lanes hold the
-/// three decoys, in order.
+/// A four-lane kernel that answers each lane from the lane beside it
+/// disagrees with itself once the case moves among the decoys.
 #[test]
-fn every_lane_gets_the_case_among_all_three_decoys() {
-    let ray = Ray::new(Vec3::ZERO, Vec3::X);
-    let placed = RefCell::new(Vec::new());
-    let answer = in_every_lane((ray, 9u8), [(ray, 0), (ray, 1), (ray, 2)], |_, tags| {
-        placed.borrow_mut().push(*tags);
-        tags.map(|t| Answer::Nearest(Some(t as f32)))
-    });
-    assert_eq!(answer, Answer::Nearest(Some(9.0)));
-    assert_eq!(
-        placed.into_inner(),
-        [[9, 0, 1, 2], [0, 9, 1, 2], [0, 1, 9, 2], [0, 1, 2, 9]]
-    );
-    // A kernel that answers from the lane beside it disagrees with itself.
-    let shifted = in_every_lane((ray, 9u8), [(ray, 0), (ray, 1), (ray, 2)], |_, tags| {
-        [0, 1, 2, 3].map(|i| Answer::Nearest(Some(tags[(i + 1) % 4] as f32)))
-    });
-    assert!(matches!(shifted, Answer::Inconsistent(_)), "{shifted}");
-}
-
-/// Each kind's decoys give answers of different classes and at different
-/// t, so no leak from one lane to another can go unseen.
-#[test]
-fn the_decoys_answer_differently() {
-    let roots = |a: Answer| a.to_string();
-    let s =
-        sphere_decoys().map(|(r, s)| roots(Answer::roots(sphere::reference::intersect(&r, &s))));
-    assert_eq!(
-        s,
-        ["roots [4.0, 6.0]", "roots [4.0, 8.0]", "roots [-5.0, -3.0]"]
-    );
-    let p = plane_decoys().map(|(r, p)| roots(Answer::roots(plane::reference::intersect(&r, &p))));
-    assert_eq!(p, ["roots [1.0]", "roots [6.0]", "no roots"]);
-    let q =
-        quadric_decoys().map(|(r, q)| roots(Answer::roots(quadric::reference::intersect(&r, &q))));
-    assert_eq!(q, ["roots [4.0, 6.0]", "roots [7.0, 11.0]", "no roots"]);
+fn a_kernel_that_reads_the_next_lane_is_inconsistent() {
+    struct Shifted;
+    impl SphereKernel4 for Shifted {
+        fn intersect4(&self, r: &[Ray; 4], s: &[Sphere; 4]) -> [Answer; 4] {
+            core::array::from_fn(|i| {
+                let j = (i + 1) % 4;
+                Answer::roots(sphere::reference::intersect(&r[j], &s[j]))
+            })
+        }
+    }
+    let (ray, s) = (Ray::new(Vec3::new(0.0, 0.0, -3.0), Vec3::Z), Sphere::new(Vec3::ZERO, 1.0));
+    let answer = Lanes(Shifted).intersect(&ray, &s);
+    assert!(matches!(answer, Answer::Inconsistent(_)), "{answer}");
+    let right = |r: &[Ray; 4], s: &[Sphere; 4]| -> [Answer; 4] {
+        core::array::from_fn(|i| Answer::roots(sphere::reference::intersect(&r[i], &s[i])))
+    };
+    struct Right<F>(F);
+    impl<F: Fn(&[Ray; 4], &[Sphere; 4]) -> [Answer; 4]> SphereKernel4 for Right<F> {
+        fn intersect4(&self, r: &[Ray; 4], s: &[Sphere; 4]) -> [Answer; 4] {
+            (self.0)(r, s)
+        }
+    }
+    assert_eq!(Lanes(Right(right)).intersect(&ray, &s).to_string(), "roots [2.0, 4.0]");
 }
 
 /// A kernel that never hits fails whole families: the report counts every
