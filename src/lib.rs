@@ -41,8 +41,8 @@
 //! | [`plane`], [`sphere`], [`quadric`], [`camera`] | one per primitive: types, the derivation, the filter and its bound, the kernels, the exact solution |
 //! | [`primitive`] | the trait the plane, sphere and quadric share, which the harnesses are written against |
 //! | [`exact`] | the exact oracle: dyadic rationals on fixed-width integers, big integers beyond |
-//! | [`num`] | the lane types, certified rounding, error-free transformations |
-//! | [`check`] | the judge: an answer against the oracle, and the gate for outside kernels |
+//! | [`num`] | the lane types, certified rounding, tracked and double-word arithmetic |
+//! | [`check`] | the judge: one rule set ([`check::rules`]) that holds rayoracle's kernels to the oracle's bits and outside kernels, through the gate, to what they declare |
 //! | [`case`], [`eval`] | the `eval` line format (one JSON case a line) and its evaluation |
 //! | [`fixtures`] | the cases, stiff catalogue and default scene, compiled in |
 //! | [`report`] | error against run time, per kernel, variant and stiff family |
