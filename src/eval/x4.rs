@@ -15,7 +15,7 @@ fn camera_decoys([w, h]: [u32; 2]) -> [[u32; 2]; 3] {
 }
 
 /// Runs `case` through the x4 kernels in each of the four lanes
-/// ([`in_every_lane`](crate::primitive::in_every_lane) for a primitive).
+/// ([`in_every_lane`] for a primitive).
 ///
 /// ```
 /// # #[cfg(feature = "sphere")] {
