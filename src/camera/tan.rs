@@ -298,33 +298,42 @@ pub fn rsqrt(x: &Fx, p: u32) -> Iv {
     Iv::point(Fx::new(1, 0)).div_pos(&sqrt(x, p + 4), p)
 }
 
-/// `Σₖ (−1)ᵏ aₖ` with `a₀ = 1`, `aₖ = aₖ₋₁·t²/(dₖ)`, enclosed: partial sums
-/// plus or minus the first omitted term (the caller guarantees the terms
-/// decrease past the first). `den(k)` is `dₖ`.
-fn alternating(t2: &Fx, p: u32, den: impl Fn(i64) -> i64) -> Iv {
-    let q = p + 40;
-    let tiny = Fx::new(1, -(p as i64) - 32);
-    let mut sum = Iv::point(Fx::new(1, 0));
-    let mut term = Iv::point(Fx::new(1, 0));
+/// `Σₖ (−1)ᵏ aₖ` with `a₀ = 1`, `aₖ = aₖ₋₁·m²/(4ˢ·dₖ)`, enclosed in
+/// fixed point: integers counting `2^−w`. Each term's lower and upper
+/// bounds come from the previous one's by one multiplication by the word
+/// `m²` and one floor (or ceiling) division by `2^(2s)·dₖ`, done as a
+/// shift and a word division: `⌊⌊a/b⌋/c⌋ = ⌊a/(bc)⌋` for positive
+/// integers, and likewise for ceilings, so each bound is the exact term's
+/// floor (ceiling) of the previous bound's. The partial sums are exact;
+/// the enclosure is the partial sum plus or minus the first omitted
+/// term, once that is below `2^−(p + 32)` (the caller guarantees
+/// the terms decrease past the first). `den(k)` is `dₖ`.
+fn alternating(m2: u64, s: usize, w: usize, p: u32, den: impl Fn(u64) -> u64) -> (IBig, IBig) {
+    let one = UBig::ONE << w;
+    let tiny = UBig::ONE << w.saturating_sub(p as usize + 32);
+    let (mut lo, mut hi) = (one.clone(), one);
+    let (mut sum_lo, mut sum_hi) = (IBig::from(lo.clone()), IBig::from(hi.clone()));
     for k in 1.. {
-        let d = Iv::point(Fx::new(den(k), 0));
-        let t2 = Iv::point(t2.clone());
-        term = term.mul(&t2, q).div_pos(&d, q);
-        if term.hi < tiny {
-            return Iv {
-                lo: sum.lo.sub(&term.hi).floor(q),
-                hi: sum.hi.add(&term.hi).ceil(q),
-            };
-        }
-        let signed = if k % 2 == 1 {
-            Iv {
-                lo: term.hi.neg(),
-                hi: term.lo.neg(),
-            }
+        let d = den(k);
+        lo = ((lo * m2) >> (2 * s)) / d;
+        let x = hi * m2;
+        let cut = x.trailing_zeros().is_some_and(|z| z < 2 * s);
+        let x = (x >> (2 * s)) + UBig::from(cut as u8);
+        hi = if (&x % d) == 0 {
+            x / d
         } else {
-            term.clone()
+            x / d + UBig::ONE
         };
-        sum = sum.add(&signed, q);
+        if hi < tiny {
+            return (sum_lo - IBig::from(hi.clone()), sum_hi + IBig::from(hi));
+        }
+        if k % 2 == 1 {
+            sum_lo -= IBig::from(hi.clone());
+            sum_hi -= IBig::from(lo.clone());
+        } else {
+            sum_lo += IBig::from(lo.clone());
+            sum_hi += IBig::from(hi.clone());
+        }
     }
     unreachable!("the terms fall below any bound")
 }
@@ -341,11 +350,27 @@ fn alternating(t2: &Fx, p: u32, den: impl Fn(i64) -> i64) -> Iv {
 /// ```
 pub fn tan_half(angle: f32, p: u32) -> Iv {
     debug_assert!(angle > 0.0 && angle < core::f32::consts::PI);
-    let t = Fx::from_f64(angle as f64 / 2.0);
-    let t2 = t.mul(&t);
-    let s = alternating(&t2, p, |k| (2 * k) * (2 * k + 1));
-    let c = alternating(&t2, p, |k| (2 * k - 1) * (2 * k));
-    Iv::point(t).mul(&s, p + 8).div_pos(&c, p + 4)
+    // angle/2 = m·2^−s exactly, m < 2²⁴ (s > 0: the angle is below 4).
+    let b = angle.to_bits();
+    let (exp, frac) = ((b >> 23) as i64, (b & 0x7f_ffff) as u64);
+    let (m, e) = if exp == 0 {
+        (frac, -149)
+    } else {
+        (frac | 1 << 23, exp - 150)
+    };
+    let s = (1 - e) as usize;
+    let w = p as usize + 40;
+    let m2 = m * m;
+    let (s_lo, s_hi) = alternating(m2, s, w, p, |k| (2 * k) * (2 * k + 1));
+    let (c_lo, c_hi) = alternating(m2, s, w, p, |k| (2 * k - 1) * (2 * k));
+    let fixed = |lo: IBig, hi: IBig| Iv {
+        lo: Fx::new(lo, -(w as i64)),
+        hi: Fx::new(hi, -(w as i64)),
+    };
+    let t = Fx::new(m as i64, -(s as i64));
+    Iv::point(t)
+        .mul(&fixed(s_lo, s_hi), p + 8)
+        .div_pos(&fixed(c_lo, c_hi), p + 4)
 }
 
 /// The `f32` every real in `x` rounds to (nearest, ties to even,
