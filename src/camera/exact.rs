@@ -169,13 +169,19 @@ impl Exact {
     }
 
     /// Component `i` at pixel numerators `nx`, `ny`, correctly rounded
-    /// (Ziv's strategy from `a`, doubling the precision).
+    /// (Ziv's strategy from `a`, doubling the precision). `Bᵢ = 0` is
+    /// tested only once the enclosure at `a` leaves the rounding undecided:
+    /// where `Bᵢ = 0` and `dirᵢ ≠ 0` the enclosure holds the `f32` `dirᵢ`,
+    /// not a midpoint, so whatever it decides is `dirᵢ`.
     pub fn round_component(&self, a: &Approx, i: usize, nx: i64, ny: i64) -> f32 {
+        if let Some(c) = decide(&self.component(a, i, nx, ny)) {
+            return c;
+        }
         if self.b_is_zero(i, nx, ny) {
             return self.dir[i];
         }
         ziv(
-            a,
+            &self.approx(a.p * 2),
             |a| self.approx(a.p * 2),
             |a| self.component(a, i, nx, ny),
         )
@@ -219,15 +225,35 @@ pub fn numerator(p: u32, res: u32) -> i64 {
     2 * p as i64 + 1 - res as i64
 }
 
+/// `f(e, a)` with the exact data of `p` and its enclosures at
+/// [`FIRST_BITS`]: those of the last camera asked for on this thread are
+/// kept, since a camera is usually asked for several pixels in a row.
+pub fn with_approx<R>(p: &CameraParams, f: impl FnOnce(&Exact, &Approx) -> R) -> R {
+    type Key = ([u32; 3], [u32; 3], u32, [u32; 2]);
+    thread_local! {
+        static LAST: core::cell::RefCell<Option<(Key, Exact, Approx)>> =
+            const { core::cell::RefCell::new(None) };
+    }
+    let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+    let key = (bits(p.dir), bits(p.up), p.angle.to_bits(), p.res);
+    LAST.with_borrow_mut(|last| {
+        if last.as_ref().is_none_or(|l| l.0 != key) {
+            let e = Exact::new(p);
+            let a = e.approx(FIRST_BITS);
+            *last = Some((key, e, a));
+        }
+        let (_, e, a) = last.as_ref().expect("just filled");
+        f(e, a)
+    })
+}
+
 /// The ray for pixel `(px, py)`, each direction component correctly
 /// rounded (see the module docs). Fails exactly when the reference's
 /// construction does.
 pub fn ray(p: &CameraParams, px: u32, py: u32) -> Result<Ray, CameraError> {
     p.build()?;
-    let e = Exact::new(p);
-    let a = e.approx(FIRST_BITS);
     let (nx, ny) = (numerator(px, p.res[0]), numerator(py, p.res[1]));
-    let d = [0, 1, 2].map(|i| e.round_component(&a, i, nx, ny));
+    let d = with_approx(p, |e, a| [0, 1, 2].map(|i| e.round_component(a, i, nx, ny)));
     Ok(Ray::new(p.position, Vec3::from_array(d)))
 }
 

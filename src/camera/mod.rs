@@ -52,6 +52,7 @@
 //! ([`CameraError::BasisOverflow`]); a direction component whose real value
 //! is beyond `f32::MAX` (plus half an ulp) is ±∞, as rounding defines.
 
+pub mod basis;
 pub mod exact;
 pub mod filter;
 pub mod plain;
