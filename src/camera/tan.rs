@@ -186,8 +186,18 @@ impl PartialOrd for Fx {
     }
 }
 
+/// By sign, then by the highest set bit, and only for equal signs and
+/// highest bits by the aligned significands.
 impl Ord for Fx {
     fn cmp(&self, o: &Fx) -> Ordering {
+        let (s, t) = (self.signum(), o.signum());
+        if s != t || s == 0 {
+            return s.cmp(&t);
+        }
+        let by_size = self.exponent().cmp(&o.exponent());
+        if by_size != Ordering::Equal {
+            return if s > 0 { by_size } else { by_size.reverse() };
+        }
         let (a, b, _) = self.align(o);
         a.cmp(&b)
     }
@@ -228,8 +238,28 @@ impl Iv {
     }
 
     /// The product, rounded outward to `p` bits: the least and greatest of
-    /// the four exact products of ends.
+    /// the four exact products of ends (two of them, where the signs of
+    /// both intervals are known).
     pub fn mul(&self, o: &Iv, p: u32) -> Iv {
+        let sign = |x: &Iv| match (x.lo.signum(), x.hi.signum()) {
+            (l, _) if l >= 0 => 1,
+            (_, h) if h <= 0 => -1,
+            _ => 0,
+        };
+        let (a, b) = match (sign(self), sign(o)) {
+            (1, 1) => (self.lo.mul(&o.lo), self.hi.mul(&o.hi)),
+            (1, -1) => (self.hi.mul(&o.lo), self.lo.mul(&o.hi)),
+            (-1, 1) => (self.lo.mul(&o.hi), self.hi.mul(&o.lo)),
+            (-1, -1) => (self.hi.mul(&o.hi), self.lo.mul(&o.lo)),
+            _ => return self.mul4(o, p),
+        };
+        Iv {
+            lo: a.floor(p),
+            hi: b.ceil(p),
+        }
+    }
+
+    fn mul4(&self, o: &Iv, p: u32) -> Iv {
         let c = [
             self.lo.mul(&o.lo),
             self.lo.mul(&o.hi),
@@ -470,5 +500,41 @@ mod tests {
         };
         assert_eq!(decide(&z), None);
         assert_eq!(decide(&Iv::point(Fx::zero())), None);
+    }
+
+    /// The sign cases of [`Iv::mul`] give the four-product enclosure, and
+    /// the shortcuts of the comparison its aligned result.
+    #[test]
+    fn products_and_comparisons_by_sign() {
+        let v = [-5i64, -3, -1, 0, 1, 2, 7];
+        let e = [-70i64, 0, 3];
+        let fx: Vec<Fx> = v
+            .iter()
+            .flat_map(|&m| e.iter().map(move |&e| Fx::new(m, e)))
+            .collect();
+        for a in &fx {
+            for b in &fx {
+                let (x, y, _) = a.align(b);
+                assert_eq!(a.cmp(b), x.cmp(&y), "{a:?} {b:?}");
+            }
+        }
+        for a in &fx {
+            for b in fx.iter().filter(|b| *a <= **b) {
+                let x = Iv {
+                    lo: a.clone(),
+                    hi: b.clone(),
+                };
+                for c in &fx {
+                    for d in fx.iter().filter(|d| *c <= **d) {
+                        let y = Iv {
+                            lo: c.clone(),
+                            hi: d.clone(),
+                        };
+                        let (m, m4) = (x.mul(&y, 60), x.mul4(&y, 60));
+                        assert!(m.lo == m4.lo && m.hi == m4.hi, "{x:?} {y:?}");
+                    }
+                }
+            }
+        }
     }
 }
