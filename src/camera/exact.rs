@@ -57,6 +57,9 @@ use glam::Vec3;
 /// The first precision tried, in bits; each retry doubles it.
 pub const FIRST_BITS: u32 = 96;
 
+/// A component of a pixel: `(i, nx, ny)`.
+type Pixel = (usize, i64, i64);
+
 /// A camera's exact dyadic data.
 #[derive(Clone, Debug)]
 pub struct Exact {
@@ -69,6 +72,11 @@ pub struct Exact {
     nd: Fx,
     angle: f32,
     res: [u32; 2],
+    /// The finer enclosures Ziv's loops have asked for: `(p, approx(p))`.
+    finer: core::cell::RefCell<Vec<(u32, Approx)>>,
+    /// The components that took more than the first enclosure:
+    /// `((i, nx, ny), cᵢ)`, the last few.
+    hard: core::cell::RefCell<Vec<(Pixel, f32)>>,
 }
 
 fn cross(a: &[Fx; 3], b: &[Fx; 3]) -> [Fx; 3] {
@@ -109,6 +117,8 @@ impl Exact {
             y,
             angle: p.angle,
             res: p.res,
+            finer: Default::default(),
+            hard: Default::default(),
         }
     }
 
@@ -130,6 +140,18 @@ impl Exact {
             iy: rsqrt(&self.ny, q),
             p: q,
         }
+    }
+
+    /// The enclosures at twice `a`'s precision, computed once per camera
+    /// and kept.
+    pub fn refine(&self, a: &Approx) -> Approx {
+        let p = a.p * 2;
+        if let Some((_, f)) = self.finer.borrow().iter().find(|f| f.0 == p) {
+            return f.clone();
+        }
+        let f = self.approx(p);
+        self.finer.borrow_mut().push((p, f.clone()));
+        f
     }
 
     /// `nx·Xᵢ` and `ny·Yᵢ`, exactly.
@@ -155,8 +177,9 @@ impl Exact {
         let (ax, by) = self.parts(i, nx, ny);
         let q = a.p;
         let b = Iv::point(ax)
+            .round(q)
             .mul(&a.ix, q)
-            .add(&Iv::point(by).mul(&a.iy, q), q);
+            .add(&Iv::point(by).round(q).mul(&a.iy, q), q);
         b.mul(&a.k, q).add(&Iv::point(self.d[i].clone()), q)
     }
 
@@ -164,7 +187,7 @@ impl Exact {
     /// and `ny`.
     pub fn unit_basis(&self, a: &Approx, i: usize) -> (Iv, Iv) {
         let q = a.p;
-        let k = |v: &Fx, inv: &Iv| Iv::point(v.clone()).mul(inv, q).mul(&a.k, q);
+        let k = |v: &Fx, inv: &Iv| Iv::point(v.clone()).round(q).mul(inv, q).mul(&a.k, q);
         (k(&self.x[i], &a.ix), k(&self.y[i], &a.iy))
     }
 
@@ -172,19 +195,32 @@ impl Exact {
     /// (Ziv's strategy from `a`, doubling the precision). `Bᵢ = 0` is
     /// tested only once the enclosure at `a` leaves the rounding undecided:
     /// where `Bᵢ = 0` and `dirᵢ ≠ 0` the enclosure holds the `f32` `dirᵢ`,
-    /// not a midpoint, so whatever it decides is `dirᵢ`.
+    /// not a midpoint, so whatever it decides is `dirᵢ`. The last 64
+    /// components that needed more are kept with the camera's data (the
+    /// reference asks for the same ones the oracle is then asked for).
     pub fn round_component(&self, a: &Approx, i: usize, nx: i64, ny: i64) -> f32 {
         if let Some(c) = decide(&self.component(a, i, nx, ny)) {
             return c;
         }
-        if self.b_is_zero(i, nx, ny) {
-            return self.dir[i];
+        let key = (i, nx, ny);
+        if let Some(&(_, c)) = self.hard.borrow().iter().find(|h| h.0 == key) {
+            return c;
         }
-        ziv(
-            &self.approx(a.p * 2),
-            |a| self.approx(a.p * 2),
-            |a| self.component(a, i, nx, ny),
-        )
+        let c = if self.b_is_zero(i, nx, ny) {
+            self.dir[i]
+        } else {
+            ziv(
+                &self.refine(a),
+                |a| self.refine(a),
+                |a| self.component(a, i, nx, ny),
+            )
+        };
+        let mut hard = self.hard.borrow_mut();
+        if hard.len() == 64 {
+            hard.remove(0);
+        }
+        hard.push((key, c));
+        c
     }
 
     /// The basis `(xᵢ, yᵢ)`, each correctly rounded (0 where `Xᵢ`, or
@@ -198,7 +234,7 @@ impl Exact {
             }
             ziv(
                 a,
-                |a| self.approx(a.p * 2),
+                |a| self.refine(a),
                 |a| pick(self.unit_basis(a, i)).mul(&Iv::point(r.clone()), a.p),
             )
         };

@@ -5,7 +5,6 @@
 //! oracle ([`super::exact`]). Every component
 //! is correctly rounded.
 
-use super::exact::{Exact, FIRST_BITS};
 use super::{CameraError, CameraParams, MAX_RESOLUTION, basis, filter};
 use crate::Ray;
 use glam::Vec3;
@@ -74,16 +73,39 @@ pub fn pixel_offsets(res: [u32; 2], px: u32, py: u32) -> (f32, f32) {
 #[cold]
 #[inline(never)]
 fn slow_basis(p: &CameraParams) -> Result<basis::Basis, CameraError> {
-    let e = Exact::new(p);
-    if e.parallel() {
-        return Err(CameraError::DirParallelToUp);
+    // A camera the f64 stage leaves undecided is often built again at
+    // once (its rays judged pixel by pixel): the last one is kept.
+    type Key = ([u32; 3], [u32; 3], u32, [u32; 2]);
+    thread_local! {
+        static LAST: core::cell::Cell<Option<(Key, Result<basis::Basis, CameraError>)>> =
+            const { core::cell::Cell::new(None) };
     }
-    let a = e.approx(FIRST_BITS);
+    let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+    let key = (bits(p.dir), bits(p.up), p.angle.to_bits(), p.res);
+    if let Some((k, b)) = LAST.get()
+        && k == key
+    {
+        return b;
+    }
+    let b = if super::exact::Exact::new(p).parallel() {
+        Err(CameraError::DirParallelToUp)
+    } else {
+        super::exact::with_approx(p, basis_of)
+    };
+    LAST.set(Some((key, b)));
+    b
+}
+
+/// The basis from the oracle's enclosures.
+fn basis_of(
+    e: &super::exact::Exact,
+    a: &super::exact::Approx,
+) -> Result<basis::Basis, CameraError> {
     let mut unit = [[0.0; 3]; 2];
     let (mut x, mut y) = ([0.0; 3], [0.0; 3]);
     for i in 0..3 {
-        (x[i], y[i]) = e.round_basis(&a, i);
-        let (bx, by) = e.unit_basis(&a, i);
+        (x[i], y[i]) = e.round_basis(a, i);
+        let (bx, by) = e.unit_basis(a, i);
         // Zero exactly where the real value is; NaN (never certified)
         // where it is too small for the kernel's bound.
         for (k, b) in [bx, by].iter().enumerate() {

@@ -40,8 +40,12 @@ pub struct Fx {
     e: i64,
 }
 
+/// The bit length of `|m|` (0 for 0).
 fn bits(m: &IBig) -> i64 {
-    m.unsigned_abs().bit_len() as i64
+    let (_, w) = m.as_sign_words();
+    w.last().map_or(0, |l| {
+        (w.len() * dashu_int::Word::BITS as usize) as i64 - l.leading_zeros() as i64
+    })
 }
 
 /// `2^e` as an f64, for `e` in the normal range.
@@ -155,7 +159,15 @@ impl Fx {
 
     /// The smallest dyadic of `p` significant bits at least `x`.
     pub fn ceil(&self, p: u32) -> Fx {
-        self.neg().floor(p).neg()
+        let sh = bits(&self.m) - p as i64;
+        if sh <= 0 {
+            return self.clone();
+        }
+        let cut = self.m.trailing_zeros().is_some_and(|z| (z as i64) < sh);
+        Fx::new(
+            (&self.m >> sh as usize) + IBig::from(cut as u8),
+            self.e + sh,
+        )
     }
 
     /// `⌊a/b⌋` or `⌈a/b⌉` (`up`) to `p` bits, for `a ≥ 0`, `b > 0`.
@@ -305,6 +317,20 @@ impl Iv {
 /// assert!(four.lo == four.hi && four.lo.to_f64() == 0.5);
 /// ```
 pub fn sqrt(x: &Fx, p: u32) -> Iv {
+    // A longer argument is first rounded down and up to 2p + 8 bits
+    // (the root is monotone): the roots of the two ends enclose its root.
+    let cap = 2 * p + 8;
+    if bits(&x.m) > cap as i64 {
+        return Iv {
+            lo: sqrt_exact(&x.floor(cap), p).lo,
+            hi: sqrt_exact(&x.ceil(cap), p).hi,
+        };
+    }
+    sqrt_exact(x, p)
+}
+
+/// [`sqrt`] of the exact argument.
+fn sqrt_exact(x: &Fx, p: u32) -> Iv {
     debug_assert!(x.signum() >= 0);
     let (mut m, mut e) = ((&x.m).unsigned_abs(), x.e);
     if e.rem_euclid(2) != 0 {
@@ -512,6 +538,19 @@ mod tests {
             .iter()
             .flat_map(|&m| e.iter().map(move |&e| Fx::new(m, e)))
             .collect();
+        let wide: Vec<Fx> = [-1000i64, -999, -7, 7, 999, 1000, 1 << 40, -(1 << 40) - 3]
+            .iter()
+            .map(|&m| Fx::new(m, -5))
+            .collect();
+        for a in fx.iter().chain(&wide) {
+            for p in 1..12 {
+                let (f, c) = (a.floor(p), a.ceil(p));
+                assert!(
+                    f <= *a && *a <= c && c == a.neg().floor(p).neg(),
+                    "{a:?} {p}"
+                );
+            }
+        }
         for a in &fx {
             for b in &fx {
                 let (x, y, _) = a.align(b);
