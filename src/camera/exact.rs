@@ -55,7 +55,7 @@ use crate::Ray;
 use glam::Vec3;
 
 /// The first precision tried, in bits; each retry doubles it.
-pub const FIRST_BITS: u32 = 96;
+pub const FIRST_BITS: u32 = 48;
 
 /// A component of a pixel: `(i, nx, ny)`.
 type Pixel = (usize, i64, i64);
@@ -91,11 +91,9 @@ fn norm2(a: &[Fx; 3]) -> Fx {
 /// The enclosures, at one precision, of what every component needs.
 #[derive(Clone, Debug)]
 pub struct Approx {
-    /// `focus·h/resY`.
-    k: Iv,
-    /// `1/|X|`, `1/|Y|`.
-    ix: Iv,
-    iy: Iv,
+    /// `xᵢ/resX` and `yᵢ/resY` ([`Exact::unit_basis`]): `focus·h/resY`
+    /// times `Xᵢ/|X|` and `Yᵢ/|Y|`.
+    unit: [(Iv, Iv); 3],
     p: u32,
 }
 
@@ -107,11 +105,13 @@ impl Exact {
         let (d, up) = (v(p.dir), v(p.up));
         let x = cross(&d, &up);
         let y = cross(&d, &x);
+        // |Y|² = |D|²|X|² − (D·X)² (Lagrange), and D·X = 0.
+        let (nx, nd) = (norm2(&x), norm2(&d));
         Exact {
             dir: p.dir.to_array(),
-            nx: norm2(&x),
-            ny: norm2(&y),
-            nd: norm2(&d),
+            ny: nd.mul(&nx),
+            nx,
+            nd,
             d,
             x,
             y,
@@ -134,10 +134,11 @@ impl Exact {
         let h = tan_half(self.angle, q);
         let focus = sqrt(&self.nd, q);
         let res_y = Iv::point(Fx::new(self.res[1], 0));
+        let k = focus.mul(&h, q).div_pos(&res_y, q);
+        let (ix, iy) = (rsqrt(&self.nx, q), rsqrt(&self.ny, q));
+        let unit = |v: &Fx, inv: &Iv| Iv::point(v.clone()).round(q).mul(inv, q).mul(&k, q);
         Approx {
-            k: focus.mul(&h, q).div_pos(&res_y, q),
-            ix: rsqrt(&self.nx, q),
-            iy: rsqrt(&self.ny, q),
+            unit: [0, 1, 2].map(|i| (unit(&self.x[i], &ix), unit(&self.y[i], &iy))),
             p: q,
         }
     }
@@ -174,21 +175,18 @@ impl Exact {
 
     /// An enclosure of `cᵢ` for the pixel numerators `nx`, `ny`.
     pub fn component(&self, a: &Approx, i: usize, nx: i64, ny: i64) -> Iv {
-        let (ax, by) = self.parts(i, nx, ny);
         let q = a.p;
-        let b = Iv::point(ax)
-            .round(q)
-            .mul(&a.ix, q)
-            .add(&Iv::point(by).round(q).mul(&a.iy, q), q);
-        b.mul(&a.k, q).add(&Iv::point(self.d[i].clone()), q)
+        let (bx, by) = &a.unit[i];
+        let n = |v: i64| Iv::point(Fx::new(v, 0));
+        bx.mul(&n(nx), q)
+            .add(&by.mul(&n(ny), q), q)
+            .add(&Iv::point(self.d[i].clone()), q)
     }
 
     /// Enclosures of `xᵢ/resX` and `yᵢ/resY`: the basis per unit of `nx`
     /// and `ny`.
     pub fn unit_basis(&self, a: &Approx, i: usize) -> (Iv, Iv) {
-        let q = a.p;
-        let k = |v: &Fx, inv: &Iv| Iv::point(v.clone()).round(q).mul(inv, q).mul(&a.k, q);
-        (k(&self.x[i], &a.ix), k(&self.y[i], &a.iy))
+        a.unit[i].clone()
     }
 
     /// Component `i` at pixel numerators `nx`, `ny`, correctly rounded

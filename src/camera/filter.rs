@@ -29,8 +29,9 @@ use crate::num::certify::{SLACK, U, certify};
 
 /// The relative error of the stored basis per unit, `2⁻⁴⁴`: the f64
 /// basis of [`super::basis`] (which refuses a component its bound does not
-/// keep within this), or an enclosure at 96 bits or more approximated in
-/// f64 (within `2⁻⁵²`, [`super::tan::Fx::to_f64`]).
+/// keep within this), or the oracle's enclosure at
+/// [`FIRST_BITS`](super::exact::FIRST_BITS)` + 8 = 56` bits approximated
+/// in f64 (within `2⁻⁵⁰`, [`super::tan::Fx::to_f64`]).
 pub const BASIS_REL: f64 = 1.0 / (1u64 << 44) as f64;
 
 /// `(δ + 3u)(1 + 2⁻⁴³)`, widened by [`SLACK`]: the bound per unit of `S`.
