@@ -83,6 +83,10 @@ impl Fx {
         } else {
             (frac | 1 << 52, exp - 1075)
         };
+        // Without trailing zeros (an f32 has 29 of them), so that sums and
+        // products stay short.
+        let tz = m.trailing_zeros().min(63) as i64;
+        let (m, e) = if m == 0 { (0, 0) } else { (m >> tz, e + tz) };
         Fx::new(if x < 0.0 { -m } else { m }, e)
     }
 
