@@ -66,9 +66,11 @@
 //! `|X̂ᵢ| ≥ 2⁻²⁹⁸` and `|Yᵢ| ≥ 2⁻⁴⁴⁷`, resolutions up to `2²³`: every
 //! quantity above lies between `2⁻⁸⁸⁰` and `2¹⁸⁰`, normal in f64, so the
 //! relative error model holds and the per-unit values stay above the
-//! filter's `2⁻¹⁰⁰⁰`.
+//! filter's `2⁻¹⁰⁰⁰`. Only a subnormal `f32` input or result depends on
+//! gradual underflow; where one occurs and the floating-point environment
+//! flushes subnormals ([`subnormals_work`]), the stage declines.
 
-use crate::num::certify::{SLACK, U, certify};
+use crate::num::certify::{SLACK, U, certify, needs_probe, subnormals_work};
 use crate::num::dd::{Acc, two_sum};
 
 /// The relative bound on [`tan_half`], `2⁻⁴⁵` (see the module docs).
@@ -175,6 +177,7 @@ pub fn basis(p: &super::CameraParams, shrink: f64) -> Option<Basis> {
         y: [0.0; 3],
         unit: [[0.0; 3]; 2],
     };
+    let mut rounded = [0.0; 6];
     for (i, &xi) in x.iter().enumerate() {
         let (j, k) = ((i + 1) % 3, (i + 2) % 3);
         // Yᵢ = Dⱼ Xₖ − Dₖ Xⱼ.
@@ -190,7 +193,7 @@ pub fn basis(p: &super::CameraParams, shrink: f64) -> Option<Basis> {
             if !certify(xi, rel, 0.0) || rel > limit {
                 return None;
             }
-            (out.x[i], out.unit[0][i]) = (xi as f32, bx);
+            (out.x[i], out.unit[0][i], rounded[i]) = (xi as f32, bx, xi);
         }
         if !yi.is_zero() {
             let ey = (yi.lo.abs() + yi.err) / yi.hi.abs() * SLACK * shrink;
@@ -199,8 +202,15 @@ pub fn basis(p: &super::CameraParams, shrink: f64) -> Option<Basis> {
             if !(certify(yv, rel + ey, 0.0) && rel + ey <= limit) {
                 return None;
             }
-            (out.y[i], out.unit[1][i]) = (yv as f32, by);
+            (out.y[i], out.unit[1][i], rounded[3 + i]) = (yv as f32, by, yv);
         }
+    }
+    // Flush-to-zero or denormals-are-zero would change a subnormal input
+    // or result: the big integers decide those.
+    let (dir, up) = (p.dir, p.up);
+    let inputs = [dir.x, dir.y, dir.z, up.x, up.y, up.z, p.angle];
+    if needs_probe(&inputs, &rounded) && !subnormals_work() {
+        return None;
     }
     Some(out)
 }
