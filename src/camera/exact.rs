@@ -55,7 +55,10 @@ use crate::Ray;
 use glam::Vec3;
 
 /// The first precision tried, in bits; each retry doubles it.
-pub const FIRST_BITS: u32 = 96;
+pub const FIRST_BITS: u32 = 48;
+
+/// A component of a pixel: `(i, nx, ny)`.
+type Pixel = (usize, i64, i64);
 
 /// A camera's exact dyadic data.
 #[derive(Clone, Debug)]
@@ -69,6 +72,11 @@ pub struct Exact {
     nd: Fx,
     angle: f32,
     res: [u32; 2],
+    /// The finer enclosures Ziv's loops have asked for: `(p, approx(p))`.
+    finer: core::cell::RefCell<Vec<(u32, Approx)>>,
+    /// The components that took more than the first enclosure:
+    /// `((i, nx, ny), cᵢ)`, the last few.
+    hard: core::cell::RefCell<Vec<(Pixel, f32)>>,
 }
 
 fn cross(a: &[Fx; 3], b: &[Fx; 3]) -> [Fx; 3] {
@@ -83,11 +91,9 @@ fn norm2(a: &[Fx; 3]) -> Fx {
 /// The enclosures, at one precision, of what every component needs.
 #[derive(Clone, Debug)]
 pub struct Approx {
-    /// `focus·h/resY`.
-    k: Iv,
-    /// `1/|X|`, `1/|Y|`.
-    ix: Iv,
-    iy: Iv,
+    /// `xᵢ/resX` and `yᵢ/resY` ([`Exact::unit_basis`]): `focus·h/resY`
+    /// times `Xᵢ/|X|` and `Yᵢ/|Y|`.
+    unit: [(Iv, Iv); 3],
     p: u32,
 }
 
@@ -99,16 +105,20 @@ impl Exact {
         let (d, up) = (v(p.dir), v(p.up));
         let x = cross(&d, &up);
         let y = cross(&d, &x);
+        // |Y|² = |D|²|X|² − (D·X)² (Lagrange), and D·X = 0.
+        let (nx, nd) = (norm2(&x), norm2(&d));
         Exact {
             dir: p.dir.to_array(),
-            nx: norm2(&x),
-            ny: norm2(&y),
-            nd: norm2(&d),
+            ny: nd.mul(&nx),
+            nx,
+            nd,
             d,
             x,
             y,
             angle: p.angle,
             res: p.res,
+            finer: Default::default(),
+            hard: Default::default(),
         }
     }
 
@@ -124,12 +134,25 @@ impl Exact {
         let h = tan_half(self.angle, q);
         let focus = sqrt(&self.nd, q);
         let res_y = Iv::point(Fx::new(self.res[1], 0));
+        let k = focus.mul(&h, q).div_pos(&res_y, q);
+        let (ix, iy) = (rsqrt(&self.nx, q), rsqrt(&self.ny, q));
+        let unit = |v: &Fx, inv: &Iv| Iv::point(v.clone()).round(q).mul(inv, q).mul(&k, q);
         Approx {
-            k: focus.mul(&h, q).div_pos(&res_y, q),
-            ix: rsqrt(&self.nx, q),
-            iy: rsqrt(&self.ny, q),
+            unit: [0, 1, 2].map(|i| (unit(&self.x[i], &ix), unit(&self.y[i], &iy))),
             p: q,
         }
+    }
+
+    /// The enclosures at twice `a`'s precision, computed once per camera
+    /// and kept.
+    pub fn refine(&self, a: &Approx) -> Approx {
+        let p = a.p * 2;
+        if let Some((_, f)) = self.finer.borrow().iter().find(|f| f.0 == p) {
+            return f.clone();
+        }
+        let f = self.approx(p);
+        self.finer.borrow_mut().push((p, f.clone()));
+        f
     }
 
     /// `nx·Xᵢ` and `ny·Yᵢ`, exactly.
@@ -152,33 +175,50 @@ impl Exact {
 
     /// An enclosure of `cᵢ` for the pixel numerators `nx`, `ny`.
     pub fn component(&self, a: &Approx, i: usize, nx: i64, ny: i64) -> Iv {
-        let (ax, by) = self.parts(i, nx, ny);
         let q = a.p;
-        let b = Iv::point(ax)
-            .mul(&a.ix, q)
-            .add(&Iv::point(by).mul(&a.iy, q), q);
-        b.mul(&a.k, q).add(&Iv::point(self.d[i].clone()), q)
+        let (bx, by) = &a.unit[i];
+        let n = |v: i64| Iv::point(Fx::new(v, 0));
+        bx.mul(&n(nx), q)
+            .add(&by.mul(&n(ny), q), q)
+            .add(&Iv::point(self.d[i].clone()), q)
     }
 
     /// Enclosures of `xᵢ/resX` and `yᵢ/resY`: the basis per unit of `nx`
     /// and `ny`.
     pub fn unit_basis(&self, a: &Approx, i: usize) -> (Iv, Iv) {
-        let q = a.p;
-        let k = |v: &Fx, inv: &Iv| Iv::point(v.clone()).mul(inv, q).mul(&a.k, q);
-        (k(&self.x[i], &a.ix), k(&self.y[i], &a.iy))
+        a.unit[i].clone()
     }
 
     /// Component `i` at pixel numerators `nx`, `ny`, correctly rounded
-    /// (Ziv's strategy from `a`, doubling the precision).
+    /// (Ziv's strategy from `a`, doubling the precision). `Bᵢ = 0` is
+    /// tested only once the enclosure at `a` leaves the rounding undecided:
+    /// where `Bᵢ = 0` and `dirᵢ ≠ 0` the enclosure holds the `f32` `dirᵢ`,
+    /// not a midpoint, so whatever it decides is `dirᵢ`. The last 64
+    /// components that needed more are kept with the camera's data (the
+    /// reference asks for the same ones the oracle is then asked for).
     pub fn round_component(&self, a: &Approx, i: usize, nx: i64, ny: i64) -> f32 {
-        if self.b_is_zero(i, nx, ny) {
-            return self.dir[i];
+        if let Some(c) = decide(&self.component(a, i, nx, ny)) {
+            return c;
         }
-        ziv(
-            a,
-            |a| self.approx(a.p * 2),
-            |a| self.component(a, i, nx, ny),
-        )
+        let key = (i, nx, ny);
+        if let Some(&(_, c)) = self.hard.borrow().iter().find(|h| h.0 == key) {
+            return c;
+        }
+        let c = if self.b_is_zero(i, nx, ny) {
+            self.dir[i]
+        } else {
+            ziv(
+                &self.refine(a),
+                |a| self.refine(a),
+                |a| self.component(a, i, nx, ny),
+            )
+        };
+        let mut hard = self.hard.borrow_mut();
+        if hard.len() == 64 {
+            hard.remove(0);
+        }
+        hard.push((key, c));
+        c
     }
 
     /// The basis `(xᵢ, yᵢ)`, each correctly rounded (0 where `Xᵢ`, or
@@ -192,7 +232,7 @@ impl Exact {
             }
             ziv(
                 a,
-                |a| self.approx(a.p * 2),
+                |a| self.refine(a),
                 |a| pick(self.unit_basis(a, i)).mul(&Iv::point(r.clone()), a.p),
             )
         };
@@ -219,15 +259,35 @@ pub fn numerator(p: u32, res: u32) -> i64 {
     2 * p as i64 + 1 - res as i64
 }
 
+/// `f(e, a)` with the exact data of `p` and its enclosures at
+/// [`FIRST_BITS`]: those of the last camera asked for on this thread are
+/// kept, since a camera is usually asked for several pixels in a row.
+pub fn with_approx<R>(p: &CameraParams, f: impl FnOnce(&Exact, &Approx) -> R) -> R {
+    type Key = ([u32; 3], [u32; 3], u32, [u32; 2]);
+    thread_local! {
+        static LAST: core::cell::RefCell<Option<(Key, Exact, Approx)>> =
+            const { core::cell::RefCell::new(None) };
+    }
+    let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+    let key = (bits(p.dir), bits(p.up), p.angle.to_bits(), p.res);
+    LAST.with_borrow_mut(|last| {
+        if last.as_ref().is_none_or(|l| l.0 != key) {
+            let e = Exact::new(p);
+            let a = e.approx(FIRST_BITS);
+            *last = Some((key, e, a));
+        }
+        let (_, e, a) = last.as_ref().expect("just filled");
+        f(e, a)
+    })
+}
+
 /// The ray for pixel `(px, py)`, each direction component correctly
 /// rounded (see the module docs). Fails exactly when the reference's
 /// construction does.
 pub fn ray(p: &CameraParams, px: u32, py: u32) -> Result<Ray, CameraError> {
     p.build()?;
-    let e = Exact::new(p);
-    let a = e.approx(FIRST_BITS);
     let (nx, ny) = (numerator(px, p.res[0]), numerator(py, p.res[1]));
-    let d = [0, 1, 2].map(|i| e.round_component(&a, i, nx, ny));
+    let d = with_approx(p, |e, a| [0, 1, 2].map(|i| e.round_component(a, i, nx, ny)));
     Ok(Ray::new(p.position, Vec3::from_array(d)))
 }
 

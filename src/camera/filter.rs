@@ -5,16 +5,17 @@
 //! Component `i` is `cᵢ = dᵢ + nx·bxᵢ + ny·byᵢ` with `bxᵢ = xᵢ/resX` and
 //! `byᵢ = yᵢ/resY` the exact basis per unit of the pixel numerators
 //! ([`super::exact`]). The camera stores `b̂ = bxᵢ(1 + δ₁)`,
-//! `|δ₁| ≤ 2⁻⁵²` ([`BASIS_REL`]), nonzero only where `bxᵢ` is and then at
-//! least `2⁻¹⁰⁰⁰` (or NaN, which certifies nothing), so with `|nx| ≥ 1`
+//! `|δ₁| ≤ δ = 2⁻⁴⁴` ([`BASIS_REL`]), nonzero only where `bxᵢ` is and then
+//! at least `2⁻¹⁰⁰⁰` (or NaN, which certifies nothing), so with `|nx| ≥ 1`
 //! nothing below underflows. In f64, `t = nx·b̂` is within
-//! `α|t|`, `α = (2⁻⁵² + u)(1 + 2⁻⁵⁰)`, of `nx·bxᵢ` (`u = 2⁻⁵³`), likewise
-//! `s`; `p = dᵢ + t` and `r = p + s` add roundings of at most `u|p|` and
-//! `u|r|` (a subnormal sum is exact). With `|p| ≤ (|dᵢ| + |t|)(1 + u)` and
-//! `|r| ≤ S(1 + u)²`, `S = |dᵢ| + |t| + |s|`,
+//! `α|t|`, `α = (δ + u)(1 + 2⁻⁴³)`, of `nx·bxᵢ` (`u = 2⁻⁵³`; the factor
+//! covers `1/(1 − δ)` and `1 + u`), likewise `s`; `p = dᵢ + t` and
+//! `r = p + s` add roundings of at most `u|p|` and `u|r|` (a subnormal sum
+//! is exact). With `|p| ≤ (|dᵢ| + |t|)(1 + u)` and `|r| ≤ S(1 + u)²`,
+//! `S = |dᵢ| + |t| + |s|`,
 //!
 //! ```text
-//! |r − cᵢ| ≤ α(|t| + |s|) + u|p| + u|r| ≤ (2⁻⁵² + 3u)(1 + 2⁻⁵⁰)·S
+//! |r − cᵢ| ≤ α(|t| + |s|) + u|p| + u|r| ≤ (δ + 3u)(1 + 2⁻⁴³)·S
 //! ```
 //!
 //! and [`certify`] decides the rounding from it (the two roundings of `S`
@@ -26,12 +27,15 @@
 use crate::num::Real;
 use crate::num::certify::{SLACK, U, certify};
 
-/// The relative error of the stored basis per unit, `2⁻⁵²`: an enclosure
-/// at 96 bits or more, approximated in f64 (see [`super::tan::Fx::to_f64`]).
-pub const BASIS_REL: f64 = f64::EPSILON;
+/// The relative error of the stored basis per unit, `2⁻⁴⁴`: the f64
+/// basis of [`super::basis`] (which refuses a component its bound does not
+/// keep within this), or the oracle's enclosure at
+/// [`FIRST_BITS`](super::exact::FIRST_BITS)` + 8 = 56` bits approximated
+/// in f64 (within `2⁻⁵⁰`, [`super::tan::Fx::to_f64`]).
+pub const BASIS_REL: f64 = 1.0 / (1u64 << 44) as f64;
 
-/// `(2⁻⁵² + 3u)(1 + 2⁻⁵⁰)`, widened by [`SLACK`]: the bound per unit of `S`.
-const K: f64 = (BASIS_REL + 3.0 * U) * (1.0 + 1.0 / (1u64 << 50) as f64) * SLACK;
+/// `(δ + 3u)(1 + 2⁻⁴³)`, widened by [`SLACK`]: the bound per unit of `S`.
+const K: f64 = (BASIS_REL + 3.0 * U) * (1.0 + 1.0 / (1u64 << 43) as f64) * SLACK;
 
 /// `(value, decided)` for one component: see the module docs. `shrink`
 /// scales the bound (1 for the kernels; tests shrink it to show it is

@@ -37,9 +37,11 @@
 //! (nearest, ties to even), with `u`, `v` and `aspect` exact rationals and
 //! `h` the real tangent of the `f32` half angle: [`exact`] states the
 //! definition, the treatment of exact zeros, and why the oracle's Ziv loop
-//! ends. Per camera the basis is enclosed to 96 bits or more ([`tan`]); per
-//! pixel an f64 evaluation with a proven bound ([`filter`]) decides nearly
-//! every component, and the oracle the rest. The reference and the four-lane
+//! ends. Per camera the basis is evaluated in f64 with a proven bound
+//! ([`basis`](mod@basis)), and enclosed over big integers ([`tan`]) only
+//! where that leaves a component undecided; per pixel an f64 evaluation
+//! with a proven bound ([`filter`]) decides nearly every component, and the
+//! oracle the rest. The reference and the four-lane
 //! kernels ([`x4`](mod@x4)) therefore agree with [`exact::ray`] bit for bit.
 //!
 //! # NaN and infinite inputs
@@ -52,6 +54,7 @@
 //! ([`CameraError::BasisOverflow`]); a direction component whose real value
 //! is beyond `f32::MAX` (plus half an ulp) is ±∞, as rounding defines.
 
+pub mod basis;
 pub mod exact;
 pub mod filter;
 pub mod plain;

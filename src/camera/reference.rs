@@ -1,10 +1,11 @@
-//! The reference camera: the basis enclosed once per camera, each pixel's
-//! direction in f64 with a proven bound ([`filter`]), and the rare
-//! undecided component from the oracle ([`super::exact`]). Every component
+//! The reference camera: the basis in f64 with a proven bound once per
+//! camera ([`basis`](mod@basis), or the big-integer enclosures where that
+//! leaves a component undecided), each pixel's direction in f64 with a
+//! proven bound ([`filter`]), and the rare undecided component from the
+//! oracle ([`super::exact`]). Every component
 //! is correctly rounded.
 
-use super::exact::{Exact, FIRST_BITS};
-use super::{CameraError, CameraParams, MAX_RESOLUTION, filter};
+use super::{CameraError, CameraParams, MAX_RESOLUTION, basis, filter};
 use crate::Ray;
 use glam::Vec3;
 
@@ -67,6 +68,61 @@ pub fn pixel_offsets(res: [u32; 2], px: u32, py: u32) -> (f32, f32) {
     (filter::offset(px, res[0]), filter::offset(py, res[1]))
 }
 
+/// The basis from the big-integer enclosures, where [`basis::basis`]
+/// leaves a component undecided (or `dir × up = 0`).
+#[cold]
+#[inline(never)]
+fn slow_basis(p: &CameraParams) -> Result<basis::Basis, CameraError> {
+    // A camera the f64 stage leaves undecided is often built again at
+    // once (its rays judged pixel by pixel): the last one is kept.
+    type Key = ([u32; 3], [u32; 3], u32, [u32; 2]);
+    thread_local! {
+        static LAST: core::cell::Cell<Option<(Key, Result<basis::Basis, CameraError>)>> =
+            const { core::cell::Cell::new(None) };
+    }
+    let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+    let key = (bits(p.dir), bits(p.up), p.angle.to_bits(), p.res);
+    if let Some((k, b)) = LAST.get()
+        && k == key
+    {
+        return b;
+    }
+    let b = if super::exact::Exact::new(p).parallel() {
+        Err(CameraError::DirParallelToUp)
+    } else {
+        super::exact::with_approx(p, basis_of)
+    };
+    LAST.set(Some((key, b)));
+    b
+}
+
+/// The basis from the oracle's enclosures.
+fn basis_of(
+    e: &super::exact::Exact,
+    a: &super::exact::Approx,
+) -> Result<basis::Basis, CameraError> {
+    let mut unit = [[0.0; 3]; 2];
+    let (mut x, mut y) = ([0.0; 3], [0.0; 3]);
+    for i in 0..3 {
+        (x[i], y[i]) = e.round_basis(a, i);
+        let (bx, by) = e.unit_basis(a, i);
+        // Zero exactly where the real value is; NaN (never certified)
+        // where it is too small for the kernel's bound.
+        for (k, b) in [bx, by].iter().enumerate() {
+            let f = b.lo.to_f64();
+            let zero = b.lo.signum() == 0 && b.hi.signum() == 0;
+            unit[k][i] = if zero {
+                0.0
+            } else if f.abs() >= 2f64.powi(-1000) {
+                f
+            } else {
+                f64::NAN
+            };
+        }
+    }
+    Ok(basis::Basis { x, y, unit })
+}
+
 impl Camera {
     /// Validates `p` and builds the basis.
     ///
@@ -91,30 +147,10 @@ impl Camera {
                 return Err(CameraError::ResolutionTooLarge(r));
             }
         }
-        let e = Exact::new(p);
-        if e.parallel() {
-            return Err(CameraError::DirParallelToUp);
-        }
-        let a = e.approx(FIRST_BITS);
-        let mut unit = [[0.0; 3]; 2];
-        let (mut x, mut y) = ([0.0; 3], [0.0; 3]);
-        for i in 0..3 {
-            (x[i], y[i]) = e.round_basis(&a, i);
-            let (bx, by) = e.unit_basis(&a, i);
-            // Zero exactly where the real value is; NaN (never certified)
-            // where it is too small for the kernel's bound.
-            for (k, b) in [bx, by].iter().enumerate() {
-                let f = b.lo.to_f64();
-                let zero = b.lo.signum() == 0 && b.hi.signum() == 0;
-                unit[k][i] = if zero {
-                    0.0
-                } else if f.abs() >= 2f64.powi(-1000) {
-                    f
-                } else {
-                    f64::NAN
-                };
-            }
-        }
+        let basis::Basis { x, y, unit } = match basis::basis(p, 1.0) {
+            Some(b) => b,
+            None => slow_basis(p)?,
+        };
         let (x, y) = (Vec3::from_array(x), Vec3::from_array(y));
         if !(x.is_finite() && y.is_finite()) {
             return Err(CameraError::BasisOverflow);
@@ -175,16 +211,16 @@ impl Camera {
     #[cold]
     #[inline(never)]
     pub(crate) fn escalate(&self, out: &mut [f32; 3], undecided: [bool; 3], px: u32, py: u32) {
-        let e = Exact::new(&self.params);
-        let a = e.approx(FIRST_BITS);
         let [rx, ry] = self.params.res;
         let (nx, ny) = (
             super::exact::numerator(px, rx),
             super::exact::numerator(py, ry),
         );
-        for i in (0..3).filter(|&i| undecided[i]) {
-            out[i] = e.round_component(&a, i, nx, ny);
-        }
+        super::exact::with_approx(&self.params, |e, a| {
+            for i in (0..3).filter(|&i| undecided[i]) {
+                out[i] = e.round_component(a, i, nx, ny);
+            }
+        });
     }
 
     /// [`Camera::ray`] with the filter's bound multiplied by `shrink`: with

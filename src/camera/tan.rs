@@ -40,8 +40,12 @@ pub struct Fx {
     e: i64,
 }
 
+/// The bit length of `|m|` (0 for 0).
 fn bits(m: &IBig) -> i64 {
-    m.unsigned_abs().bit_len() as i64
+    let (_, w) = m.as_sign_words();
+    w.last().map_or(0, |l| {
+        (w.len() * dashu_int::Word::BITS as usize) as i64 - l.leading_zeros() as i64
+    })
 }
 
 /// `2^e` as an f64, for `e` in the normal range.
@@ -79,6 +83,10 @@ impl Fx {
         } else {
             (frac | 1 << 52, exp - 1075)
         };
+        // Without trailing zeros (an f32 has 29 of them), so that sums and
+        // products stay short.
+        let tz = m.trailing_zeros().min(63) as i64;
+        let (m, e) = if m == 0 { (0, 0) } else { (m >> tz, e + tz) };
         Fx::new(if x < 0.0 { -m } else { m }, e)
     }
 
@@ -155,7 +163,15 @@ impl Fx {
 
     /// The smallest dyadic of `p` significant bits at least `x`.
     pub fn ceil(&self, p: u32) -> Fx {
-        self.neg().floor(p).neg()
+        let sh = bits(&self.m) - p as i64;
+        if sh <= 0 {
+            return self.clone();
+        }
+        let cut = self.m.trailing_zeros().is_some_and(|z| (z as i64) < sh);
+        Fx::new(
+            (&self.m >> sh as usize) + IBig::from(cut as u8),
+            self.e + sh,
+        )
     }
 
     /// `⌊a/b⌋` or `⌈a/b⌉` (`up`) to `p` bits, for `a ≥ 0`, `b > 0`.
@@ -186,8 +202,18 @@ impl PartialOrd for Fx {
     }
 }
 
+/// By sign, then by the highest set bit, and only for equal signs and
+/// highest bits by the aligned significands.
 impl Ord for Fx {
     fn cmp(&self, o: &Fx) -> Ordering {
+        let (s, t) = (self.signum(), o.signum());
+        if s != t || s == 0 {
+            return s.cmp(&t);
+        }
+        let by_size = self.exponent().cmp(&o.exponent());
+        if by_size != Ordering::Equal {
+            return if s > 0 { by_size } else { by_size.reverse() };
+        }
         let (a, b, _) = self.align(o);
         a.cmp(&b)
     }
@@ -228,8 +254,28 @@ impl Iv {
     }
 
     /// The product, rounded outward to `p` bits: the least and greatest of
-    /// the four exact products of ends.
+    /// the four exact products of ends (two of them, where the signs of
+    /// both intervals are known).
     pub fn mul(&self, o: &Iv, p: u32) -> Iv {
+        let sign = |x: &Iv| match (x.lo.signum(), x.hi.signum()) {
+            (l, _) if l >= 0 => 1,
+            (_, h) if h <= 0 => -1,
+            _ => 0,
+        };
+        let (a, b) = match (sign(self), sign(o)) {
+            (1, 1) => (self.lo.mul(&o.lo), self.hi.mul(&o.hi)),
+            (1, -1) => (self.hi.mul(&o.lo), self.lo.mul(&o.hi)),
+            (-1, 1) => (self.lo.mul(&o.hi), self.hi.mul(&o.lo)),
+            (-1, -1) => (self.hi.mul(&o.hi), self.lo.mul(&o.lo)),
+            _ => return self.mul4(o, p),
+        };
+        Iv {
+            lo: a.floor(p),
+            hi: b.ceil(p),
+        }
+    }
+
+    fn mul4(&self, o: &Iv, p: u32) -> Iv {
         let c = [
             self.lo.mul(&o.lo),
             self.lo.mul(&o.hi),
@@ -275,6 +321,20 @@ impl Iv {
 /// assert!(four.lo == four.hi && four.lo.to_f64() == 0.5);
 /// ```
 pub fn sqrt(x: &Fx, p: u32) -> Iv {
+    // A longer argument is first rounded down and up to 2p + 8 bits
+    // (the root is monotone): the roots of the two ends enclose its root.
+    let cap = 2 * p + 8;
+    if bits(&x.m) > cap as i64 {
+        return Iv {
+            lo: sqrt_exact(&x.floor(cap), p).lo,
+            hi: sqrt_exact(&x.ceil(cap), p).hi,
+        };
+    }
+    sqrt_exact(x, p)
+}
+
+/// [`sqrt`] of the exact argument.
+fn sqrt_exact(x: &Fx, p: u32) -> Iv {
     debug_assert!(x.signum() >= 0);
     let (mut m, mut e) = ((&x.m).unsigned_abs(), x.e);
     if e.rem_euclid(2) != 0 {
@@ -298,33 +358,42 @@ pub fn rsqrt(x: &Fx, p: u32) -> Iv {
     Iv::point(Fx::new(1, 0)).div_pos(&sqrt(x, p + 4), p)
 }
 
-/// `Σₖ (−1)ᵏ aₖ` with `a₀ = 1`, `aₖ = aₖ₋₁·t²/(dₖ)`, enclosed: partial sums
-/// plus or minus the first omitted term (the caller guarantees the terms
-/// decrease past the first). `den(k)` is `dₖ`.
-fn alternating(t2: &Fx, p: u32, den: impl Fn(i64) -> i64) -> Iv {
-    let q = p + 40;
-    let tiny = Fx::new(1, -(p as i64) - 32);
-    let mut sum = Iv::point(Fx::new(1, 0));
-    let mut term = Iv::point(Fx::new(1, 0));
+/// `Σₖ (−1)ᵏ aₖ` with `a₀ = 1`, `aₖ = aₖ₋₁·m²/(4ˢ·dₖ)`, enclosed in
+/// fixed point: integers counting `2^−w`. Each term's lower and upper
+/// bounds come from the previous one's by one multiplication by the word
+/// `m²` and one floor (or ceiling) division by `2^(2s)·dₖ`, done as a
+/// shift and a word division: `⌊⌊a/b⌋/c⌋ = ⌊a/(bc)⌋` for positive
+/// integers, and likewise for ceilings, so each bound is the exact term's
+/// floor (ceiling) of the previous bound's. The partial sums are exact;
+/// the enclosure is the partial sum plus or minus the first omitted
+/// term, once that is below `2^−(p + 32)` (the caller guarantees
+/// the terms decrease past the first). `den(k)` is `dₖ`.
+fn alternating(m2: u64, s: usize, w: usize, p: u32, den: impl Fn(u64) -> u64) -> (IBig, IBig) {
+    let one = UBig::ONE << w;
+    let tiny = UBig::ONE << w.saturating_sub(p as usize + 32);
+    let (mut lo, mut hi) = (one.clone(), one);
+    let (mut sum_lo, mut sum_hi) = (IBig::from(lo.clone()), IBig::from(hi.clone()));
     for k in 1.. {
-        let d = Iv::point(Fx::new(den(k), 0));
-        let t2 = Iv::point(t2.clone());
-        term = term.mul(&t2, q).div_pos(&d, q);
-        if term.hi < tiny {
-            return Iv {
-                lo: sum.lo.sub(&term.hi).floor(q),
-                hi: sum.hi.add(&term.hi).ceil(q),
-            };
-        }
-        let signed = if k % 2 == 1 {
-            Iv {
-                lo: term.hi.neg(),
-                hi: term.lo.neg(),
-            }
+        let d = den(k);
+        lo = ((lo * m2) >> (2 * s)) / d;
+        let x = hi * m2;
+        let cut = x.trailing_zeros().is_some_and(|z| z < 2 * s);
+        let x = (x >> (2 * s)) + UBig::from(cut as u8);
+        hi = if (&x % d) == 0 {
+            x / d
         } else {
-            term.clone()
+            x / d + UBig::ONE
         };
-        sum = sum.add(&signed, q);
+        if hi < tiny {
+            return (sum_lo - IBig::from(hi.clone()), sum_hi + IBig::from(hi));
+        }
+        if k % 2 == 1 {
+            sum_lo -= IBig::from(hi.clone());
+            sum_hi -= IBig::from(lo.clone());
+        } else {
+            sum_lo += IBig::from(lo.clone());
+            sum_hi += IBig::from(hi.clone());
+        }
     }
     unreachable!("the terms fall below any bound")
 }
@@ -341,11 +410,27 @@ fn alternating(t2: &Fx, p: u32, den: impl Fn(i64) -> i64) -> Iv {
 /// ```
 pub fn tan_half(angle: f32, p: u32) -> Iv {
     debug_assert!(angle > 0.0 && angle < core::f32::consts::PI);
-    let t = Fx::from_f64(angle as f64 / 2.0);
-    let t2 = t.mul(&t);
-    let s = alternating(&t2, p, |k| (2 * k) * (2 * k + 1));
-    let c = alternating(&t2, p, |k| (2 * k - 1) * (2 * k));
-    Iv::point(t).mul(&s, p + 8).div_pos(&c, p + 4)
+    // angle/2 = m·2^−s exactly, m < 2²⁴ (s > 0: the angle is below 4).
+    let b = angle.to_bits();
+    let (exp, frac) = ((b >> 23) as i64, (b & 0x7f_ffff) as u64);
+    let (m, e) = if exp == 0 {
+        (frac, -149)
+    } else {
+        (frac | 1 << 23, exp - 150)
+    };
+    let s = (1 - e) as usize;
+    let w = p as usize + 40;
+    let m2 = m * m;
+    let (s_lo, s_hi) = alternating(m2, s, w, p, |k| (2 * k) * (2 * k + 1));
+    let (c_lo, c_hi) = alternating(m2, s, w, p, |k| (2 * k - 1) * (2 * k));
+    let fixed = |lo: IBig, hi: IBig| Iv {
+        lo: Fx::new(lo, -(w as i64)),
+        hi: Fx::new(hi, -(w as i64)),
+    };
+    let t = Fx::new(m as i64, -(s as i64));
+    Iv::point(t)
+        .mul(&fixed(s_lo, s_hi), p + 8)
+        .div_pos(&fixed(c_lo, c_hi), p + 4)
 }
 
 /// The `f32` every real in `x` rounds to (nearest, ties to even,
@@ -445,5 +530,54 @@ mod tests {
         };
         assert_eq!(decide(&z), None);
         assert_eq!(decide(&Iv::point(Fx::zero())), None);
+    }
+
+    /// The sign cases of [`Iv::mul`] give the four-product enclosure, and
+    /// the shortcuts of the comparison its aligned result.
+    #[test]
+    fn products_and_comparisons_by_sign() {
+        let v = [-5i64, -3, -1, 0, 1, 2, 7];
+        let e = [-70i64, 0, 3];
+        let fx: Vec<Fx> = v
+            .iter()
+            .flat_map(|&m| e.iter().map(move |&e| Fx::new(m, e)))
+            .collect();
+        let wide: Vec<Fx> = [-1000i64, -999, -7, 7, 999, 1000, 1 << 40, -(1 << 40) - 3]
+            .iter()
+            .map(|&m| Fx::new(m, -5))
+            .collect();
+        for a in fx.iter().chain(&wide) {
+            for p in 1..12 {
+                let (f, c) = (a.floor(p), a.ceil(p));
+                assert!(
+                    f <= *a && *a <= c && c == a.neg().floor(p).neg(),
+                    "{a:?} {p}"
+                );
+            }
+        }
+        for a in &fx {
+            for b in &fx {
+                let (x, y, _) = a.align(b);
+                assert_eq!(a.cmp(b), x.cmp(&y), "{a:?} {b:?}");
+            }
+        }
+        for a in &fx {
+            for b in fx.iter().filter(|b| *a <= **b) {
+                let x = Iv {
+                    lo: a.clone(),
+                    hi: b.clone(),
+                };
+                for c in &fx {
+                    for d in fx.iter().filter(|d| *c <= **d) {
+                        let y = Iv {
+                            lo: c.clone(),
+                            hi: d.clone(),
+                        };
+                        let (m, m4) = (x.mul(&y, 60), x.mul4(&y, 60));
+                        assert!(m.lo == m4.lo && m.hi == m4.hi, "{x:?} {y:?}");
+                    }
+                }
+            }
+        }
     }
 }
