@@ -71,9 +71,9 @@ pub struct PlaneHit4 {
     pub t: f32x4,
 }
 
-/// Intersects four lines with four planes, lane by lane: the
-/// [filter](super::stages) on four f64 lanes, and the scalar stages for any
-/// lane it leaves undecided, so every lane equals
+/// Intersects four lines with four planes, lane by lane: the filter on
+/// four f64 lanes, with the root's bound of [`stages::filter_direct`], and
+/// the scalar stages for any lane it leaves undecided, so every lane equals
 /// [`super::reference::intersect`] bit for bit.
 ///
 /// ```
@@ -219,7 +219,7 @@ impl<L: Real> Decided<Pair<L>> {
 /// The filter and [`certify`] over any [`Real`].
 #[inline(always)]
 fn decide<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Decided<L> {
-    let f = stages::filter(o, d, a, n, 1.0);
+    let f = stages::filter_direct(o, d, a, n, 1.0);
     let hit = f.hit & certify(f.t, f.r, f.a);
     Decided {
         hit,
@@ -365,5 +365,42 @@ mod tests {
             classes.extend(want.map(|w| format!("{w:?}").chars().take(3).collect::<String>()));
         }
         assert!(classes.len() >= 2, "{classes:?}");
+    }
+
+    /// A line within `2⁻⁴⁶` of parallel: the class is certain, but the
+    /// x4 filter leaves its quotient to the scalar stages, which give the
+    /// reference's root.
+    #[test]
+    fn nearly_parallel_lanes_go_to_the_scalar_stages() {
+        let e = f32::EPSILON;
+        let p = Plane::new(
+            glam::Vec3::new(0.0, 0.0, 1.0),
+            glam::Vec3::new(1.0 - e, 1.0, 0.0),
+        );
+        let rays = [
+            glam::Vec3::new(1.0 + e, -1.0, 0.0),
+            glam::Vec3::Z,
+            glam::Vec3::X,
+            glam::Vec3::Y,
+        ]
+        .map(|d| crate::Ray::new(glam::Vec3::new(0.0, 0.0, 0.5), d));
+        let (r4, p4) = (Ray4::from_rays(rays), Plane4::splat(&p));
+        let w = F64x4::widen;
+        let (o, d, a, n) = (
+            r4.origin.map(w),
+            r4.dir.map(w),
+            p4.point.map(w),
+            p4.normal.map(w),
+        );
+        let (plain, direct) = (
+            stages::filter(o, d, a, n, 1.0),
+            stages::filter_direct(o, d, a, n, 1.0),
+        );
+        assert_eq!(plain.hit.lanes(), [true, false, true, true]);
+        assert_eq!(direct.hit.lanes(), [false, false, true, true]);
+        let want = rays.map(|r| reference::intersect(&r, &p));
+        assert!(matches!(want[0], PlaneHit::Hit(_)), "{want:?}");
+        assert_eq!(intersect_baseline(&r4, &p4).lanes(), want);
+        assert_eq!(intersect(&r4, &p4).lanes(), want);
     }
 }
