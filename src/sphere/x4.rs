@@ -7,6 +7,7 @@ use super::{Sphere, SphereHit, reference, stages};
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
 use crate::num::real::{F64x4, Pair, Real, Real4};
+use crate::ray4::class::{NONE, ONE, TWO};
 use crate::ray4::{Ray4, gather3, scatter3};
 use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
@@ -54,7 +55,8 @@ impl Sphere4 {
     }
 }
 
-/// Four results: a class per lane (0 none, 1 tangent, 2 two) and the roots
+/// Four results: a class per lane in the shared [codes](crate::ray4::class)
+/// (`NONE`, `ONE` a tangent, `TWO`) and the roots
 /// (`t0 = t1` for a tangent, NaN where there is none).
 ///
 /// ```
@@ -66,7 +68,7 @@ impl Sphere4 {
 /// ```
 #[derive(Clone, Copy, Debug)]
 pub struct SphereHit4 {
-    /// 0 none, 1 tangent, 2 two.
+    /// [`NONE`], [`ONE`] (a tangent) or [`TWO`].
     pub class: i32x4,
     /// The smaller root (the tangent root for class 1).
     pub t0: f32x4,
@@ -282,7 +284,7 @@ fn finish<L: Real4>(
             hi: L::select(x.done, x.hi, y.hi),
         }
     };
-    let class = L::mask_i32(x.two) & i32x4::splat(2);
+    let class = L::mask_i32(x.two) & i32x4::splat(TWO);
     let (t0, t1) = (x.lo.narrow(), x.hi.narrow());
     if L::all(x.done) && env() {
         SphereHit4 { class, t0, t1 }
@@ -324,9 +326,9 @@ impl SphereHit4 {
         let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
             let (k, a, b) = match reference::escalate(&rays[i], &Sphere::new(c[i], r[i])).0 {
-                SphereHit::None => (0, f32::NAN, f32::NAN),
-                SphereHit::Tangent(t) => (1, t, t),
-                SphereHit::Two(a, b) => (2, a, b),
+                SphereHit::None => (NONE, f32::NAN, f32::NAN),
+                SphereHit::Tangent(t) => (ONE, t, t),
+                SphereHit::Two(a, b) => (TWO, a, b),
             };
             (class[i], t0[i], t1[i]) = (k, a, b);
         }
@@ -354,8 +356,8 @@ impl SphereHit4 {
             self.t1.to_array(),
         );
         [0, 1, 2, 3].map(|i| match c[i] {
-            0 => SphereHit::None,
-            1 => SphereHit::Tangent(t0[i]),
+            NONE => SphereHit::None,
+            ONE => SphereHit::Tangent(t0[i]),
             _ => SphereHit::Two(t0[i], t1[i]),
         })
     }
@@ -374,13 +376,7 @@ impl SphereHit4 {
     /// ```
     #[inline]
     pub fn nearest(&self, t_min: f32x4, t_max: f32x4) -> (f32x4, f32x4) {
-        let any: f32x4 = wide::bytemuck::cast(self.class.simd_gt(i32x4::ZERO));
-        let two: f32x4 = wide::bytemuck::cast(self.class.simd_eq(i32x4::splat(2)));
-        let within = |t: f32x4| t.simd_ge(t_min) & t.simd_le(t_max);
-        let ok0 = any & within(self.t0);
-        let ok1 = two & within(self.t1);
-        let t = ok0.select(self.t0, ok1.select(self.t1, f32x4::splat(f32::INFINITY)));
-        (ok0 | ok1, t)
+        crate::ray4::nearest4(self.class, self.t0, self.t1, t_min, t_max)
     }
 }
 
