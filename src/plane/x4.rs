@@ -241,11 +241,9 @@ fn finish<L: Real4>(
     p: &Plane4,
 ) -> PlaneHit4 {
     let (h, par) = (L::mask_i32(x.hit), L::mask_i32(x.parallel));
-    // ONE where hit, else NONE where parallel, else ALL.
-    let class = h.select(
-        i32x4::splat(ONE),
-        par.select(i32x4::splat(NONE), i32x4::splat(ALL)),
-    );
+    // ONE where hit, NONE where parallel (never both), else ALL.
+    let k = i32x4::splat;
+    let class = k(ALL) + (h & k(ONE - ALL)) + (par & k(NONE - ALL));
     let t = x.t.narrow();
     if L::all(x.done) && env() {
         PlaneHit4 { class, t }
@@ -322,7 +320,7 @@ impl PlaneHit4 {
     /// ```
     #[inline]
     pub fn nearest(&self, t_min: f32x4, t_max: f32x4) -> (f32x4, f32x4) {
-        crate::ray4::nearest4(self.class, self.t, self.t, t_min, t_max)
+        crate::ray4::nearest4::<false, true>(self.class, self.t, self.t, t_min, t_max)
     }
 }
 

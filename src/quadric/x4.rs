@@ -375,7 +375,7 @@ impl QuadricHit4 {
     /// ```
     #[inline]
     pub fn nearest(&self, t_min: f32x4, t_max: f32x4) -> (f32x4, f32x4) {
-        crate::ray4::nearest4(self.class, self.t0, self.t1, t_min, t_max)
+        crate::ray4::nearest4::<true, true>(self.class, self.t0, self.t1, t_min, t_max)
     }
 }
 

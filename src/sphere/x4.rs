@@ -376,7 +376,7 @@ impl SphereHit4 {
     /// ```
     #[inline]
     pub fn nearest(&self, t_min: f32x4, t_max: f32x4) -> (f32x4, f32x4) {
-        crate::ray4::nearest4(self.class, self.t0, self.t1, t_min, t_max)
+        crate::ray4::nearest4::<true, false>(self.class, self.t0, self.t1, t_min, t_max)
     }
 }
 
