@@ -1,9 +1,84 @@
-//! Four rays in structure-of-arrays form, and running a slice of rays
-//! through a four-lane kernel.
+//! Four rays in structure-of-arrays form, running a slice of rays
+//! through a four-lane kernel, and what the four-lane results of every
+//! kind share: the [`class`] codes and [`nearest4`].
 
 use crate::Ray;
 use glam::Vec3;
-use wide::f32x4;
+use wide::{f32x4, i32x4};
+
+/// The class codes of the x4 results (`PlaneHit4`, `SphereHit4`,
+/// `QuadricHit4`), one meaning for every kind: which of the lane's `t0`,
+/// `t1` are points of the line on the surface. Lanes without a root hold
+/// NaN there.
+pub mod class {
+    /// No point: a miss, no real root, a line parallel to a plane and off
+    /// it.
+    pub const NONE: i32 = 0;
+    /// One root, in `t0` (and `t1`): a plane's hit, a sphere's tangent, a
+    /// quadric's single or double root.
+    pub const ONE: i32 = 1;
+    /// Two roots, `t0 ≤ t1`.
+    pub const TWO: i32 = 2;
+    /// Every `t`: a line in a plane or on a quadric.
+    pub const ALL: i32 = 3;
+}
+
+/// The nearest solution per lane in `[t_min, t_max]`, for results in the
+/// [`class`] codes, and the mask of lanes that have one: `t0` before `t1`,
+/// and `t_min` for a lane of [`class::ALL`]; `+∞` where there is none. The
+/// rule of [`crate::hit::Intersection::nearest`]. `TWO` and `ALL` say
+/// whether the kind has those classes at all (the sphere has no `ALL`, the
+/// plane no `TWO`), which spares the others' tests.
+///
+/// ```
+/// use rayoracle::ray4::nearest4;
+/// use wide::{f32x4, i32x4};
+/// let (t0, t1) = (f32x4::splat(-1.0), f32x4::splat(2.0));
+/// let (lo, hi) = (f32x4::ZERO, f32x4::splat(5.0));
+/// let (hit, t) = nearest4::<true, true>(i32x4::from([0, 1, 2, 3]), t0, t1, lo, hi);
+/// assert_eq!(hit.to_bitmask(), 0b1100);
+/// assert_eq!(t.to_array(), [f32::INFINITY, f32::INFINITY, 2.0, 0.0]);
+/// // Without ALL, class 3 is not looked for.
+/// let (hit, _) = nearest4::<true, false>(i32x4::from([0, 1, 2, 3]), t0, t1, lo, hi);
+/// assert_eq!(hit.to_bitmask(), 0b0100);
+/// ```
+#[inline(always)]
+pub fn nearest4<const TWO: bool, const ALL: bool>(
+    class: i32x4,
+    t0: f32x4,
+    t1: f32x4,
+    t_min: f32x4,
+    t_max: f32x4,
+) -> (f32x4, f32x4) {
+    let m = |x: i32x4| -> f32x4 { wide::bytemuck::cast(x) };
+    let is = |k: i32| m(class.simd_eq(i32x4::splat(k)));
+    let within = |t: f32x4| t.simd_ge(t_min) & t.simd_le(t_max);
+    let (two, all) = (
+        if TWO { is(class::TWO) } else { f32x4::ZERO },
+        is(class::ALL),
+    );
+    let any = match (TWO, ALL) {
+        (false, _) => is(class::ONE),
+        // No ALL: ONE and TWO are every class above NONE.
+        (true, false) => m(class.simd_gt(i32x4::splat(class::NONE))),
+        (true, true) => is(class::ONE) | two,
+    };
+    let ok0 = any & within(t0);
+    let inf = f32x4::splat(f32::INFINITY);
+    let (ok1, t) = if TWO {
+        let ok1 = two & within(t1);
+        (ok1, ok1.select(t1, inf))
+    } else {
+        (f32x4::ZERO, inf)
+    };
+    let (ok_all, t) = if ALL {
+        let ok_all = all & t_min.simd_le(t_max);
+        (ok_all, ok_all.select(t_min, t))
+    } else {
+        (f32x4::ZERO, t)
+    };
+    (ok0 | ok1 | ok_all, ok0.select(t0, t))
+}
 
 /// Four rays, structure-of-arrays: lane `i` of every component is ray `i`.
 ///

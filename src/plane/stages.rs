@@ -29,7 +29,7 @@
 //! term by term, goes to the next stage.
 
 use super::PlaneHit;
-use crate::num::certify::{U, certify, div, quotient_bound};
+use crate::num::certify::{SLACK, U, certify, div, quotient_bound};
 use crate::num::dd::{Acc, quotient, two_sum};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
@@ -64,6 +64,82 @@ pub struct Filtered<L: Real> {
 /// ```
 #[inline(always)]
 pub fn filter<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) -> Filtered<L> {
+    let x = sums(o, d, a, n, shrink);
+    let (r, a) = quotient_bound(x.e_den, x.e_num, x.inv, 6.0 * U * shrink);
+    Filtered {
+        hit: x.den.abs().gt(x.e_den),
+        parallel: x.parallel,
+        in_plane: x.in_plane,
+        t: x.t,
+        r,
+        a,
+    }
+}
+
+/// [`filter`] with the root's bound in a form that waits less on the
+/// quotient, for the x4 kernels: certified only where `x = E_den/|d̂en| ≤
+/// 2⁻¹⁰`, which leaves out lines within about `2⁻⁴¹` of parallel (those go
+/// to the scalar stages). There `1/(1 − x) ≤ 1 + 2⁻⁹ = G`, and the
+/// [module](self)'s bound, with `x|t̂| ≤ E_den|n̂um|/d̂en²` (to the
+/// roundings of `t̂` and of the reciprocal, which the slack covers),
+/// becomes `e = 6u|t̂| + G·|1/d̂en|·(E_den|n̂um|·|1/d̂en| + E_num)`: after
+/// the reciprocal, three operations rather than the ten of
+/// [`quotient_bound`].
+///
+/// The product `E_den|n̂um|/d̂en²` may underflow. A nonzero `n̂um` is at
+/// least `2⁻³⁵⁰` (a sum of f64 values of at least `2⁻²⁹⁸`) and `|d̂en| ≤
+/// 2²⁵⁸`, so a nonzero `t̂` is at least `2⁻⁶⁰⁸` and `6u|t̂|` at least
+/// `2⁻⁶⁵⁹`: what an underflow loses (below `2⁻¹⁰²²`) is far inside the
+/// slack of `e`. A zero `n̂um` makes `E_num` and the product 0 exactly.
+///
+/// ```
+/// use rayoracle::num::certify::certify;
+/// use rayoracle::plane::stages::{filter, filter_direct};
+/// let (o, d, a, n) = ([0.0; 3], [0.1, 0.0, 3.0], [0.0, 0.0, 1.0], [0.0, 0.3, 1.0]);
+/// let (f, g) = (filter::<f64>(o, d, a, n, 1.0), filter_direct::<f64>(o, d, a, n, 1.0));
+/// assert!(g.hit && g.t == f.t && certify(g.t, g.r, g.a));
+/// // d·n = (1 + 2⁻²³)(1 − 2⁻²³) − 1 = −2⁻⁴⁶, parallel but for 2⁻⁴⁷ of
+/// // the terms: the class is certain, the quotient is left to `filter`.
+/// let e = 2f64.powi(-23);
+/// let (d, n) = ([1.0 + e, -1.0, 0.0], [1.0 - e, 1.0, 0.0]);
+/// assert!(filter::<f64>(o, d, a, n, 1.0).hit && !filter_direct::<f64>(o, d, a, n, 1.0).hit);
+/// ```
+#[inline(always)]
+pub fn filter_direct<L: Real>(
+    o: [L; 3],
+    d: [L; 3],
+    a: [L; 3],
+    n: [L; 3],
+    shrink: f64,
+) -> Filtered<L> {
+    let x = sums(o, d, a, n, shrink);
+    let g = L::splat((1.0 + 2f64.powi(-9)) * SLACK);
+    let ia = x.inv.abs();
+    Filtered {
+        hit: x.den.abs().gt(x.e_den * L::splat(1024.0)),
+        parallel: x.parallel,
+        in_plane: x.in_plane,
+        t: x.t,
+        r: L::splat(6.0 * U * shrink),
+        a: ia * (x.e_den * g * x.num.abs() * ia + x.e_num * g),
+    }
+}
+
+/// What both filters share: the sums, their bounds, the certified
+/// parallel classes, and the quotient.
+struct Sums<L: Real> {
+    num: L,
+    den: L,
+    e_num: L,
+    e_den: L,
+    parallel: L::Mask,
+    in_plane: L::Mask,
+    inv: L,
+    t: L,
+}
+
+#[inline(always)]
+fn sums<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) -> Sums<L> {
     let k = |x: f64| L::splat(x * U * shrink);
     let zero = L::splat(0.0);
     let w = [a[0] - o[0], a[1] - o[1], a[2] - o[2]];
@@ -75,20 +151,17 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) 
     let m_den = dn[0].abs() + dn[1].abs() + dn[2].abs();
     let (e_num, e_den) = (k(8.0) * m_num, k(4.0) * m_den);
     let den_zero = m_den.eq(zero);
-    let parallel = den_zero & num.abs().gt(e_num);
-    let in_plane = den_zero & m_num.eq(zero);
-    let da = den.abs();
     let inv = L::splat(1.0) / den;
-    // + 0 makes an exactly zero root +0 whatever the sign of den.
-    let t = num * inv + zero;
-    let (r, a) = quotient_bound(e_den, e_num, inv, 6.0 * U * shrink);
-    Filtered {
-        hit: da.gt(e_den),
-        parallel,
-        in_plane,
-        t,
-        r,
-        a,
+    Sums {
+        num,
+        den,
+        e_num,
+        e_den,
+        parallel: den_zero & num.abs().gt(e_num),
+        in_plane: den_zero & m_num.eq(zero),
+        inv,
+        // + 0 makes an exactly zero root +0 whatever the sign of den.
+        t: num * inv + zero,
     }
 }
 

@@ -7,6 +7,7 @@ use super::{Plane, PlaneHit, reference, stages};
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
 use crate::num::real::{F64x4, Pair, Real, Real4};
+use crate::ray4::class::{ALL, NONE, ONE};
 use crate::ray4::{Ray4, gather3, scatter3};
 use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
@@ -53,8 +54,9 @@ impl Plane4 {
     }
 }
 
-/// Four results: a class per lane (0 hit, 1 parallel, 2 in the plane) and
-/// the root (NaN where there is none).
+/// Four results: a class per lane in the shared
+/// [codes](crate::ray4::class) (`ONE` a hit, `NONE` parallel, `ALL` in the
+/// plane) and the root (NaN where there is none).
 ///
 /// ```
 /// use rayoracle::{Ray, ray4::Ray4, plane::{Plane, PlaneHit, x4}};
@@ -65,15 +67,15 @@ impl Plane4 {
 /// ```
 #[derive(Clone, Copy, Debug)]
 pub struct PlaneHit4 {
-    /// 0 hit, 1 parallel, 2 in the plane.
+    /// [`ONE`] hit, [`NONE`] parallel, [`ALL`] in the plane.
     pub class: i32x4,
-    /// The root where class is 0.
+    /// The root where the class is [`ONE`].
     pub t: f32x4,
 }
 
-/// Intersects four lines with four planes, lane by lane: the
-/// [filter](super::stages) on four f64 lanes, and the scalar stages for any
-/// lane it leaves undecided, so every lane equals
+/// Intersects four lines with four planes, lane by lane: the filter on
+/// four f64 lanes, with the root's bound of [`stages::filter_direct`], and
+/// the scalar stages for any lane it leaves undecided, so every lane equals
 /// [`super::reference::intersect`] bit for bit.
 ///
 /// ```
@@ -219,7 +221,7 @@ impl<L: Real> Decided<Pair<L>> {
 /// The filter and [`certify`] over any [`Real`].
 #[inline(always)]
 fn decide<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Decided<L> {
-    let f = stages::filter(o, d, a, n, 1.0);
+    let f = stages::filter_direct(o, d, a, n, 1.0);
     let hit = f.hit & certify(f.t, f.r, f.a);
     Decided {
         hit,
@@ -239,8 +241,9 @@ fn finish<L: Real4>(
     p: &Plane4,
 ) -> PlaneHit4 {
     let (h, par) = (L::mask_i32(x.hit), L::mask_i32(x.parallel));
-    // 0 where hit, else 1 where parallel, else 2.
-    let class = h.select(i32x4::ZERO, i32x4::splat(2) + par);
+    // ONE where hit, NONE where parallel (never both), else ALL.
+    let k = i32x4::splat;
+    let class = k(ALL) + (h & k(ONE - ALL)) + (par & k(NONE - ALL));
     let t = x.t.narrow();
     if L::all(x.done) && env() {
         PlaneHit4 { class, t }
@@ -275,9 +278,9 @@ impl PlaneHit4 {
         let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
             (class[i], t[i]) = match reference::escalate(&rays[i], &Plane::new(a[i], n[i])).0 {
-                PlaneHit::Hit(x) => (0, x),
-                PlaneHit::Parallel => (1, f32::NAN),
-                PlaneHit::InPlane => (2, f32::NAN),
+                PlaneHit::Hit(x) => (ONE, x),
+                PlaneHit::Parallel => (NONE, f32::NAN),
+                PlaneHit::InPlane => (ALL, f32::NAN),
             };
         }
         PlaneHit4 {
@@ -291,14 +294,14 @@ impl PlaneHit4 {
     /// ```
     /// use rayoracle::plane::{PlaneHit, x4::PlaneHit4};
     /// use wide::{f32x4, i32x4};
-    /// let h = PlaneHit4 { class: i32x4::from([0, 1, 2, 0]), t: f32x4::splat(2.0) };
+    /// let h = PlaneHit4 { class: i32x4::from([1, 0, 3, 1]), t: f32x4::splat(2.0) };
     /// assert_eq!(h.lanes(), [PlaneHit::Hit(2.0), PlaneHit::Parallel, PlaneHit::InPlane, PlaneHit::Hit(2.0)]);
     /// ```
     pub fn lanes(&self) -> [PlaneHit; 4] {
         let (c, t) = (self.class.to_array(), self.t.to_array());
         [0, 1, 2, 3].map(|i| match c[i] {
-            0 => PlaneHit::Hit(t[i]),
-            1 => PlaneHit::Parallel,
+            ONE => PlaneHit::Hit(t[i]),
+            NONE => PlaneHit::Parallel,
             _ => PlaneHit::InPlane,
         })
     }
@@ -310,19 +313,14 @@ impl PlaneHit4 {
     /// ```
     /// use rayoracle::plane::x4::PlaneHit4;
     /// use wide::{f32x4, i32x4};
-    /// let h = PlaneHit4 { class: i32x4::from([0, 1, 2, 0]), t: f32x4::from([1.0, 0.0, 0.0, -1.0]) };
+    /// let h = PlaneHit4 { class: i32x4::from([1, 0, 3, 1]), t: f32x4::from([1.0, 0.0, 0.0, -1.0]) };
     /// let (hit, t) = h.nearest(f32x4::ZERO, f32x4::splat(5.0));
     /// assert_eq!(hit.to_bitmask(), 0b0101);
     /// assert_eq!(t.to_array(), [1.0, f32::INFINITY, 0.0, f32::INFINITY]);
     /// ```
     #[inline]
     pub fn nearest(&self, t_min: f32x4, t_max: f32x4) -> (f32x4, f32x4) {
-        let hit: f32x4 = wide::bytemuck::cast(self.class.simd_eq(i32x4::ZERO));
-        let every: f32x4 = wide::bytemuck::cast(self.class.simd_eq(i32x4::splat(2)));
-        let ok = hit & self.t.simd_ge(t_min) & self.t.simd_le(t_max);
-        let ok_all = every & t_min.simd_le(t_max);
-        let t = ok.select(self.t, ok_all.select(t_min, f32x4::splat(f32::INFINITY)));
-        (ok | ok_all, t)
+        crate::ray4::nearest4::<false, true>(self.class, self.t, self.t, t_min, t_max)
     }
 }
 
@@ -365,5 +363,42 @@ mod tests {
             classes.extend(want.map(|w| format!("{w:?}").chars().take(3).collect::<String>()));
         }
         assert!(classes.len() >= 2, "{classes:?}");
+    }
+
+    /// A line within `2⁻⁴⁶` of parallel: the class is certain, but the
+    /// x4 filter leaves its quotient to the scalar stages, which give the
+    /// reference's root.
+    #[test]
+    fn nearly_parallel_lanes_go_to_the_scalar_stages() {
+        let e = f32::EPSILON;
+        let p = Plane::new(
+            glam::Vec3::new(0.0, 0.0, 1.0),
+            glam::Vec3::new(1.0 - e, 1.0, 0.0),
+        );
+        let rays = [
+            glam::Vec3::new(1.0 + e, -1.0, 0.0),
+            glam::Vec3::Z,
+            glam::Vec3::X,
+            glam::Vec3::Y,
+        ]
+        .map(|d| crate::Ray::new(glam::Vec3::new(0.0, 0.0, 0.5), d));
+        let (r4, p4) = (Ray4::from_rays(rays), Plane4::splat(&p));
+        let w = F64x4::widen;
+        let (o, d, a, n) = (
+            r4.origin.map(w),
+            r4.dir.map(w),
+            p4.point.map(w),
+            p4.normal.map(w),
+        );
+        let (plain, direct) = (
+            stages::filter(o, d, a, n, 1.0),
+            stages::filter_direct(o, d, a, n, 1.0),
+        );
+        assert_eq!(plain.hit.lanes(), [true, false, true, true]);
+        assert_eq!(direct.hit.lanes(), [false, false, true, true]);
+        let want = rays.map(|r| reference::intersect(&r, &p));
+        assert!(matches!(want[0], PlaneHit::Hit(_)), "{want:?}");
+        assert_eq!(intersect_baseline(&r4, &p4).lanes(), want);
+        assert_eq!(intersect(&r4, &p4).lanes(), want);
     }
 }

@@ -8,6 +8,7 @@ use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
 use crate::num::real::{F64x4, Pair, Real, Real4};
 use crate::ray4::Ray4;
+use crate::ray4::class::{ALL, NONE, ONE, TWO};
 use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
 
@@ -48,7 +49,8 @@ impl Quadric4 {
     }
 }
 
-/// Four results: a class per lane (0 none, 1 one, 2 two, 3 all) and the
+/// Four results: a class per lane in the shared
+/// [codes](crate::ray4::class) (`NONE`, `ONE`, `TWO`, `ALL`) and the
 /// roots (`t0 = t1` for class 1, NaN where there is none).
 ///
 /// ```
@@ -60,7 +62,7 @@ impl Quadric4 {
 /// ```
 #[derive(Clone, Copy, Debug)]
 pub struct QuadricHit4 {
-    /// 0 none, 1 one, 2 two, 3 all.
+    /// [`NONE`], [`ONE`], [`TWO`] or [`ALL`].
     pub class: i32x4,
     /// The smaller (or only) root.
     pub t0: f32x4,
@@ -288,7 +290,7 @@ fn finish<L: Real4>(
 ) -> QuadricHit4 {
     let (t, o, a) = (L::mask_i32(x.two), L::mask_i32(x.one), L::mask_i32(x.all));
     let k = i32x4::splat;
-    let class = t.select(k(2), o.select(k(1), a & k(3)));
+    let class = t.select(k(TWO), o.select(k(ONE), a & k(ALL)));
     let (t0, t1) = (x.lo.narrow(), x.hi.narrow());
     if L::all(x.done) && env() {
         QuadricHit4 { class, t0, t1 }
@@ -324,10 +326,10 @@ impl QuadricHit4 {
         for i in (0..4).filter(|&i| done[i] == 0) {
             let quadric = Quadric::new(k.map(|c| c[i]));
             (class[i], t0[i], t1[i]) = match reference::escalate(&rays[i], &quadric).0 {
-                QuadricHit::None => (0, f32::NAN, f32::NAN),
-                QuadricHit::One(t) => (1, t, t),
-                QuadricHit::Two(a, b) => (2, a, b),
-                QuadricHit::All => (3, f32::NAN, f32::NAN),
+                QuadricHit::None => (NONE, f32::NAN, f32::NAN),
+                QuadricHit::One(t) => (ONE, t, t),
+                QuadricHit::Two(a, b) => (TWO, a, b),
+                QuadricHit::All => (ALL, f32::NAN, f32::NAN),
             };
         }
         QuadricHit4 {
@@ -352,9 +354,9 @@ impl QuadricHit4 {
             self.t1.to_array(),
         );
         [0, 1, 2, 3].map(|i| match c[i] {
-            0 => QuadricHit::None,
-            1 => QuadricHit::One(t0[i]),
-            2 => QuadricHit::Two(t0[i], t1[i]),
+            NONE => QuadricHit::None,
+            ONE => QuadricHit::One(t0[i]),
+            TWO => QuadricHit::Two(t0[i], t1[i]),
             _ => QuadricHit::All,
         })
     }
@@ -373,15 +375,7 @@ impl QuadricHit4 {
     /// ```
     #[inline]
     pub fn nearest(&self, t_min: f32x4, t_max: f32x4) -> (f32x4, f32x4) {
-        let is = |k: i32| -> f32x4 { wide::bytemuck::cast(self.class.simd_eq(i32x4::splat(k))) };
-        let (one, two, all) = (is(1), is(2), is(3));
-        let within = |t: f32x4| t.simd_ge(t_min) & t.simd_le(t_max);
-        let ok0 = (one | two) & within(self.t0);
-        let ok1 = two & within(self.t1);
-        let ok_all = all & t_min.simd_le(t_max);
-        let inf = f32x4::splat(f32::INFINITY);
-        let t = ok0.select(self.t0, ok1.select(self.t1, ok_all.select(t_min, inf)));
-        (ok0 | ok1 | ok_all, t)
+        crate::ray4::nearest4::<true, true>(self.class, self.t0, self.t1, t_min, t_max)
     }
 }
 

@@ -130,6 +130,44 @@ fn dots<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Dots<L> {
     }
 }
 
+/// The quadratic and the classes both filters certify: `c = f·f − R²`,
+/// `m_c = f·f + R²`, `Δ̂ = b² − ac` and `E_Δ = 40u(m_b² + â m_c)`, then no
+/// root where `a = 0` or `Δ̂ < −E_Δ`, two where `Δ̂ > E_Δ`.
+struct Classes<L: Real> {
+    a: L,
+    b: L,
+    mb: L,
+    mc: L,
+    cq: L,
+    disc: L,
+    ed: L,
+    none: L::Mask,
+    two: L::Mask,
+}
+
+#[inline(always)]
+fn classes<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Classes<L> {
+    let Dots {
+        a, b, mb, ff, rr, ..
+    } = dots(o, d, c, r);
+    let cq = ff - rr;
+    let mc = ff + rr;
+    let disc = b * b - a * cq;
+    let ed = L::splat(40.0 * U * shrink) * (mb * mb + a * mc);
+    let line = a.gt(L::splat(0.0));
+    Classes {
+        a,
+        b,
+        mb,
+        mc,
+        cq,
+        disc,
+        ed,
+        none: !line | (-ed).gt(disc),
+        two: line & disc.gt(ed),
+    }
+}
+
 /// Runs the filter on a line `o + t d` and a sphere `(c, r)`, with every
 /// bound multiplied by `shrink` (1 in the kernels; the tests pass less to
 /// show that a bound too small is caught).
@@ -148,18 +186,17 @@ fn dots<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Dots<L> {
 pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Filtered<L> {
     let k = |x: f64| L::splat(x * U * shrink);
     let u2 = L::splat(2.0 * U * shrink);
-    let Dots {
-        a, b, mb, ff, rr, ..
-    } = dots(o, d, c, r);
-    let cq = ff - rr;
-    let mc = ff + rr;
-    let disc = b * b - a * cq;
-    let ed = k(40.0) * (mb * mb + a * mc);
-
-    let zero = L::splat(0.0);
-    let line = a.gt(zero);
-    let none = !line | (-ed).gt(disc);
-    let two = line & disc.gt(ed);
+    let Classes {
+        a,
+        b,
+        mb,
+        mc,
+        cq,
+        disc,
+        ed,
+        none,
+        two,
+    } = classes(o, d, c, r, shrink);
 
     // E_a = 4u·â enters only through the constant of r0.
     let (eb, ec) = (k(8.0) * mb, k(12.0) * mc);
@@ -187,6 +224,104 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Fi
         t1,
         r1,
         a1,
+    }
+}
+
+/// The filter's first pass in the x4 kernels: the same classes as
+/// [`filter`], and both roots in the textbook form `(−b ∓ ŝ)/â`, sorted,
+/// with one error bound `|t|·r + a` for both.
+#[derive(Clone, Copy, Debug)]
+pub struct Sorted<L: Real> {
+    /// Certified: no root, as in [`Filtered::none`].
+    pub none: L::Mask,
+    /// Certified: two roots, as in [`Filtered::two`].
+    pub two: L::Mask,
+    /// `(−b − ŝ)/a`, the smaller root.
+    pub lo: L,
+    /// `(−b + ŝ)/a`, the larger root.
+    pub hi: L,
+    /// The relative part of either root's error bound.
+    pub r: L,
+    /// The absolute part of either root's error bound.
+    pub a: L,
+}
+
+/// [`filter`] with the roots as `(−b ∓ ŝ)/â`: no quotient waits for the
+/// square root, so the longest chain of dependent operations is shorter
+/// by a division and the products around it. The price is cancellation in
+/// the root nearer `−b/a`: where it is far smaller than the other (`c`
+/// near 0, an origin near the sphere), its bound is too wide to certify,
+/// and the x4 kernels fall back on [`filter`]'s `c/q`.
+///
+/// # The bound
+///
+/// In the notation of the [module](self), on the lanes where `Δ̂ > E_Δ`
+/// (so `Δ̂ > 0`): one division `ρ = 1/(âΔ̂)`, started with the square root,
+/// gives `1/â = Δ̂ρ` within `3u` and `1/Δ̂ = âρ`, and `1/ŝ = ŝ/Δ̂` within
+/// `5u`. With `n̂ = fl(−b̂ ∓ ŝ)` against `n = −b ∓ √Δ`: `|n̂ − n| ≤ u|n̂| +
+/// E_b + E_s`, `E_s = E_Δ/ŝ + 2uŝ` as in the filter. The root `t̂ =
+/// fl(n̂·(1/â))` is within `4u|t̂|` of `n̂/â`, and `|n̂/â − n/a| ≤ (|n̂|
+/// E_a/a + |n̂ − n|)/â`, with `E_a/a ≤ 2u`: `e = 7u|t̂| + (E_b + E_s)/â`
+/// to first order. The pass uses `r = 20u` and `a = (E_b + E_s)/â`, with
+/// `E_b = 8u m_b`, `E_Δ = 40u(m_b² + âm_c)` and every part widened by `1
+/// + 2⁻³⁰`, as in the filter.
+///
+/// Rounding is monotone and `ŝ ≥ 0`, `1/â > 0`, so `lo ≤ hi` without a
+/// comparison. An exact root 0 gives `n̂ = ±0` with `a > 0`, which never
+/// certifies.
+///
+/// # Range
+///
+/// Where two roots are certified, `âΔ̂` lies between `2⁻⁹⁴⁸` and `2⁷⁷⁸`
+/// (the bounds of `q̂âŝ` in the module's range section), so `ρ`, `1/â` and
+/// `1/Δ̂` are normal and finite. `E_Δ/Δ̂` may underflow, but `2u` is added
+/// to it, and what an underflow loses (below `2⁻¹⁰²²`) is far inside the
+/// slack of that sum.
+///
+/// ```
+/// use rayoracle::num::certify::certify;
+/// use rayoracle::sphere::stages::filter_sorted;
+/// let f = filter_sorted::<f64>([0.0, 0.0, -5.0], [0.0, 0.0, 1.0], [0.0; 3], 1.0, 1.0);
+/// assert!(f.two && !f.none);
+/// assert_eq!((f.lo, f.hi), (4.0, 6.0));
+/// assert!(certify(f.lo, f.r, f.a) && certify(f.hi, f.r, f.a));
+/// // From on the sphere: the root 0 is all cancellation.
+/// let f = filter_sorted::<f64>([0.0, 0.0, -1.0], [0.0, 0.0, 1.0], [0.0; 3], 1.0, 1.0);
+/// assert!(f.two && !certify(f.lo, f.r, f.a));
+/// ```
+#[inline(always)]
+pub fn filter_sorted<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Sorted<L> {
+    let k = |x: f64| L::splat(x * U * shrink);
+    let Classes {
+        a,
+        b,
+        mb,
+        disc,
+        ed,
+        none,
+        two,
+        ..
+    } = classes(o, d, c, r, shrink);
+
+    let slack = L::splat(SLACK);
+    let (ia, idisc) = if L::FEW_DIVISIONS {
+        let rho = L::splat(1.0) / (a * disc);
+        (disc * rho, a * rho)
+    } else {
+        (L::splat(1.0) / a, L::splat(1.0) / disc)
+    };
+    // Everything but ŝ, ready while the square root runs: (E_b + E_s)/â =
+    // E_b/â + ŝ·(E_Δ/Δ̂ + 2u)/â.
+    let eb = k(8.0) * mb * ia * slack;
+    let es = (ed * idisc + k(2.0)) * ia * slack;
+    let s = disc.sqrt();
+    Sorted {
+        none,
+        two,
+        lo: (-b - s) * ia,
+        hi: (-b + s) * ia,
+        r: k(20.0),
+        a: eb + s * es,
     }
 }
 

@@ -7,6 +7,7 @@ use super::{Sphere, SphereHit, reference, stages};
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
 use crate::num::real::{F64x4, Pair, Real, Real4};
+use crate::ray4::class::{NONE, ONE, TWO};
 use crate::ray4::{Ray4, gather3, scatter3};
 use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
@@ -54,7 +55,8 @@ impl Sphere4 {
     }
 }
 
-/// Four results: a class per lane (0 none, 1 tangent, 2 two) and the roots
+/// Four results: a class per lane in the shared [codes](crate::ray4::class)
+/// (`NONE`, `ONE` a tangent, `TWO`) and the roots
 /// (`t0 = t1` for a tangent, NaN where there is none).
 ///
 /// ```
@@ -66,7 +68,7 @@ impl Sphere4 {
 /// ```
 #[derive(Clone, Copy, Debug)]
 pub struct SphereHit4 {
-    /// 0 none, 1 tangent, 2 two.
+    /// [`NONE`], [`ONE`] (a tangent) or [`TWO`].
     pub class: i32x4,
     /// The smaller root (the tangent root for class 1).
     pub t0: f32x4,
@@ -74,9 +76,11 @@ pub struct SphereHit4 {
     pub t1: f32x4,
 }
 
-/// Intersects four lines with four spheres, lane by lane: the
-/// [filter](super::stages) on four f64 lanes, and the scalar stages for any
-/// lane it leaves undecided. Every lane is the exact answer, correctly
+/// Intersects four lines with four spheres, lane by lane: on four f64
+/// lanes, [`stages::filter_sorted`], whose roots `(−b ∓ ŝ)/â` wait on no
+/// division after the square root, then [`stages::filter`]'s `c/q` for
+/// any lane whose root near 0 cancelled, and the scalar stages for any
+/// lane both leave undecided. Every lane is the exact answer, correctly
 /// rounded, so it equals [`super::reference::intersect`] bit for bit.
 ///
 /// ```
@@ -223,9 +227,26 @@ impl<L: Real> Decided<Pair<L>> {
     }
 }
 
-/// The filter and [`certify`] over any [`Real`].
+/// The first pass over any [`Real`]: [`stages::filter_sorted`] and
+/// [`certify`], which decides every lane but those with a root near 0
+/// against the other (and those the filter leaves undecided).
 #[inline(always)]
 fn decide<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L> {
+    let f = stages::filter_sorted(o, d, c, r, 1.0);
+    let two = f.two & certify(f.lo, f.r, f.a) & certify(f.hi, f.r, f.a);
+    let nan = L::splat(f64::NAN);
+    Decided {
+        two,
+        done: f.none | two,
+        lo: L::select(two, f.lo, nan),
+        hi: L::select(two, f.hi, nan),
+    }
+}
+
+/// The second pass, for the lanes the first leaves: [`stages::filter`],
+/// whose roots `q/a` and `c/q` do not cancel, and [`certify`].
+#[inline(always)]
+fn decide_quotients<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L> {
     let f = stages::filter(o, d, c, r, 1.0);
     let two = f.two & certify(f.t0, f.r0, f.a0) & certify(f.t1, f.r1, f.a1);
     // Disjoint enclosures are in the exact order; overlapping ones round
@@ -242,6 +263,8 @@ fn decide<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L> {
 
 /// The results of one packet; `env` says whether the floating-point
 /// environment keeps subnormals (read only where every lane is done).
+/// Lanes the first pass leaves go to the second, then to the scalar
+/// stages.
 #[inline(always)]
 fn finish<L: Real4>(
     x: Decided<L>,
@@ -249,7 +272,19 @@ fn finish<L: Real4>(
     ray: &Ray4,
     s: &Sphere4,
 ) -> SphereHit4 {
-    let class = L::mask_i32(x.two) & i32x4::splat(2);
+    let x = if L::all(x.done) {
+        x
+    } else {
+        let (o, d, c, r) = widened::<L>(ray, s);
+        let y = decide_quotients(o, d, c, r);
+        Decided {
+            two: x.two | (y.two & !x.done),
+            done: x.done | y.done,
+            lo: L::select(x.done, x.lo, y.lo),
+            hi: L::select(x.done, x.hi, y.hi),
+        }
+    };
+    let class = L::mask_i32(x.two) & i32x4::splat(TWO);
     let (t0, t1) = (x.lo.narrow(), x.hi.narrow());
     if L::all(x.done) && env() {
         SphereHit4 { class, t0, t1 }
@@ -261,14 +296,20 @@ fn finish<L: Real4>(
 /// The kernel over any four-lane [`Real4`].
 #[inline(always)]
 fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl FnOnce() -> bool) -> SphereHit4 {
+    let (o, d, c, r) = widened::<L>(ray, s);
+    finish(decide(o, d, c, r), env, ray, s)
+}
+
+/// A packet's inputs in f64 lanes.
+#[inline(always)]
+fn widened<L: Real4>(ray: &Ray4, s: &Sphere4) -> ([L; 3], [L; 3], [L; 3], L) {
     let w = L::widen;
-    let x = decide(
+    (
         ray.origin.map(w),
         ray.dir.map(w),
         s.center.map(w),
         w(s.radius),
-    );
-    finish(x, env, ray, s)
+    )
 }
 
 impl SphereHit4 {
@@ -285,9 +326,9 @@ impl SphereHit4 {
         let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
             let (k, a, b) = match reference::escalate(&rays[i], &Sphere::new(c[i], r[i])).0 {
-                SphereHit::None => (0, f32::NAN, f32::NAN),
-                SphereHit::Tangent(t) => (1, t, t),
-                SphereHit::Two(a, b) => (2, a, b),
+                SphereHit::None => (NONE, f32::NAN, f32::NAN),
+                SphereHit::Tangent(t) => (ONE, t, t),
+                SphereHit::Two(a, b) => (TWO, a, b),
             };
             (class[i], t0[i], t1[i]) = (k, a, b);
         }
@@ -315,8 +356,8 @@ impl SphereHit4 {
             self.t1.to_array(),
         );
         [0, 1, 2, 3].map(|i| match c[i] {
-            0 => SphereHit::None,
-            1 => SphereHit::Tangent(t0[i]),
+            NONE => SphereHit::None,
+            ONE => SphereHit::Tangent(t0[i]),
             _ => SphereHit::Two(t0[i], t1[i]),
         })
     }
@@ -335,13 +376,7 @@ impl SphereHit4 {
     /// ```
     #[inline]
     pub fn nearest(&self, t_min: f32x4, t_max: f32x4) -> (f32x4, f32x4) {
-        let any: f32x4 = wide::bytemuck::cast(self.class.simd_gt(i32x4::ZERO));
-        let two: f32x4 = wide::bytemuck::cast(self.class.simd_eq(i32x4::splat(2)));
-        let within = |t: f32x4| t.simd_ge(t_min) & t.simd_le(t_max);
-        let ok0 = any & within(self.t0);
-        let ok1 = two & within(self.t1);
-        let t = ok0.select(self.t0, ok1.select(self.t1, f32x4::splat(f32::INFINITY)));
-        (ok0 | ok1, t)
+        crate::ray4::nearest4::<true, false>(self.class, self.t0, self.t1, t_min, t_max)
     }
 }
 
@@ -399,5 +434,35 @@ mod tests {
             classes.extend(want.map(|w| format!("{w:?}").chars().take(3).collect::<String>()));
         }
         assert!(classes.len() >= 2, "{classes:?}");
+    }
+
+    /// Origins a few ulps off the sphere make the textbook root near 0
+    /// mostly cancellation: the first pass leaves some of those lanes and
+    /// the second (`c/q`) decides them, and every packet is the
+    /// reference's.
+    #[test]
+    fn lanes_the_first_pass_leaves_go_to_the_quotients() {
+        let s = Sphere::new(glam::Vec3::new(0.25, 0.0, 0.0), 1.0);
+        let s4 = Sphere4::splat(&s);
+        let (mut left, mut rescued) = (0, 0);
+        for k in 0..64u32 {
+            let rays = [0, 1, 2, 3].map(|i| {
+                let x = f32::from_bits(1.25f32.to_bits() + 4 * k + i);
+                crate::Ray::new(
+                    glam::Vec3::new(x, 0.0, 0.0),
+                    glam::Vec3::new(-1.0, 0.1, 0.0),
+                )
+            });
+            let r4 = Ray4::from_rays(rays);
+            let (o, d, c, r) = widened::<F64x4>(&r4, &s4);
+            let first = decide(o, d, c, r).done.lanes();
+            let second = decide_quotients(o, d, c, r).done.lanes();
+            left += first.iter().filter(|&&x| !x).count();
+            rescued += (0..4).filter(|&i| !first[i] && second[i]).count();
+            let want = rays.map(|r| reference::intersect(&r, &s));
+            assert_eq!(intersect_baseline(&r4, &s4).lanes(), want);
+            assert_eq!(intersect(&r4, &s4).lanes(), want);
+        }
+        assert!(rescued > 0 && left < 256, "{left} {rescued}");
     }
 }
