@@ -289,19 +289,26 @@ fn a_dropped_root_is_a_class_error_unless_alpha_is_tiny() {
     assert!(f.why.starts_with("a different class"), "{}", f.why);
 }
 
-/// Answers of another kind: a ray 2⁻⁴⁰ above a plane is within the band
-/// of lying in it, so `Everywhere` passes; in the plane exactly, roots are
-/// wrong because every t solves it; and a nearest hit where the whole line
-/// was declared is the wrong semantics.
+/// Answers of another kind: a ray an ulp of 1 above `y = 1` is within
+/// the band of lying in it, so `Everywhere` passes, but 2⁻⁴⁰ above `y = 0`
+/// it is not (that offset is computed exactly); in the plane exactly,
+/// roots are wrong because every t solves it; and a nearest hit where the
+/// whole line was declared is the wrong semantics.
 #[test]
 fn answers_of_another_kind() {
     let p = Plane::new(Vec3::ZERO, Vec3::Y);
-    let above = Ray::new(Vec3::new(0.0, 2f32.powi(-40), 0.0), Vec3::X);
+    let lifted = Plane::new(Vec3::Y, Vec3::Y);
+    let ulp_above = Ray::new(Vec3::new(0.0, 1.0 + f32::EPSILON, 0.0), Vec3::X);
     assert!(
         whole_line()
-            .judge_plane(&above, &p, Answer::Everywhere)
+            .judge_plane(&ulp_above, &lifted, Answer::Everywhere)
             .is_ok()
     );
+    let above = Ray::new(Vec3::new(0.0, 2f32.powi(-40), 0.0), Vec3::X);
+    let f = whole_line()
+        .judge_plane(&above, &p, Answer::Everywhere)
+        .unwrap_err();
+    assert!(f.why.starts_with("a different class"), "{}", f.why);
     let on = Ray::new(Vec3::ZERO, Vec3::X);
     let f = whole_line()
         .judge_plane(&on, &p, Answer::Roots(vec![]))
@@ -462,4 +469,162 @@ fn every_family_is_compiled_in() {
             "fixtures/stiff: no cases of the kind \"torus\""
         ]
     );
+}
+
+/// The unit sphere grazed from `(0, 1, −5.5)` along z: a double root at
+/// 5.5 (κ = 2, off small integers, so the class has a band). Before the
+/// double root had a finite κ, any value passed there.
+fn graze() -> (Ray, Sphere) {
+    (
+        Ray::new(Vec3::new(0.0, 1.0, -5.5), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.0),
+    )
+}
+
+/// A tangent is judged by its double root's own condition: a few ulps
+/// off passes, a far-off root fails, once, twice or as two roots.
+#[test]
+fn a_tangent_root_must_be_near_the_double_root() {
+    let (r, s) = graze();
+    let off = |n: u32| f32::from_bits(5.5f32.to_bits() + n);
+    for ok in [
+        vec![5.5],
+        vec![off(3)],
+        vec![5.5, 5.5],
+        vec![5.4995, 5.5005],
+    ] {
+        assert!(
+            whole_line()
+                .judge_sphere(&r, &s, Answer::Roots(ok.clone()))
+                .is_ok(),
+            "{ok:?}"
+        );
+    }
+    for t in [26.0, -1e6, 1e30, off(40)] {
+        assert!(
+            whole_line()
+                .judge_sphere(&r, &s, Answer::Roots(vec![t]))
+                .is_err(),
+            "{t}"
+        );
+        assert!(
+            whole_line()
+                .judge_sphere(&r, &s, Answer::Roots(vec![t, t]))
+                .is_err(),
+            "{t}"
+        );
+        assert!(
+            nearest_positive()
+                .judge_sphere(&r, &s, Answer::Nearest(Some(t)))
+                .is_err(),
+            "{t}"
+        );
+    }
+    assert!(
+        whole_line()
+            .judge_sphere(&r, &s, Answer::Roots(vec![26.0, 27.0]))
+            .is_err()
+    );
+    // The same graze as a quadric.
+    let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+    assert!(
+        whole_line()
+            .judge_quadric(&r, &ball, Answer::Roots(vec![off(3)]))
+            .is_ok()
+    );
+    assert!(
+        whole_line()
+            .judge_quadric(&r, &ball, Answer::Roots(vec![26.0]))
+            .is_err()
+    );
+    // rayoracle's kernels pass it.
+    ours_pass_sphere(&r, &s);
+    ours_pass_quadric(&r, &ball);
+}
+
+/// An exactly zero margin whose terms are all zero is computed exactly by
+/// any kernel, so it forgives nothing; and "every t" is judged by the
+/// offset (plane) or γ (quadric), not by the margin.
+#[test]
+fn a_zero_margin_forgives_only_what_its_terms_can_hide() {
+    let p = Plane::new(Vec3::ZERO, Vec3::Y);
+    let parallel = Ray::new(Vec3::splat(0.5), Vec3::X);
+    for wrong in [Answer::Everywhere, Answer::Roots(vec![3.4e38])] {
+        assert!(
+            whole_line()
+                .judge_plane(&parallel, &p, wrong.clone())
+                .is_err(),
+            "{wrong}"
+        );
+    }
+    assert!(
+        whole_line()
+            .judge_plane(&parallel, &p, Answer::Roots(vec![]))
+            .is_ok()
+    );
+    // d·n = 0 from terms that cancel (0.5·1 − 0.5·1): roots may come from
+    // a rounded d·n, but "every t" still needs the offset 0.5 to vanish.
+    let (slant, q) = (
+        Ray::new(Vec3::new(0.5, 0.0, 0.0), Vec3::new(0.5, 0.5, 0.0)),
+        Plane::new(Vec3::ZERO, Vec3::new(1.0, -1.0, 0.0)),
+    );
+    assert!(
+        whole_line()
+            .judge_plane(&slant, &q, Answer::Everywhere)
+            .is_err()
+    );
+    let in_it = Ray::new(Vec3::new(0.5, 0.5, 0.0), Vec3::new(0.5, 0.5, 0.0));
+    assert!(
+        whole_line()
+            .judge_plane(&in_it, &q, Answer::Everywhere)
+            .is_ok()
+    );
+    // Along a cylinder's axis: α = β = 0, γ = −0.75, no root.
+    let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+    let axial = Ray::new(Vec3::new(0.5, 0.0, 0.0), Vec3::Z);
+    for wrong in [
+        Answer::Roots(vec![3.4e38, -3.4e38]),
+        Answer::Roots(vec![-3.4e38, 3.4e38]),
+        Answer::Everywhere,
+    ] {
+        assert!(
+            whole_line()
+                .judge_quadric(&axial, &cyl, wrong.clone())
+                .is_err(),
+            "{wrong}"
+        );
+    }
+    // rayoracle's kernels pass both.
+    for (r, pl) in [(parallel, p), (slant, q), (in_it, q)] {
+        ours_pass_plane(&r, &pl);
+    }
+    ours_pass_quadric(&axial, &cyl);
+}
+
+/// rayoracle's reference kernel passes a case under `Declared::faithful`,
+/// and its plain f32 kernel under `Declared::f32`.
+fn ours_pass_sphere(r: &Ray, s: &Sphere) {
+    let faithful = Gate::new(Declared::faithful(Semantics::WholeLine));
+    let reference = Answer::roots(sphere::reference::intersect(r, s));
+    assert!(faithful.judge_sphere(r, s, reference).is_ok());
+    let plain = Answer::roots(sphere::plain::intersect(r, s));
+    assert!(whole_line().judge_sphere(r, s, plain).is_ok());
+}
+
+/// [`ours_pass_sphere`] for a plane.
+fn ours_pass_plane(r: &Ray, p: &Plane) {
+    let faithful = Gate::new(Declared::faithful(Semantics::WholeLine));
+    let reference = Answer::roots(plane::reference::intersect(r, p));
+    assert!(faithful.judge_plane(r, p, reference).is_ok());
+    let plain = Answer::roots(plane::plain::intersect(r, p));
+    assert!(whole_line().judge_plane(r, p, plain).is_ok());
+}
+
+/// [`ours_pass_sphere`] for a quadric.
+fn ours_pass_quadric(r: &Ray, q: &Quadric) {
+    let faithful = Gate::new(Declared::faithful(Semantics::WholeLine));
+    let reference = Answer::roots(quadric::reference::intersect(r, q));
+    assert!(faithful.judge_quadric(r, q, reference).is_ok());
+    let plain = Answer::roots(quadric::plain::intersect(r, q));
+    assert!(whole_line().judge_quadric(r, q, plain).is_ok());
 }
