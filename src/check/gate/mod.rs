@@ -583,7 +583,6 @@ impl Gate {
                     continue;
                 }
                 match parse_line(line) {
-                    Ok(c) if c.expect.as_ref().is_some_and(|e| e["class"] == "error") => {}
                     Ok(c) => out.push((
                         c.family.unwrap_or_else(|| format!("{kind}/unnamed")),
                         c.case,
@@ -591,6 +590,9 @@ impl Gate {
                     Err(e) => errors.push(format!("fixtures/{dir}/{kind}.jsonl:{}: {e}", i + 1)),
                 }
             }
+        }
+        if kind == "camera" {
+            out.extend(invalid_cameras());
         }
         out.extend(random_cases(kind, self.seed, random));
         (out, errors)
@@ -648,6 +650,38 @@ fn kind_seed(kind: &str, seed: u64) -> u64 {
         (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
     });
     seed ^ fnv
+}
+
+/// The `camera/invalid` family: parameters the oracle refuses, each a
+/// plausible slip a camera might let through (an up vector exactly
+/// parallel to the view direction, longer, shorter, reversed or tiny; a
+/// field of view of π or more, of 0 or less, or NaN), so that a camera
+/// accepting any of them fails. The fixtures' `camera/error-*` families
+/// run too.
+fn invalid_cameras() -> Vec<Sourced> {
+    let (o, f, up) = (
+        Vec3::new(1.5, -2.0, 3.0),
+        Vec3::new(0.6, -0.8, 0.5),
+        Vec3::Y,
+    );
+    let params = [
+        (f, f * 4.0, 1.0),
+        (f, -f * 0.25, 1.0),
+        (Vec3::new(0.0, 0.0, -1.0), Vec3::new(0.0, 0.0, 1e-30), 1.2),
+        (f, up, 3.3),
+        (f, up, std::f32::consts::PI),
+        (f, up, 4.0),
+        (f, up, 0.0),
+        (f, up, -0.5),
+        (f, up, f32::NAN),
+    ];
+    params
+        .into_iter()
+        .map(|(dir, up, angle)| {
+            let p = CameraParams::new(o, dir, up, angle, [64, 48]);
+            ("camera/invalid".to_string(), Case::Camera(p, [5, 7]))
+        })
+        .collect()
 }
 
 /// Seeded random cases (`random/*` families), `n` per family.

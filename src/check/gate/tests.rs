@@ -692,3 +692,17 @@ fn shrink_keeps_a_proper_case_proper() {
     let flat = Case::Sphere(Ray::new(Vec3::ONE, Vec3::X), Sphere::new(Vec3::ZERO, 0.0));
     assert!(!proper(&shrink(&flat, &|_| true)));
 }
+
+/// Every case of `camera/invalid` is one the oracle refuses.
+#[test]
+fn the_invalid_cameras_are_refused_by_the_oracle() {
+    let cases = invalid_cameras();
+    assert!(cases.len() >= 9);
+    for (_, c) in &cases {
+        let Case::Camera(p, px) = c else {
+            panic!("{c:?}")
+        };
+        assert!(crate::camera::exact::ray(p, px[0], px[1]).is_err(), "{p:?}");
+        assert!(p.build().is_err(), "{p:?}");
+    }
+}
