@@ -42,7 +42,10 @@
 //!   within the band, each root given must lie within `√(2(|margin| +
 //!   band))·s` of the nearest double root `t*` (or within its allowed
 //!   ulps), `s` being how far a margin error of 1 moves the roots
-//!   (`a^(−3/2)` for a sphere, `1/(2|α|)` for a quadric).
+//!   (`a^(−3/2)` for a sphere, `1/(2|α|)` for a quadric). A quadric with
+//!   α = β = 0 has no double root: there each root `t` must solve some α,
+//!   β and γ within their bands (`(|α band| t² + |β band| |t| + γ band) ≥
+//!   |γ|`).
 //! * **Every `t`.** "Every t" against another class is judged by what must
 //!   vanish for every `t` to solve it, not by the margin: `d·n` and the
 //!   offset `(a − o)·n` of a plane (unit band `2⁻⁴⁴Σ(|aᵢ| + |oᵢ|)|nᵢ|`),
@@ -378,9 +381,18 @@ impl Exact {
     /// Whether `t`, answered where the class differs within the band, is
     /// near the double root the band stands for: within `√(2(|margin| +
     /// band))·s` of `t*`, or within the ulps allowed at `t*`'s κ.
+    ///
+    /// A quadric with α = β = 0 has no vertex: there `t` must be a root of
+    /// some α, β and γ within their bands, `|α|t² + |β||t| ≥ |γ| − γ band`.
     fn near_vertex(&self, d: &Declared, t: f32) -> bool {
         let Some((c, k, s)) = self.vertex else {
-            return true;
+            return match self.lies_on[..] {
+                [(0.0, au), (0.0, bu), (g, gu)] if self.alpha.is_some() => {
+                    let (t, k) = (f64::from(t).abs(), d.band_scale);
+                    (au * t * t + bu * t + gu) * k >= g.abs()
+                }
+                _ => true,
+            };
         };
         let reach = (2.0 * (self.margin.abs() + self.band * d.band_scale)).sqrt() * s;
         (f64::from(t) - c).abs() <= reach || root_within(c as f32, t, d.allowed_ulps(k))

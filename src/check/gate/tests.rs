@@ -594,6 +594,24 @@ fn a_zero_margin_forgives_only_what_its_terms_can_hide() {
             "{wrong}"
         );
     }
+    // x² − y² − 1 along (1, 1, 0) from (0.5, 0.5, 0): α = 1 − 1 and
+    // β = 1 − 1 cancel, γ = −1. A rounded α may give roots near ±2¹¹·⁵,
+    // never one at 26.
+    let hyperbolic = Quadric::new([1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+    let cancel = Ray::new(Vec3::new(0.5, 0.5, 0.0), Vec3::new(1.0, 1.0, 0.0));
+    let far = Answer::Roots(vec![-3000.0, 3000.0]);
+    assert!(
+        whole_line()
+            .judge_quadric(&cancel, &hyperbolic, far)
+            .is_ok()
+    );
+    let near = Answer::Roots(vec![-26.0, 26.0]);
+    assert!(
+        whole_line()
+            .judge_quadric(&cancel, &hyperbolic, near)
+            .is_err()
+    );
+    ours_pass_quadric(&cancel, &hyperbolic);
     // rayoracle's kernels pass both.
     for (r, pl) in [(parallel, p), (slant, q), (in_it, q)] {
         ours_pass_plane(&r, &pl);
