@@ -45,7 +45,8 @@
 //!   (`a^(−3/2)` for a sphere, `1/(2|α|)` for a quadric). A quadric with
 //!   α = β = 0 has no double root: there each root `t` must solve some α,
 //!   β and γ within their bands (`(|α band| t² + |β band| |t| + γ band) ≥
-//!   |γ|`).
+//!   |γ|`), and so must a root of a plane with `d·n = 0` (`(d·n band |t|
+//!   + offset band) ≥ |offset|`).
 //! * **Every `t`.** "Every t" against another class is judged by what must
 //!   vanish for every `t` to solve it, not by the margin: `d·n` and the
 //!   offset `(a − o)·n` of a plane (unit band `2⁻⁴⁴Σ(|aᵢ| + |oᵢ|)|nᵢ|`),
@@ -383,13 +384,18 @@ impl Exact {
     /// band))·s` of `t*`, or within the ulps allowed at `t*`'s κ.
     ///
     /// A quadric with α = β = 0 has no vertex: there `t` must be a root of
-    /// some α, β and γ within their bands, `|α|t² + |β||t| ≥ |γ| − γ band`.
+    /// some α, β and γ within their bands, `|α|t² + |β||t| ≥ |γ| − γ band`;
+    /// likewise a plane with `d·n = 0`, `|d·n| |t| ≥ |offset| − its band`.
     fn near_vertex(&self, d: &Declared, t: f32) -> bool {
         let Some((c, k, s)) = self.vertex else {
             return match self.lies_on[..] {
                 [(0.0, au), (0.0, bu), (g, gu)] if self.alpha.is_some() => {
                     let (t, k) = (f64::from(t).abs(), d.band_scale);
                     (au * t * t + bu * t + gu) * k >= g.abs()
+                }
+                [(0.0, du), (off, ou)] => {
+                    let (t, k) = (f64::from(t).abs(), d.band_scale);
+                    (du * t + ou) * k >= off.abs()
                 }
                 _ => true,
             };

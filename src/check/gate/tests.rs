@@ -573,6 +573,11 @@ fn a_zero_margin_forgives_only_what_its_terms_can_hide() {
             .judge_plane(&slant, &q, Answer::Everywhere)
             .is_err()
     );
+    // A rounded d·n (at most 2⁻²⁴ in f32) puts the root past 0.5 / 2⁻²⁴.
+    for (t, ok) in [(1e7, true), (-1e7, true), (26.0, false), (4e6, false)] {
+        let got = whole_line().judge_plane(&slant, &q, Answer::Roots(vec![t]));
+        assert_eq!(got.is_ok(), ok, "{t}");
+    }
     let in_it = Ray::new(Vec3::new(0.5, 0.5, 0.0), Vec3::new(0.5, 0.5, 0.0));
     assert!(
         whole_line()
