@@ -322,6 +322,18 @@ fn camera_no_half_pixel(p: &CameraParams, px: [u32; 2]) -> Option<Ray> {
     })
 }
 
+/// A camera that checks only for zero vectors: an up vector parallel to
+/// the view direction, or a field of view outside `(0, π)`, goes through
+/// (here as the ray along `dir`) where it must be refused.
+fn camera_unchecked(p: &CameraParams, px: [u32; 2]) -> Option<Ray> {
+    use rayoracle::camera::CameraError::{AngleOutOfRange, DirParallelToUp};
+    match p.build() {
+        Ok(c) => Some(c.ray(px[0], px[1])),
+        Err(DirParallelToUp | AngleOutOfRange(_)) => Some(Ray::new(p.position, p.dir)),
+        Err(_) => None,
+    }
+}
+
 // ---------------------------------------------------------------------------
 // The controls: the correct counterparts pass the same gate.
 
@@ -534,6 +546,21 @@ fn camera_no_half_pixel_is_caught() {
         &report,
         &["camera/basic", "camera/centre", "camera/random/any"],
     );
+}
+
+#[test]
+fn camera_unchecked_is_caught_by_invalid_parameters() {
+    let report = gate(Semantics::WholeLine).camera(&camera_unchecked);
+    assert_caught(
+        "camera accepting dir ∥ up and any angle",
+        &report,
+        &["camera/invalid"],
+    );
+    let why = |f: &str| report.failures.iter().any(|x| x.family == f);
+    assert!(why("camera/error-parallel-up") && why("camera/error-angle"));
+    for f in &report.failures {
+        assert_eq!(f.why, "the camera must refuse these parameters", "{f}");
+    }
 }
 
 #[test]

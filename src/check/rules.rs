@@ -25,13 +25,35 @@
 //!   ulps from the correctly rounded exact root (an infinite κ allows
 //!   anything, unless the precision is 0). Where nothing is allowed the
 //!   root must be the exact root's bits: `−0` is not `+0`. A NaN root
-//!   always fails, and whole-line roots must be ascending.
-//! * **Class.** The number of roots (or every `t`) must be the exact one,
-//!   unless the exact margin is within the declared band (`band_scale`
-//!   times the unit band). A band of 0 forgives nothing. When every input
+//!   always fails, and whole-line roots must be ascending, whatever the
+//!   class.
+//! * **Double roots.** A tangent's root `t* = −β/2α` is a quotient, so its
+//!   κ is finite: the relative condition of β plus that of α (for a sphere
+//!   `Σ(|oᵢdᵢ| + |Cᵢdᵢ| + |dᵢ(fᵢ + 2t*dᵢ)|)/(a|t*|)`, for a quadric
+//!   `3(Σ|β terms|/|β| + Σ|α terms|/|α|)`); only `t* = 0` has an infinite
+//!   one.
+//! * **Class.** The number of roots must be the exact one, unless the
+//!   exact margin is within the declared band (`band_scale` times the unit
+//!   band). A band of 0 forgives nothing, and neither does a margin whose
+//!   terms are all 0 (every kernel computes it exactly). When every input
 //!   is an integer of magnitude at most 16, an exactly zero margin (a ray
 //!   in the plane, an exact tangent) is never in the band, since any
-//!   kernel computes its margin exactly there.
+//!   kernel computes its margin exactly there. Where the class differs
+//!   within the band, each root given must lie within `√(2(|margin| +
+//!   band))·s` of the nearest double root `t*` (or within its allowed
+//!   ulps), `s` being how far a margin error of 1 moves the roots
+//!   (`a^(−3/2)` for a sphere, `1/(2|α|)` for a quadric). A quadric with
+//!   α = β = 0 has no double root: there each root `t` must solve some α,
+//!   β and γ within their bands (`(|α band| t² + |β band| |t| + γ band) ≥
+//!   |γ|`), and so must a root of a plane with `d·n = 0` (`(d·n band |t|
+//!   + offset band) ≥ |offset|`).
+//! * **Every `t`.** "Every t" against another class is judged by what must
+//!   vanish for every `t` to solve it, not by the margin: `d·n` and the
+//!   offset `(a − o)·n` of a plane (unit band `2⁻⁴⁴Σ(|aᵢ| + |oᵢ|)|nᵢ|`),
+//!   α, β and γ of a quadric (each `2⁻⁴⁴` of its terms). It is forgiven
+//!   only where each of them may be computed as 0 (is 0, or within its
+//!   band, off small integers), or, against an exact "every t", where one
+//!   of them may be computed as nonzero. A sphere is never every `t`.
 //! * **Tangents and small α.** With a band, a single exact root may come
 //!   as the same root twice. A quadric whose exact α is within the band
 //!   of its terms (and not on small integers) may be answered as linear
@@ -40,7 +62,8 @@
 //! * **Nearest positive.** In [`Semantics::NearestPositive`] the answer is
 //!   the nearest exact root `t > 0`, judged by that root's κ. A ray lying
 //!   on the surface has no nearest hit, so any answer passes; a hit or a
-//!   miss at `|t| ≤ 10⁻³⁰`, or within the band, may go either way.
+//!   miss at `|t| ≤ 10⁻³⁰`, or within the band, may go either way (a hit
+//!   within the band's reach of the double root).
 //! * **Camera** ([`judge_camera`]). Construction must fail exactly when the
 //!   oracle's does (with the same error, where the kernel names one). The
 //!   origin must be the camera position, bit for bit, and each direction
@@ -281,6 +304,14 @@ pub struct Exact {
     /// Every input is an integer of magnitude at most 16: every margin is
     /// then computed exactly even in plain f32.
     pub small_integers: bool,
+    /// The nearest double root `t* = −β/2α`, its κ, and the factor `s`
+    /// by which a margin error `m` moves a root from it (`√m · s`); `None`
+    /// for a plane or α = 0.
+    pub vertex: Option<(f64, f64, f64)>,
+    /// What must all vanish for every `t` to solve it, each with its unit
+    /// band: `d·n` and the offset `(a − o)·n` of a plane, α, β and γ of a
+    /// quadric; empty for a sphere, which is never every `t`.
+    pub lies_on: Vec<(f64, f64)>,
 }
 
 impl Exact {
@@ -291,17 +322,86 @@ impl Exact {
     /// use rayoracle::check::rules::{self, Declared, Semantics};
     /// use rayoracle::{Ray, plane::Plane};
     /// use glam::Vec3;
-    /// let above = Ray::new(Vec3::new(0.0, 2f32.powi(-40), 0.0), Vec3::X);
-    /// let (_, e) = rules::plane(&above, &Plane::new(Vec3::ZERO, Vec3::Y)).unwrap();
+    /// // d·n = 2⁻²⁴ from terms 1 and 1 − 2⁻²⁴: within 2²⁰ units of 2⁻⁴⁴.
+    /// let grazing = Ray::new(Vec3::Y, Vec3::new(1.0, 1.0 - 2f32.powi(-24), 0.0));
+    /// let (_, e) = rules::plane(&grazing, &Plane::new(Vec3::ZERO, Vec3::new(1.0, -1.0, 0.0))).unwrap();
     /// assert!(e.in_band(&Declared::f32(Semantics::WholeLine)));
     /// assert!(!e.in_band(&Declared::correctly_rounded(Semantics::WholeLine)));
+    /// // Along the ground, d·n = 0 from terms that are all 0: computed
+    /// // exactly by any kernel, so in no band.
+    /// let (_, e) = rules::plane(&Ray::new(Vec3::splat(0.5), Vec3::X), &Plane::new(Vec3::ZERO, Vec3::Y)).unwrap();
+    /// assert!(!e.in_band(&Declared::f32(Semantics::WholeLine)));
     /// # }
     /// ```
     pub fn in_band(&self, d: &Declared) -> bool {
-        if d.band_scale == 0.0 || (self.margin == 0.0 && self.small_integers) {
-            return false;
+        !(self.margin == 0.0 && self.small_integers)
+            && d.band_scale != 0.0
+            && self.band > 0.0
+            && self.margin.abs() <= self.band * d.band_scale
+    }
+
+    /// Whether a kernel under `d` may compute a value of unit band `unit`
+    /// with an error at all: not without a band, nor on small integers,
+    /// nor where every term is 0 (`unit = 0`).
+    fn may_err(&self, d: &Declared, unit: f64) -> bool {
+        d.band_scale != 0.0 && !self.small_integers && unit > 0.0
+    }
+
+    /// Whether "every t" against the exact answer's other class (or the
+    /// other way round) is forgiven under `d`: each of
+    /// [`lies_on`](Exact::lies_on) may be computed as 0 where some is not
+    /// exactly 0, and some may be computed as nonzero where all are.
+    ///
+    /// ```
+    /// # #[cfg(feature = "plane")] {
+    /// use rayoracle::check::rules::{self, Declared, Semantics};
+    /// use rayoracle::{Ray, plane::Plane};
+    /// use glam::Vec3;
+    /// let (ground, f32) = (Plane::new(Vec3::ZERO, Vec3::Y), Declared::f32(Semantics::WholeLine));
+    /// let (_, off) = rules::plane(&Ray::new(Vec3::splat(0.5), Vec3::X), &ground).unwrap();
+    /// assert!(!off.everywhere_in_band(&f32));
+    /// // 2⁻²³ above y = 1, an ulp of the terms 1 and 1 + 2⁻²³ of the offset.
+    /// let lifted = Plane::new(Vec3::Y, Vec3::Y);
+    /// let (_, near) = rules::plane(&Ray::new(Vec3::new(0.0, 1.0 + 2f32.powi(-23), 0.0), Vec3::X), &lifted).unwrap();
+    /// assert!(near.everywhere_in_band(&f32));
+    /// assert!(!near.everywhere_in_band(&Declared::faithful(Semantics::WholeLine)));
+    /// # }
+    /// ```
+    pub fn everywhere_in_band(&self, d: &Declared) -> bool {
+        let on = &self.lies_on;
+        if on.iter().all(|&(v, _)| v == 0.0) {
+            on.iter().any(|&(_, u)| self.may_err(d, u))
+        } else {
+            !on.is_empty()
+                && on
+                    .iter()
+                    .all(|&(v, u)| v == 0.0 || self.may_err(d, u) && v.abs() <= u * d.band_scale)
         }
-        self.margin.abs() <= self.band * d.band_scale
+    }
+
+    /// Whether `t`, answered where the class differs within the band, is
+    /// near the double root the band stands for: within `√(2(|margin| +
+    /// band))·s` of `t*`, or within the ulps allowed at `t*`'s κ.
+    ///
+    /// A quadric with α = β = 0 has no vertex: there `t` must be a root of
+    /// some α, β and γ within their bands, `|α|t² + |β||t| ≥ |γ| − γ band`;
+    /// likewise a plane with `d·n = 0`, `|d·n| |t| ≥ |offset| − its band`.
+    fn near_vertex(&self, d: &Declared, t: f32) -> bool {
+        let Some((c, k, s)) = self.vertex else {
+            return match self.lies_on[..] {
+                [(0.0, au), (0.0, bu), (g, gu)] if self.alpha.is_some() => {
+                    let (t, k) = (f64::from(t).abs(), d.band_scale);
+                    (au * t * t + bu * t + gu) * k >= g.abs()
+                }
+                [(0.0, du), (off, ou)] => {
+                    let (t, k) = (f64::from(t).abs(), d.band_scale);
+                    (du * t + ou) * k >= off.abs()
+                }
+                _ => true,
+            };
+        };
+        let reach = (2.0 * (self.margin.abs() + self.band * d.band_scale)).sqrt() * s;
+        (f64::from(t) - c).abs() <= reach || root_within(c as f32, t, d.allowed_ulps(k))
     }
 
     /// Whether a quadric's α is within the band of its terms under `d`, so
@@ -346,8 +446,10 @@ fn small_integers(inputs: &[&[f32]]) -> bool {
 #[cfg(feature = "plane")]
 pub fn plane(ray: &Ray, p: &Plane) -> Option<(PlaneHit, Exact)> {
     let exact = plane::exact::intersect(ray, p).ok()?;
-    let (d, n) = (
+    let (o, d, a, n) = (
+        vec3(ray.origin.to_array()).ok()?,
         vec3(ray.dir.to_array()).ok()?,
+        vec3(p.point.to_array()).ok()?,
         vec3(p.normal.to_array()).ok()?,
     );
     let roots = (!exact.is_everywhere()).then(|| exact.roots().as_slice().to_vec());
@@ -364,6 +466,11 @@ pub fn plane(ray: &Ray, p: &Plane) -> Option<(PlaneHit, Exact)> {
             &p.point.to_array(),
             &p.normal.to_array(),
         ]),
+        vertex: None,
+        lies_on: vec![
+            (dot(&d, &n).to_f64(), plane_band(ray, p)),
+            (dot(&sub3(&a, &o), &n).to_f64(), offset_band(ray, p)),
+        ],
     };
     Some((exact, e))
 }
@@ -389,7 +496,7 @@ pub(crate) fn sphere_given(
         .iter()
         .map(|&t| match exact {
             SphereHit::Two(..) => sphere::condition_at(ray, s, t as f64),
-            _ => f64::INFINITY,
+            _ => sphere_vertex(ray, s, t as f64).1,
         })
         .collect();
     Exact {
@@ -404,7 +511,40 @@ pub(crate) fn sphere_given(
             &s.center.to_array(),
             &[s.radius],
         ]),
+        vertex: Some(sphere_vertex(ray, s, f64::NAN)),
+        lies_on: Vec::new(),
     }
+}
+
+/// The sphere's double root `t* = −b/a` (`a = d·d`, `b = f·d`, `f = o −
+/// C`), its κ, and `s = a^(−3/2)`, by which a margin error `m` moves the
+/// roots `t* ± √(aΔ)/a^(3/2)`. `t*` is a quotient, so its condition is
+/// finite: `∂t*/∂oᵢ = −dᵢ/a`, `∂t*/∂Cᵢ = dᵢ/a`, `∂t*/∂dᵢ = −(fᵢ + 2t*dᵢ)/a`
+/// and R does not enter, so `κ = Σ(|oᵢdᵢ| + |Cᵢdᵢ| + |dᵢ(fᵢ + 2t*dᵢ)|) /
+/// (a|t*|)`, infinite at `t* = 0`. κ is taken at `at` where given (a
+/// tangent's rounded root), else at `t*`.
+#[cfg(feature = "sphere")]
+fn sphere_vertex(ray: &Ray, s: &Sphere, at: f64) -> (f64, f64, f64) {
+    let (o, c, d) = (
+        ray.origin.as_dvec3(),
+        s.center.as_dvec3(),
+        ray.dir.as_dvec3(),
+    );
+    let f = o - c;
+    let a = d.length_squared();
+    let vertex = -f.dot(d) / a;
+    let t = if at.is_nan() { vertex } else { at };
+    let kappa = if t == 0.0 || !t.is_finite() {
+        f64::INFINITY
+    } else {
+        (0..3)
+            .map(|i| {
+                (o[i] * d[i]).abs() + (c[i] * d[i]).abs() + (d[i] * (f[i] + 2.0 * t * d[i])).abs()
+            })
+            .sum::<f64>()
+            / (a * t.abs())
+    };
+    (vertex, kappa, a.powf(-1.5))
 }
 
 /// A quadric case's exact answer, or `None` for a non-finite input.
@@ -430,12 +570,14 @@ pub(crate) fn quadric_given(
         .flatten()
         .map(|&t| {
             if double {
-                f64::INFINITY
+                quadric_vertex(ray, q, eq).1
             } else {
                 quadric_kappa_at(ray, q, eq, t as f64)
             }
         })
         .collect();
+    let (at, bt, gt) = quadric::terms(ray, q);
+    let unit = |x: &[f64]| x.iter().map(|x| x.abs()).sum::<f64>() * 2f64.powi(-44);
     Exact {
         roots,
         kappa,
@@ -443,7 +585,31 @@ pub(crate) fn quadric_given(
         band: quadric_band(ray, q),
         alpha: Some((eq.alpha.to_f64(), alpha_terms(ray, q) * 2f64.powi(-44))),
         small_integers: small_integers(&[&ray.origin.to_array(), &ray.dir.to_array(), &q.coeffs]),
+        vertex: (!eq.alpha.is_zero()).then(|| quadric_vertex(ray, q, eq)),
+        lies_on: vec![
+            (eq.alpha.to_f64(), unit(&at)),
+            (eq.beta.to_f64(), unit(&bt)),
+            (eq.gamma.to_f64(), unit(&gt)),
+        ],
     }
+}
+
+/// The quadric's double root `t* = −β/2α`, its κ, and `s = 1/(2|α|)`, by
+/// which a discriminant error `m` moves the roots `t* ± √D/(2|α|)`. `t*`
+/// is a quotient: its relative error is β's plus α's, each term a product
+/// of at most three inputs, so `κ = 3(Σ|β terms|/|β| + Σ|α terms|/|α|)`,
+/// infinite at `t* = 0` (β = 0). α must not be 0.
+#[cfg(feature = "quadric")]
+fn quadric_vertex(ray: &Ray, q: &Quadric, eq: &crate::exact::Quadratic) -> (f64, f64, f64) {
+    let (at, bt, _) = quadric::terms(ray, q);
+    let sum = |x: &[f64]| x.iter().map(|x| x.abs()).sum::<f64>();
+    let (a, b) = (eq.alpha.to_f64(), eq.beta.to_f64());
+    let kappa = if b == 0.0 {
+        f64::INFINITY
+    } else {
+        3.0 * (sum(&bt) / b.abs() + sum(&at) / a.abs())
+    };
+    (-b / (2.0 * a), kappa, 0.5 / a.abs())
 }
 
 /// The plane root's condition number, as the plane module documents it:
@@ -512,6 +678,19 @@ fn sphere_band(ray: &Ray, s: &Sphere) -> f64 {
     let f = ray.origin.as_dvec3() - s.center.as_dvec3();
     let (a, r) = (d.length_squared(), f64::from(s.radius).abs());
     a * a * (r * r + r * f.length()) * 2f64.powi(-44)
+}
+
+/// The plane's unit band on the offset `(a − o)·n`: `2⁻⁴⁴ Σ(|aᵢ| +
+/// |oᵢ|)|nᵢ|`, since `aᵢ − oᵢ` rounds relative to its operands.
+#[cfg(feature = "plane")]
+fn offset_band(ray: &Ray, p: &Plane) -> f64 {
+    let s: f64 = (0..3)
+        .map(|i| {
+            (f64::from(p.point[i]).abs() + f64::from(ray.origin[i]).abs())
+                * f64::from(p.normal[i]).abs()
+        })
+        .sum();
+    s * 2f64.powi(-44)
 }
 
 /// The plane's unit band on the margin `d·n`: `2⁻⁴⁴ Σ|dᵢnᵢ|`.
@@ -733,21 +912,32 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
     if nan {
         return Some(Fault::NanRoot);
     }
+    if let Answer::Roots(g) = got
+        && g.windows(2).any(|w| !(w[0] <= w[1]))
+    {
+        return Some(Fault::NotAscending);
+    }
     let fault = match (&expected, got) {
         (Answer::Everywhere, Answer::Everywhere) => return None,
         // A ray lying on the surface has no nearest hit to compare.
         (Answer::Everywhere, _) if d.semantics == Semantics::NearestPositive => return None,
+        (Answer::Everywhere, Answer::Nearest(_) | Answer::Roots(_)) if e.everywhere_in_band(d) => {
+            return None;
+        }
+        (Answer::Everywhere, Answer::Nearest(_) | Answer::Roots(_)) => Fault::NotEverywhere,
+        (_, Answer::Everywhere) if e.everywhere_in_band(d) => return None,
+        (_, Answer::Everywhere) => Fault::Class,
         (Answer::Roots(x), Answer::Roots(g)) => {
             let one_or_two = x.len().min(g.len()) == 1 && x.len().max(g.len()) == 2;
             if !seen.is_empty() || x.is_empty() && g.is_empty() {
-                if g.windows(2).any(|w| !(w[0] <= w[1])) {
-                    Fault::NotAscending
-                } else {
-                    Fault::Root(*seen.iter().find(|r| !r.ok())?)
-                }
+                Fault::Root(*seen.iter().find(|r| !r.ok())?)
             } else if in_band {
-                // Near a double root (infinite κ) any nearby value passes.
-                return None;
+                // Near a double root the class may differ, but each root
+                // must be as near the double root as the band reaches.
+                match g.iter().find(|&&t| !e.near_vertex(d, t)) {
+                    None => return None,
+                    Some(&t) => Fault::Stray(t),
+                }
             } else if alpha_small && one_or_two && g.len() == 1 {
                 // The kernel took a tiny α for 0: its one root must be one
                 // of the exact two; what a band excuses is the count, not
@@ -782,14 +972,15 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
                 }
                 Fault::Root(r)
             }
-            // A root at t ≈ 0, or a class in the band, may go either way.
-            (Some(x), None) | (None, Some(x)) if in_band || x.abs() <= 1e-30 => return None,
+            // A root at t ≈ 0, or a class in the band, may go either way
+            // (a hit near the double root).
+            (Some(x), None) | (None, Some(x)) if x.abs() <= 1e-30 => return None,
+            (Some(_), None) if in_band => return None,
+            (None, Some(g)) if in_band && e.near_vertex(d, *g) => return None,
             (Some(_), None) => Fault::Missed,
             (None, Some(g)) if *g <= 0.0 => Fault::NotPositive,
             (None, Some(_)) => Fault::Spurious,
         },
-        _ if in_band => return None,
-        (Answer::Everywhere, Answer::Nearest(_) | Answer::Roots(_)) => Fault::NotEverywhere,
         _ => Fault::Semantics(d.semantics),
     };
     Some(fault)
@@ -1019,7 +1210,8 @@ pub(crate) mod tests {
         assert!(!e.in_band(&Declared::correctly_rounded(Semantics::WholeLine)));
     }
 
-    /// A zero margin is in any band but none; on small integers in none.
+    /// A zero margin is in any band but none where its terms can err; on
+    /// small integers, or from terms that are all 0, in none.
     #[cfg(feature = "plane")]
     #[test]
     fn a_zero_margin_is_in_every_band_but_none() {
@@ -1029,9 +1221,17 @@ pub(crate) mod tests {
         let f32 = Declared::f32(Semantics::WholeLine);
         assert_eq!((on.margin, on.small_integers), (0.0, true));
         assert!(!on.in_band(&f32));
-        assert_eq!((off.margin, off.small_integers), (0.0, false));
-        assert!(off.in_band(&f32));
-        assert!(!off.in_band(&Declared::correctly_rounded(Semantics::WholeLine)));
+        assert_eq!(
+            (off.margin, off.band, off.small_integers),
+            (0.0, 0.0, false)
+        );
+        assert!(!off.in_band(&f32));
+        // d·n = 0.5 − 0.5: terms that can err.
+        let slant = Plane::new(Vec3::ZERO, Vec3::new(1.0, -1.0, 0.0));
+        let (_, cancel) = plane(&Ray::new(Vec3::splat(0.5), Vec3::splat(0.5)), &slant).unwrap();
+        assert_eq!((cancel.margin, cancel.band), (0.0, 2f64.powi(-44)));
+        assert!(cancel.in_band(&f32));
+        assert!(!cancel.in_band(&Declared::correctly_rounded(Semantics::WholeLine)));
     }
 
     /// A plane's band is scaled by the declared factor, not offset by it:

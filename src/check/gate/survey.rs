@@ -273,6 +273,8 @@ mod tests {
             band: 0.0,
             alpha: None,
             small_integers: true,
+            vertex: None,
+            lies_on: Vec::new(),
         };
         assert!(matches!(truth(Some(&e)), Truth::Nearest(Some(2.0))));
     }
