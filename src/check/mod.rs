@@ -368,7 +368,11 @@ pub fn check_plane(ray: &Ray, p: &Plane, got: PlaneHit) -> Result<CaseReport, Vi
         r.status = Status::NonFinite;
         return Ok(r);
     };
-    judged(report("plane", exact.class().as_str(), got.class().as_str()), &e, got)
+    judged(
+        report("plane", exact.class().as_str(), got.class().as_str()),
+        &e,
+        got,
+    )
 }
 
 /// Judges an answer to a ray–sphere case: it must be the exact answer, bit
@@ -407,7 +411,11 @@ fn check_sphere_against(
     exact: SphereHit,
 ) -> Result<CaseReport, Violation> {
     let e = rules::sphere_given(ray, s, q, exact);
-    judged(report("sphere", exact.class().as_str(), got.class().as_str()), &e, got)
+    judged(
+        report("sphere", exact.class().as_str(), got.class().as_str()),
+        &e,
+        got,
+    )
 }
 
 /// Judges an answer to a ray–quadric case: it must be the exact answer, bit
@@ -444,7 +452,11 @@ fn check_quadric_against(
     exact: QuadricHit,
 ) -> Result<CaseReport, Violation> {
     let e = rules::quadric_given(ray, q, eq, exact);
-    judged(report("quadric", exact.class().as_str(), got.class().as_str()), &e, got)
+    judged(
+        report("quadric", exact.class().as_str(), got.class().as_str()),
+        &e,
+        got,
+    )
 }
 
 /// Judges an answer (`got`, the ray for `pixel` or a construction error) to

@@ -4,7 +4,7 @@
 
 use super::*;
 use crate::check::rules::tests::tiny_alpha;
-use crate::sphere;
+use crate::{plane, quadric, sphere};
 use std::cell::RefCell;
 
 #[test]
@@ -32,7 +32,10 @@ fn a_kernel_that_reads_the_next_lane_is_inconsistent() {
             })
         }
     }
-    let (ray, s) = (Ray::new(Vec3::new(0.0, 0.0, -3.0), Vec3::Z), Sphere::new(Vec3::ZERO, 1.0));
+    let (ray, s) = (
+        Ray::new(Vec3::new(0.0, 0.0, -3.0), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
     let answer = Lanes(Shifted).intersect(&ray, &s);
     assert!(matches!(answer, Answer::Inconsistent(_)), "{answer}");
     let right = |r: &[Ray; 4], s: &[Sphere; 4]| -> [Answer; 4] {
@@ -44,7 +47,10 @@ fn a_kernel_that_reads_the_next_lane_is_inconsistent() {
             (self.0)(r, s)
         }
     }
-    assert_eq!(Lanes(Right(right)).intersect(&ray, &s).to_string(), "roots [2.0, 4.0]");
+    assert_eq!(
+        Lanes(Right(right)).intersect(&ray, &s).to_string(),
+        "roots [2.0, 4.0]"
+    );
 }
 
 /// A kernel that never hits fails whole families: the report counts every
