@@ -330,8 +330,17 @@ fn ftz_and_daz_change_no_answer() {
         .families
         .iter()
         .flat_map(|f| f.cases.iter().cloned())
-        .filter(|c| !matches!(c, Case::Camera(..)))
         .collect();
+    // Cameras whose rays have subnormal components, from a subnormal `dir`
+    // component (DAZ) and from a basis term (FTZ).
+    for dir in [
+        Vec3::new(1e-40, 0.0, -1.0),
+        Vec3::new(0.0, -3e-39, -1.0),
+        Vec3::new(1e-38, 1e-38, -1.0),
+    ] {
+        let p = rayoracle::camera::CameraParams::new(Vec3::ZERO, dir, Vec3::Y, 1.0, [3, 3]);
+        cases.extend([[1, 1], [0, 0], [2, 1]].map(|px| Case::Camera(p, px)));
+    }
     cases.push(Case::Plane(
         Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1e10)),
         plane::Plane::new(Vec3::new(0.0, 0.0, 1e-30), Vec3::Z),
@@ -356,7 +365,17 @@ fn ftz_and_daz_change_no_answer() {
             Case::Plane(r, p) => roots(&plane::reference::intersect(r, p)),
             Case::Sphere(r, s) => roots(&sphere::reference::intersect(r, s)),
             Case::Quadric(r, q) => roots(&quadric::reference::intersect(r, q)),
-            Case::Camera(..) => vec![],
+            Case::Camera(p, [x, y]) => match p.build() {
+                // The scalar ray and the same pixel in each lane of a packet.
+                Ok(cam) => {
+                    let mut v: Vec<u32> = cam.ray(*x, *y).dir.to_array().map(f32::to_bits).to_vec();
+                    for r in cam.ray4([[*x, *y]; 4]).to_rays() {
+                        v.extend(r.dir.to_array().map(f32::to_bits));
+                    }
+                    v
+                }
+                Err(e) => vec![e.to_string().len() as u32],
+            },
         }
     };
     let plain: Vec<Vec<u32>> = cases.iter().map(bits).collect();

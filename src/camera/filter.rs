@@ -25,7 +25,7 @@
 //! [`super::exact`].
 
 use crate::num::Real;
-use crate::num::certify::{SLACK, U, certify};
+use crate::num::certify::{SLACK, U, certify, flush_prone, needs_probe, subnormals_work};
 
 /// The relative error of the stored basis per unit, `2⁻⁴⁴`: the f64
 /// basis of [`super::basis`] (which refuses a component its bound does not
@@ -58,6 +58,24 @@ pub fn component<L: Real>(d: L, bx: L, by: L, nx: L, ny: L, shrink: f64) -> (L, 
     let exact = ts.eq(L::splat(0.0));
     let ok = exact | certify(r, L::splat(0.0), (d.abs() + ts) * L::splat(k));
     (L::select(exact, d, r), ok)
+}
+
+/// Whether the floating-point environment may have changed a pixel's
+/// filtered direction: with subnormals flushed ([`subnormals_work`]), a
+/// subnormal `dir` component (which denormals-are-zero reads as 0) or a
+/// result that is 0 or subnormal (which flush-to-zero makes of a subnormal
+/// one). The filter itself never underflows in f64 (above), so only these
+/// two places meet the environment; such a pixel goes to the oracle whole.
+///
+/// ```
+/// use rayoracle::camera::filter::flushed;
+/// use rayoracle::num::certify::subnormals_work;
+/// assert!(!flushed(&[0.5, 1.0, -1.0], &[0.25, 0.5, -1.0]));
+/// assert_eq!(flushed(&[0.5, 1.0, -1.0], &[0.0, 0.5, -1.0]), !subnormals_work());
+/// ```
+#[inline(always)]
+pub fn flushed(dir: &[f32; 3], out: &[f32; 3]) -> bool {
+    (needs_probe(dir, &[]) || flush_prone(out)) && !subnormals_work()
 }
 
 /// `2p + 1 − res`, exact in f64.

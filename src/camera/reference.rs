@@ -201,6 +201,9 @@ impl Camera {
             out[i] = r as f32;
             undecided[i] = !ok;
         }
+        if filter::flushed(&d, &out) {
+            undecided = [true; 3];
+        }
         if undecided.contains(&true) {
             self.escalate(&mut out, undecided, px, py);
         }

@@ -41,6 +41,9 @@ impl Camera {
             }
         }
         for (lane, [px, py]) in pixels.into_iter().enumerate() {
+            if filter::flushed(&d, &[0, 1, 2].map(|i| out[i][lane])) {
+                undecided[lane] = [true; 3];
+            }
             if undecided[lane].contains(&true) {
                 let mut dir = [0, 1, 2].map(|i| out[i][lane]);
                 self.escalate(&mut dir, undecided[lane], px, py);
