@@ -3,9 +3,19 @@
 //! oracle (correct rounding is unique, so the two agree by construction).
 
 use super::{Camera, filter};
-use crate::num::real::F64x4;
+use crate::num::Real;
+use crate::num::certify::{needs_probe, subnormals_work};
+use crate::num::real::{F64x4, Real4};
 use crate::ray4::Ray4;
 use wide::f32x4;
+
+/// Whether subnormals are flushed, out of line: the kernels ask only on the
+/// rare packets where it matters.
+#[cold]
+#[inline(never)]
+fn flushing() -> bool {
+    !subnormals_work()
+}
 
 impl Camera {
     /// The rays of four arbitrary pixels `[[X, Y]; 4]`.
@@ -25,6 +35,8 @@ impl Camera {
         let d = self.params.dir.to_array();
         let mut out = [[0.0f32; 4]; 3];
         let mut undecided = [[false; 3]; 4];
+        let tiny = <F64x4 as Real>::splat(f32::MIN_POSITIVE as f64);
+        let mut normal = <F64x4 as Real>::splat(1.0).gt(tiny);
         for i in 0..3 {
             let s = |x: f64| <F64x4 as crate::num::Real>::splat(x);
             let (r, ok) = filter::component(
@@ -36,14 +48,18 @@ impl Camera {
                 1.0,
             );
             out[i] = r.to_f32();
+            normal = normal & r.abs().gt(tiny);
             for (lane, ok) in ok.lanes().into_iter().enumerate() {
                 undecided[lane][i] = !ok;
             }
         }
+        // Per packet, as [`filter::flushed`] per pixel: with subnormals
+        // flushed, every lane goes to the oracle if any component is below
+        // the least normal f32 or `dir` has a subnormal component (rare).
+        if (!F64x4::all(normal) || needs_probe(&d, &[])) && flushing() {
+            undecided = [[true; 3]; 4];
+        }
         for (lane, [px, py]) in pixels.into_iter().enumerate() {
-            if filter::flushed(&d, &[0, 1, 2].map(|i| out[i][lane])) {
-                undecided[lane] = [true; 3];
-            }
             if undecided[lane].contains(&true) {
                 let mut dir = [0, 1, 2].map(|i| out[i][lane]);
                 self.escalate(&mut dir, undecided[lane], px, py);
