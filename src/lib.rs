@@ -28,7 +28,7 @@
 //!   what it promises, and every case family (hand-written, stiff,
 //!   random) is judged against the exact oracle; failures come back
 //!   shrunk, as `eval` lines.
-//! * **Fuzz** with `cargo fuzz` ([`fuzz`], [`check::gate::fuzz`]): byte
+//! * **Fuzz** with `cargo fuzz` ([`fuzz`], [`fuzz::gate`]): byte
 //!   decoders and checks for fuzz targets, rayoracle's own and yours.
 //! * **Review rendered frames** ([`render`], [`scene`]): depth, normal and
 //!   id channels of a scene, the same bytes from either path, for

@@ -593,6 +593,8 @@ pub const TARGETS: &[(&str, Check)] = &[
 ];
 
 #[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
+pub mod gate;
+#[cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
 pub mod scene;
 #[cfg(test)]
 mod wrong_kernels;

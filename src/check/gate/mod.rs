@@ -36,7 +36,6 @@
 //! unrelated cases. If the lanes disagree (swapped lanes, a garbage lane)
 //! the case fails with [`Answer::Inconsistent`].
 
-pub mod fuzz;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 pub mod survey;
@@ -435,7 +434,7 @@ impl Gate {
     }
 
     /// One sphere case, judged: for a user's own property tests and
-    /// fuzzers (`strategy`, with the `proptest` feature, and [`fuzz`]). The failure is not shrunk.
+    /// fuzzers (`strategy`, with the `proptest` feature, and [`crate::fuzz::gate`]). The failure is not shrunk.
     ///
     /// ```
     /// use rayoracle::check::gate::{Answer, Declared, Gate, Semantics};

@@ -5,7 +5,6 @@
 use super::*;
 use crate::check::rules::tests::tiny_alpha;
 use crate::{plane, quadric, sphere};
-use std::cell::RefCell;
 
 #[test]
 fn answers_print_by_class() {
@@ -346,57 +345,6 @@ fn shrink_gives_up_after_400_tries() {
     };
     shrink(&case, &every_50th);
     assert_eq!(calls.get(), 401);
-}
-
-/// The fuzz helpers decode the case the way rayoracle's own targets encode
-/// it, hand it to the kernel, and panic when the gate fails the answer.
-#[test]
-fn the_fuzz_helpers_judge_the_decoded_case() {
-    use crate::fuzz::encode_f32;
-    let mut bytes = Vec::new();
-    for x in [0.0, 0.0, -5.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0] {
-        encode_f32(x, &mut bytes);
-    }
-    let seen = RefCell::new(None);
-    let right = |r: &Ray, s: &Sphere| {
-        *seen.borrow_mut() = Some(eval_line(&Case::Sphere(*r, *s), "f"));
-        Answer::Roots(vec![4.0, 6.0])
-    };
-    super::fuzz::sphere(&bytes, &whole_line(), &right);
-    assert_eq!(
-        seen.into_inner().unwrap(),
-        r#"{"kind":"sphere","family":"f","origin":[0.0,0.0,-5.0],"dir":[0.0,0.0,1.0],"center":[0.0,0.0,0.0],"radius":1.0}"#
-    );
-    let wrong = |_: &Ray, _: &Sphere| Answer::Roots(vec![4.0, 7.0]);
-    assert!(
-        std::panic::catch_unwind(|| super::fuzz::sphere(&bytes, &whole_line(), &wrong)).is_err()
-    );
-
-    // A plane: origin (0, 1, 0) down onto y = 0 at t = 1.
-    let mut bytes = Vec::new();
-    for x in [0.0, 1.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0] {
-        encode_f32(x, &mut bytes);
-    }
-    let right = |_: &Ray, _: &Plane| Answer::Roots(vec![1.0]);
-    super::fuzz::plane(&bytes, &whole_line(), &right);
-    let wrong = |_: &Ray, _: &Plane| Answer::Roots(vec![2.0]);
-    assert!(
-        std::panic::catch_unwind(|| super::fuzz::plane(&bytes, &whole_line(), &wrong)).is_err()
-    );
-
-    // A quadric: the unit sphere from z = −5 along z.
-    let mut bytes = Vec::new();
-    for x in [
-        0.0, 0.0, -5.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0,
-    ] {
-        encode_f32(x, &mut bytes);
-    }
-    let right = |_: &Ray, _: &Quadric| Answer::Roots(vec![4.0, 6.0]);
-    super::fuzz::quadric(&bytes, &whole_line(), &right);
-    let wrong = |_: &Ray, _: &Quadric| Answer::Roots(vec![4.0]);
-    assert!(
-        std::panic::catch_unwind(|| super::fuzz::quadric(&bytes, &whole_line(), &wrong)).is_err()
-    );
 }
 
 /// The random strategies draw components of both signs.
