@@ -30,7 +30,6 @@ pub mod stages;
 pub mod textbook;
 pub mod x4;
 
-use crate::Ray;
 use crate::hit::{Class, Intersection, Roots};
 use glam::Vec3;
 
@@ -97,44 +96,5 @@ impl Intersection for PlaneHit {
     }
     fn is_everywhere(&self) -> bool {
         matches!(self, PlaneHit::InPlane)
-    }
-}
-
-impl crate::primitive::Primitive for Plane {
-    const KIND: crate::case::Kind = crate::case::Kind::Plane;
-    const INPUTS: usize = 6;
-    type Hit = PlaneHit;
-    type Packet = x4::Plane4;
-    type Hit4 = x4::PlaneHit4;
-
-    crate::primitive::kernels!();
-
-    fn pack(p: [Plane; 4]) -> x4::Plane4 {
-        x4::Plane4::from_planes(p)
-    }
-    /// A hit, a NaN ray and a ray in the plane.
-    fn decoys() -> [(Ray, Plane); 3] {
-        let ground = Plane::new(Vec3::ZERO, Vec3::Y);
-        [
-            (Ray::new(Vec3::Y, -Vec3::Y), ground),
-            (Ray::new(Vec3::splat(f32::NAN), Vec3::X), ground),
-            (Ray::new(Vec3::ZERO, Vec3::X), ground),
-        ]
-    }
-    fn inputs(&self) -> Vec<f32> {
-        [self.point.to_array(), self.normal.to_array()].concat()
-    }
-    fn from_inputs(v: &[f32]) -> Plane {
-        let [a, b, c, d, e, f] = crate::primitive::padded(v);
-        Plane::new(Vec3::new(a, b, c), Vec3::new(d, e, f))
-    }
-    fn case(ray: Ray, p: Plane) -> crate::case::Case {
-        crate::case::Case::Plane(ray, p)
-    }
-    fn of_case(case: &crate::case::Case) -> Option<(Ray, Plane)> {
-        match case {
-            crate::case::Case::Plane(r, p) => Some((*r, *p)),
-            _ => None,
-        }
     }
 }

@@ -54,7 +54,6 @@ use crate::Ray;
 use crate::hit::{Class, Intersection, Roots};
 #[cfg(feature = "sphere")]
 use crate::sphere::Sphere;
-use glam::Vec3;
 
 /// A quadric surface by its ten coefficients `[A, B, C, D, E, F, G, H, I,
 /// J]` of `Ax² + By² + Cz² + Dxy + Exz + Fyz + Gx + Hy + Iz + J = 0`.
@@ -274,44 +273,6 @@ pub fn condition(ray: &Ray, q: &Quadric) -> [f64; 2] {
         out[1] = out[0];
     }
     out
-}
-
-impl crate::primitive::Primitive for Quadric {
-    const KIND: crate::case::Kind = crate::case::Kind::Quadric;
-    const INPUTS: usize = 10;
-    type Hit = QuadricHit;
-    type Packet = x4::Quadric4;
-    type Hit4 = x4::QuadricHit4;
-
-    crate::primitive::kernels!();
-
-    fn pack(q: [Quadric; 4]) -> x4::Quadric4 {
-        x4::Quadric4::from_quadrics(q)
-    }
-    /// A two-hit, a NaN ray and a line on the cylinder.
-    fn decoys() -> [(Ray, Quadric); 3] {
-        let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
-        [
-            (Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), cyl),
-            (Ray::new(Vec3::splat(f32::NAN), Vec3::X), cyl),
-            (Ray::new(Vec3::new(1.0, 0.0, 0.0), Vec3::Z), cyl),
-        ]
-    }
-    fn inputs(&self) -> Vec<f32> {
-        self.coeffs.to_vec()
-    }
-    fn from_inputs(v: &[f32]) -> Quadric {
-        Quadric::new(crate::primitive::padded(v))
-    }
-    fn case(ray: Ray, q: Quadric) -> crate::case::Case {
-        crate::case::Case::Quadric(ray, q)
-    }
-    fn of_case(case: &crate::case::Case) -> Option<(Ray, Quadric)> {
-        match case {
-            crate::case::Case::Quadric(r, q) => Some((*r, *q)),
-            _ => None,
-        }
-    }
 }
 
 #[cfg(test)]

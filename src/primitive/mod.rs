@@ -122,7 +122,12 @@ macro_rules! kernels {
     };
 }
 #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
-pub(crate) use kernels;
+#[cfg(feature = "plane")]
+mod plane;
+#[cfg(feature = "quadric")]
+mod quadric;
+#[cfg(feature = "sphere")]
+mod sphere;
 
 /// `case` in lane `lane` of a packet and `decoys` in the other lanes, in
 /// order.
