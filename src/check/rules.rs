@@ -107,10 +107,12 @@ pub const CAMERA_ULPS: f64 = 4.0;
 /// A kernel's answer for one ray and primitive.
 ///
 /// ```
+/// # #[cfg(feature = "sphere")] {
 /// use rayoracle::check::rules::Answer;
 /// use rayoracle::sphere::SphereHit;
 /// assert_eq!(Answer::nearest(SphereHit::Two(-1.0, 3.0), 0.0), Answer::Nearest(Some(3.0)));
 /// assert_eq!(Answer::roots(SphereHit::Tangent(2.0)), Answer::Roots(vec![2.0]));
+/// # }
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub enum Answer {
