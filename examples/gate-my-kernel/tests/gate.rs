@@ -1,9 +1,8 @@
 //! Gating my kernels with rayoracle: a few lines per kernel.
 
 use gate_my_kernel::{Rays4, sphere_nearest, sphere_nearest4};
-use rayoracle::check::gate::{
-    Answer, Declared, Gate, Lanes, Semantics, SphereKernel4, fuzz, strategy,
-};
+use rayoracle::check::gate::{Answer, Declared, Gate, Lanes, Semantics, SphereKernel4, strategy};
+use rayoracle::fuzz::gate as fuzz;
 use rayoracle::{Ray, sphere::Sphere};
 
 /// What my kernels promise: the nearest t > 0, careful f32 accuracy.
