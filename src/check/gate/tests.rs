@@ -2,6 +2,7 @@
 //! lane placements, the decoys, what a report keeps, and the random
 //! families. (The gate's power against wrong kernels is `tests/known_wrong.rs`.)
 
+use super::families::kind_seed;
 use super::*;
 use crate::check::rules::tests::tiny_alpha;
 use crate::{plane, quadric, sphere};
