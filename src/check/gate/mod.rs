@@ -37,6 +37,7 @@
 //! the case fails with [`Answer::Inconsistent`].
 
 mod families;
+pub mod protocol;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 pub mod survey;
@@ -262,6 +263,60 @@ impl Report {
                 shown.join("\n")
             );
         }
+    }
+}
+
+impl Report {
+    /// The report as JSON: `cases`, `passed`, `families` (each `family`,
+    /// `cases`, `failures`), `failures` (each `family`, `eval_line`,
+    /// `expected`, `got`, `why`) and `stopped` (null or why).
+    ///
+    /// ```
+    /// use rayoracle::check::gate::Report;
+    /// let j = Report::default().to_json();
+    /// assert_eq!(j["passed"], true);
+    /// assert_eq!(j["stopped"], serde_json::Value::Null);
+    /// ```
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::json!({
+            "cases": self.cases,
+            "passed": self.passed(),
+            "families": self.families.iter().map(|(family, cases, failures)| serde_json::json!({
+                "family": family, "cases": cases, "failures": failures,
+            })).collect::<Vec<_>>(),
+            "failures": self.failures.iter().map(|f| serde_json::json!({
+                "family": f.family, "eval_line": f.eval_line, "expected": f.expected,
+                "got": f.got, "why": f.why,
+            })).collect::<Vec<_>>(),
+            "stopped": self.stopped,
+        })
+    }
+}
+
+/// The per-family counts, the failures kept, and a last line that says
+/// `PASS` or `FAIL`.
+impl fmt::Display for Report {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let width = self.families.iter().map(|x| x.0.len()).max().unwrap_or(6);
+        writeln!(f, "{:width$}  {:>6}  {:>8}", "family", "cases", "failures")?;
+        for (family, cases, failures) in &self.families {
+            writeln!(f, "{family:width$}  {cases:>6}  {failures:>8}")?;
+        }
+        for failure in &self.failures {
+            writeln!(f, "\n{failure}")?;
+        }
+        if let Some(why) = &self.stopped {
+            writeln!(f, "\nstopped: {why}")?;
+        }
+        let failing = self.failing_families().len();
+        let failed: usize = self.families.iter().map(|x| x.2).sum();
+        write!(
+            f,
+            "\n{}: {} cases in {} families, {failed} failing in {failing} families",
+            if self.passed() { "PASS" } else { "FAIL" },
+            self.cases,
+            self.families.len()
+        )
     }
 }
 
@@ -950,40 +1005,12 @@ pub fn shrink(case: &Case, fails: &mut dyn FnMut(&Case) -> bool) -> Case {
     }
 }
 
-/// The case as an `eval` line.
+/// The case as an `eval` line (a non-finite number as a string).
 fn eval_line(c: &Case, family: &str) -> String {
-    let v = |x: Vec3| format!("[{:?},{:?},{:?}]", x.x, x.y, x.z);
-    match c {
-        Case::Plane(r, p) => format!(
-            r#"{{"kind":"plane","family":"{family}","origin":{},"dir":{},"point":{},"normal":{}}}"#,
-            v(r.origin),
-            v(r.dir),
-            v(p.point),
-            v(p.normal)
-        ),
-        Case::Sphere(r, s) => format!(
-            r#"{{"kind":"sphere","family":"{family}","origin":{},"dir":{},"center":{},"radius":{:?}}}"#,
-            v(r.origin),
-            v(r.dir),
-            v(s.center),
-            s.radius
-        ),
-        Case::Quadric(r, q) => format!(
-            r#"{{"kind":"quadric","family":"{family}","origin":{},"dir":{},"coeffs":{:?}}}"#,
-            v(r.origin),
-            v(r.dir),
-            q.coeffs
-        ),
-        Case::Camera(p, px) => format!(
-            r#"{{"kind":"camera","family":"{family}","position":{},"dir":{},"up":{},"angle":{:?},"res":[{},{}],"pixel":[{},{}]}}"#,
-            v(p.position),
-            v(p.dir),
-            v(p.up),
-            p.angle,
-            p.res[0],
-            p.res[1],
-            px[0],
-            px[1]
-        ),
-    }
+    format!(
+        r#"{{"kind":"{}","family":{},{}}}"#,
+        c.kind().as_str(),
+        serde_json::Value::from(family),
+        protocol::fields(c, protocol::short_num)
+    )
 }
