@@ -213,38 +213,16 @@ fn judge_matches_answers_by_id() {
     assert_eq!(answers.code, 0, "{}", answers.stderr);
     let mut lines: Vec<&str> = answers.stdout.lines().collect();
     lines.reverse(); // order does not matter, ids do
-    let good = lines.join("\n");
-    let r = rayoracle(
-        &[
-            "judge",
-            "--kind",
-            "quadric",
-            "--budget",
-            "8",
-            "--semantics",
-            "whole-line",
-            "-",
-        ],
-        &good,
-    );
+    let judge = |text: &str| {
+        let args = "judge --kind quadric --budget 8 --semantics whole-line -";
+        rayoracle(&args.split(' ').collect::<Vec<_>>(), text)
+    };
+    let r = judge(&lines.join("\n"));
     assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
     assert!(verdict(&r).starts_with("PASS: "));
     lines[0] = "garbage";
     lines[1] = r#"{"id": 100000, "t": 1}"#;
-    let bad = lines.join("\n");
-    let r = rayoracle(
-        &[
-            "judge",
-            "--kind",
-            "quadric",
-            "--budget",
-            "8",
-            "--semantics",
-            "whole-line",
-            "-",
-        ],
-        &bad,
-    );
+    let r = judge(&lines.join("\n"));
     assert_eq!(r.code, 1);
     assert!(r.stderr.contains("-:1: not a JSON object"), "{}", r.stderr);
     assert!(
