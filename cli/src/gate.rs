@@ -279,7 +279,15 @@ pub fn gate_command(
         .iter()
         .flat_map(|(f, cases)| cases.iter().map(move |_| f.clone()))
         .collect();
+    kernel.bar = indicatif::ProgressBar::new(kernel.families.len() as u64).with_style(
+        indicatif::ProgressStyle::with_template(
+            "gate [{bar:40}] {pos}/{len} answers, {per_sec}, {eta} left",
+        )
+        .expect("a valid template")
+        .progress_chars("=> "),
+    );
     let report = g.run(&all, &mut kernel);
+    kernel.bar.finish_and_clear();
     kernel.stop();
     finish(&report, sel.kind, json)
 }
@@ -299,6 +307,8 @@ struct Program {
     /// The family of each case of the first batch, by id; later cases are
     /// a failure's shrinking.
     families: Vec<String>,
+    /// Answer lines read, on stderr when it is a terminal.
+    bar: indicatif::ProgressBar,
 }
 
 impl Program {
@@ -332,6 +342,7 @@ impl Program {
             lines_read: 0,
             dead: None,
             families: Vec::new(),
+            bar: indicatif::ProgressBar::hidden(),
         })
     }
 
@@ -398,6 +409,7 @@ impl CaseKernel for Program {
             let why = match self.from_reader.recv_timeout(self.timeout) {
                 Ok(Ok(line)) => {
                     self.lines_read += 1;
+                    self.bar.inc(1);
                     replies.push(match read_answer(&line, case) {
                         Ok(a) if a.id.is_some_and(|x| x != id) => Reply::Failed(format!(
                             "answer line {line_no} has id {}, but answers the case of id {id}",
