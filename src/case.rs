@@ -14,8 +14,9 @@
 //! * A number may also be a string: `"inf"`, `"-inf"`, `"nan"`, or the exact
 //!   bits as `"0x3f800000"`.
 //! * `res` and `pixel` are whole numbers.
-//! * Two optional fields are carried along but do not change the case:
-//!   `"family"` (a string naming the case family) and `"expect"` (any JSON,
+//! * Three optional fields are carried along but do not change the case:
+//!   `"family"` (a string naming the case family), `"id"` (a whole number,
+//!   as `rayoracle cases` numbers its lines) and `"expect"` (any JSON,
 //!   used by the fixture harness).
 //! * Anything else is an error naming the field: a missing or unknown field,
 //!   a wrong type, a wrong length.
@@ -115,6 +116,8 @@ pub struct CaseLine {
     pub case: Case,
     /// The `family` field, if any.
     pub family: Option<String>,
+    /// The `id` field, if any.
+    pub id: Option<u64>,
     /// The `expect` field, if any, as JSON.
     pub expect: Option<serde_json::Value>,
 }
@@ -419,6 +422,13 @@ pub fn parse_line(line: &str) -> Result<CaseLine, CaseError> {
                 .map_err(|_| err("family", format!("expected a string, got {}", show(&raw))))?,
         ),
     };
+    let id = match fields.0.remove("id") {
+        None => None,
+        Some(raw) => Some(
+            serde_json::from_str::<u64>(raw.get())
+                .map_err(|_| err("id", format!("expected a whole number, got {}", show(&raw))))?,
+        ),
+    };
     let expect = match fields.0.remove("expect") {
         None => None,
         Some(raw) => {
@@ -480,6 +490,7 @@ pub fn parse_line(line: &str) -> Result<CaseLine, CaseError> {
     Ok(CaseLine {
         case,
         family,
+        id,
         expect,
     })
 }

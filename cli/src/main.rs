@@ -9,11 +9,17 @@
 //!   `DIR/STEM.CHANNEL.png`. A scene that cannot be loaded is reported with
 //!   its file, line, column and field, and the others are still rendered;
 //!   exit 1 if any scene failed, 2 if an output cannot be written.
+//! * `rayoracle cases --kind KIND`, `rayoracle judge --kind KIND ANSWERS`
+//!   and `rayoracle gate --kind KIND -- PROGRAM`: the gate for kernels in
+//!   any language, over standard streams (`gate.rs`, docs/protocol.md).
+//!   Exit 0 if every case passed, 1 if not, 2 for bad usage or a program
+//!   that cannot start.
 //! * `rayoracle` with no subcommand: `eval` over the compiled-in
 //!   `fixtures/cases/*.jsonl` into `./out/eval.jsonl`, then the built-in
 //!   default scene (`fixtures/scenes/seed.json`) rendered into `./out/`,
 //!   then `report --quick`. Nothing is read from the source tree.
 
+mod gate;
 mod plot;
 
 use clap::{Parser, Subcommand};
@@ -83,6 +89,54 @@ enum Command {
         #[arg(long, value_name = "DIR")]
         stiff: Option<PathBuf>,
     },
+    /// Write the gate's cases as eval input lines, each with its family
+    /// and id, for a kernel in another language.
+    Cases {
+        #[command(flatten)]
+        selection: gate::Selection,
+        #[command(flatten)]
+        declaration: gate::Declaration,
+    },
+    /// Judge answer lines (each with the id of its case, as `cases` wrote
+    /// it) by the gate's rules, and print the gate's report.
+    Judge {
+        #[command(flatten)]
+        selection: gate::Selection,
+        #[command(flatten)]
+        declaration: gate::Declaration,
+        /// The report as one JSON object.
+        #[arg(long)]
+        json: bool,
+        /// The answer lines; `-` reads stdin.
+        answers: PathBuf,
+    },
+    /// Answer case lines on stdin with rayoracle's own reference kernels,
+    /// one answer line each: a peer that speaks the gate's protocol.
+    Answer {
+        /// nearest or whole-line.
+        #[arg(long, value_parser = gate::parse_semantics, default_value = "nearest")]
+        semantics: rayoracle::check::gate::Semantics,
+    },
+    /// Gate a kernel program: case lines to its stdin, one answer line per
+    /// case from its stdout; failures are shrunk by sending new cases.
+    Gate {
+        #[command(flatten)]
+        selection: gate::Selection,
+        #[command(flatten)]
+        declaration: gate::Declaration,
+        /// The report as one JSON object.
+        #[arg(long)]
+        json: bool,
+        /// Seconds to wait for each answer line before stopping the program.
+        #[arg(long, default_value_t = 10.0, value_name = "SECS")]
+        timeout: f64,
+        /// Report failures as found, without shrinking them.
+        #[arg(long)]
+        no_shrink: bool,
+        /// The program and its arguments, after `--`.
+        #[arg(last = true, required = true, value_name = "PROGRAM")]
+        program: Vec<String>,
+    },
 }
 
 /// `--size WxH`.
@@ -133,6 +187,32 @@ fn main() -> ExitCode {
             md,
             stiff,
         }),
+        Some(Command::Cases {
+            selection,
+            declaration,
+        }) => gate::cases_command(&selection, &declaration),
+        Some(Command::Judge {
+            selection,
+            declaration,
+            json,
+            answers,
+        }) => gate::judge_command(&selection, &declaration, &answers, json),
+        Some(Command::Gate {
+            selection,
+            declaration,
+            json,
+            timeout,
+            no_shrink,
+            program,
+        }) => gate::gate_command(
+            &selection,
+            &declaration,
+            &program,
+            timeout,
+            !no_shrink,
+            json,
+        ),
+        Some(Command::Answer { semantics }) => gate::answer_command(semantics),
         None => {
             let out = Path::new("out");
             let eval = default_job(&builtin_cases(), &out.join("eval.jsonl"));

@@ -3,5 +3,6 @@
 
 mod cli;
 mod eval_cli;
+mod gate_cli;
 mod render_cli;
 mod report_cli;

@@ -21,19 +21,19 @@ const QUADRIC: &str =
     r#"{"kind":"quadric","origin":[-5,0,0],"dir":[1,0,0],"coeffs":[1,1,0,0,0,0,0,0,0,-1]}"#;
 const CAMERA: &str = r#"{"kind":"camera","position":[1,2,3],"dir":[0,0,-1],"up":[0,1,0],"angle":1,"res":[3,3],"pixel":[1,1]}"#;
 
-struct Run {
-    code: i32,
-    stdout: String,
-    stderr: String,
+pub(crate) struct Run {
+    pub(crate) code: i32,
+    pub(crate) stdout: String,
+    pub(crate) stderr: String,
 }
 
 impl Run {
-    fn lines(&self) -> Vec<&str> {
+    pub(crate) fn lines(&self) -> Vec<&str> {
         self.stdout.lines().collect()
     }
 }
 
-fn rayoracle(args: &[&str], stdin: &str) -> Run {
+pub(crate) fn rayoracle(args: &[&str], stdin: &str) -> Run {
     let mut child = Command::new(env!("CARGO_BIN_EXE_rayoracle"))
         .args(args)
         .stdin(Stdio::piped())
@@ -65,7 +65,7 @@ fn temp_file(name: &str, lines: &[&str]) -> PathBuf {
     path
 }
 
-fn json(line: &str) -> serde_json::Value {
+pub(crate) fn json(line: &str) -> serde_json::Value {
     serde_json::from_str(line).unwrap_or_else(|e| panic!("not JSON ({e}): {line}"))
 }
 #[test]

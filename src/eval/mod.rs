@@ -2,7 +2,7 @@
 //! every implementation's result and its error against the exact oracle.
 //!
 //! ```text
-//! {"line":N,"kind":K[,"family":F],"results":{"exact":{…},"reference":{…},…}}
+//! {"line":N,"kind":K[,"family":F][,"id":I],"results":{"exact":{…},"reference":{…},…}}
 //! {"line":N,"kind":"camera"[,"family":F],"error":"<field>: …"}   camera cannot be built
 //! {"line":N,"error":"<field>: …"}                                 malformed line
 //! ```
@@ -330,6 +330,8 @@ pub struct Evaluation {
     pub kind: Kind,
     /// The case's `family`, if given.
     pub family: Option<String>,
+    /// The case's `id`, if given.
+    pub id: Option<u64>,
     /// The exact oracle's outcome.
     pub exact: Outcome,
     /// One column per implementation.
@@ -462,6 +464,7 @@ impl LineReport {
                 line: e.line,
                 kind: e.kind.as_str(),
                 family: e.family.as_deref(),
+                id: e.id,
                 results: ResultsJson(e),
             }),
         };
@@ -523,6 +526,7 @@ pub fn evaluate(line_no: usize, line: &str) -> Option<LineReport> {
             line: line_no,
             kind: case.kind(),
             family: parsed.family.clone(),
+            id: parsed.id,
             exact,
             columns,
         })
@@ -588,6 +592,8 @@ struct EvaluationJson<'a> {
     kind: &'a str,
     #[serde(skip_serializing_if = "Option::is_none")]
     family: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    id: Option<u64>,
     results: ResultsJson<'a>,
 }
 
@@ -1005,6 +1011,7 @@ mod tests {
             line: 1,
             kind: Kind::Sphere,
             family: None,
+            id: None,
             exact: Outcome::Hit {
                 class: Class::Tangent,
                 roots: Roots::one(5.0),
@@ -1125,6 +1132,7 @@ mod tests {
             line: 5,
             kind: Kind::Plane,
             family: None,
+            id: None,
             exact: Outcome::Hit {
                 class: Class::Hit,
                 roots: Roots::one(1.0),
@@ -1155,6 +1163,7 @@ mod tests {
             line: 1,
             kind: Kind::Sphere,
             family: None,
+            id: None,
             exact: Outcome::Hit {
                 class: Class::Two,
                 roots: Roots::two(1.0, f32::INFINITY),

@@ -37,6 +37,7 @@
 //! the case fails with [`Answer::Inconsistent`].
 
 mod families;
+pub mod protocol;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 pub mod survey;
@@ -47,7 +48,7 @@ use super::rules::{self, Exact};
 pub use super::rules::{Answer, CAMERA_ULPS, Declared, Semantics};
 use crate::Ray;
 use crate::camera::CameraParams;
-use crate::case::{Case, parse_line};
+use crate::case::{Case, Kind, parse_line};
 use crate::plane::Plane;
 use crate::primitive::{self, Primitive};
 use crate::quadric::Quadric;
@@ -207,6 +208,10 @@ pub struct Report {
     pub families: Vec<(String, usize, usize)>,
     /// Every failure, shrunk (at most 3 a family are kept).
     pub failures: Vec<Failure>,
+    /// Why the run ended before every case was judged (a kernel program
+    /// that exited, hung or answered too few lines), naming the case; the
+    /// cases judged before it stay in the report.
+    pub stopped: Option<String>,
 }
 
 impl Report {
@@ -227,6 +232,16 @@ impl Report {
             .collect()
     }
 
+    /// Whether every case was judged and passed.
+    ///
+    /// ```
+    /// use rayoracle::check::gate::Report;
+    /// assert!(Report::default().passed());
+    /// ```
+    pub fn passed(&self) -> bool {
+        self.failures.is_empty() && self.stopped.is_none()
+    }
+
     /// Panics with every failure if there is one.
     ///
     /// ```should_panic
@@ -236,6 +251,9 @@ impl Report {
     /// Gate::new(Declared::f32(Semantics::NearestPositive)).budget(8).sphere(&never).assert_ok();
     /// ```
     pub fn assert_ok(&self) {
+        if let Some(why) = &self.stopped {
+            panic!("rayoracle gate: the run stopped: {why}");
+        }
         if !self.failures.is_empty() {
             let shown: Vec<String> = self.failures.iter().map(|f| f.to_string()).collect();
             panic!(
@@ -245,6 +263,60 @@ impl Report {
                 shown.join("\n")
             );
         }
+    }
+}
+
+impl Report {
+    /// The report as JSON: `cases`, `passed`, `families` (each `family`,
+    /// `cases`, `failures`), `failures` (each `family`, `eval_line`,
+    /// `expected`, `got`, `why`) and `stopped` (null or why).
+    ///
+    /// ```
+    /// use rayoracle::check::gate::Report;
+    /// let j = Report::default().to_json();
+    /// assert_eq!(j["passed"], true);
+    /// assert_eq!(j["stopped"], serde_json::Value::Null);
+    /// ```
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::json!({
+            "cases": self.cases,
+            "passed": self.passed(),
+            "families": self.families.iter().map(|(family, cases, failures)| serde_json::json!({
+                "family": family, "cases": cases, "failures": failures,
+            })).collect::<Vec<_>>(),
+            "failures": self.failures.iter().map(|f| serde_json::json!({
+                "family": f.family, "eval_line": f.eval_line, "expected": f.expected,
+                "got": f.got, "why": f.why,
+            })).collect::<Vec<_>>(),
+            "stopped": self.stopped,
+        })
+    }
+}
+
+/// The per-family counts, the failures kept, and a last line that says
+/// `PASS` or `FAIL`.
+impl fmt::Display for Report {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let width = self.families.iter().map(|x| x.0.len()).max().unwrap_or(6);
+        writeln!(f, "{:width$}  {:>6}  {:>8}", "family", "cases", "failures")?;
+        for (family, cases, failures) in &self.families {
+            writeln!(f, "{family:width$}  {cases:>6}  {failures:>8}")?;
+        }
+        for failure in &self.failures {
+            writeln!(f, "\n{failure}")?;
+        }
+        if let Some(why) = &self.stopped {
+            writeln!(f, "\nstopped: {why}")?;
+        }
+        let failing = self.failing_families().len();
+        let failed: usize = self.families.iter().map(|x| x.2).sum();
+        write!(
+            f,
+            "\n{}: {} cases in {} families, {failed} failing in {failing} families",
+            if self.passed() { "PASS" } else { "FAIL" },
+            self.cases,
+            self.families.len()
+        )
     }
 }
 
@@ -258,6 +330,8 @@ pub struct Gate {
     pub budget: usize,
     /// The random families' seed.
     pub seed: u64,
+    /// Whether failing cases are shrunk (by asking the kernel again).
+    pub shrink: bool,
 }
 
 /// A case to judge: the family and the inputs.
@@ -275,6 +349,7 @@ impl Gate {
             declared,
             budget: 256,
             seed: 0x7261_796f,
+            shrink: true,
         }
     }
 
@@ -290,10 +365,13 @@ impl Gate {
 
     /// Runs every sphere family.
     pub fn sphere(&self, k: &impl SphereKernel) -> Report {
-        self.run("sphere", |c| match c {
-            Case::Sphere(r, s) => Some(judge_sphere(&self.declared, r, s, k.intersect(r, s))),
-            _ => None,
-        })
+        self.run_kind(
+            Kind::Sphere,
+            &mut Each(|c: &Case| match c {
+                Case::Sphere(r, s) => Reply::Answer(k.intersect(r, s)),
+                _ => Reply::Failed("not a sphere case".into()),
+            }),
+        )
     }
 
     /// Runs every plane family.
@@ -305,10 +383,13 @@ impl Gate {
     /// Gate::new(Declared::faithful(Semantics::WholeLine)).budget(32).plane(&k).assert_ok();
     /// ```
     pub fn plane(&self, k: &impl PlaneKernel) -> Report {
-        self.run("plane", |c| match c {
-            Case::Plane(r, p) => Some(judge_plane(&self.declared, r, p, k.intersect(r, p))),
-            _ => None,
-        })
+        self.run_kind(
+            Kind::Plane,
+            &mut Each(|c: &Case| match c {
+                Case::Plane(r, p) => Reply::Answer(k.intersect(r, p)),
+                _ => Reply::Failed("not a plane case".into()),
+            }),
+        )
     }
 
     /// Runs every quadric family.
@@ -322,10 +403,13 @@ impl Gate {
     /// assert!(report.failing_families().contains(&"quadric/alpha-near-zero-paraboloid"));
     /// ```
     pub fn quadric(&self, k: &impl QuadricKernel) -> Report {
-        self.run("quadric", |c| match c {
-            Case::Quadric(r, q) => Some(judge_quadric(&self.declared, r, q, k.intersect(r, q))),
-            _ => None,
-        })
+        self.run_kind(
+            Kind::Quadric,
+            &mut Each(|c: &Case| match c {
+                Case::Quadric(r, q) => Reply::Answer(k.intersect(r, q)),
+                _ => Reply::Failed("not a quadric case".into()),
+            }),
+        )
     }
 
     /// Runs every camera family.
@@ -337,10 +421,13 @@ impl Gate {
     /// Gate::new(Declared::f32(Semantics::WholeLine)).budget(32).camera(&k).assert_ok();
     /// ```
     pub fn camera(&self, k: &impl CameraKernel) -> Report {
-        self.run("camera", |c| match c {
-            Case::Camera(p, px) => Some(judge_camera(&self.declared, p, *px, k.ray(p, *px))),
-            _ => None,
-        })
+        self.run_kind(
+            Kind::Camera,
+            &mut Each(|c: &Case| match c {
+                Case::Camera(p, px) => Reply::Camera(k.ray(p, *px)),
+                _ => Reply::Failed("not a camera case".into()),
+            }),
+        )
     }
 
     /// The cases the gate runs for a kind (`"plane"`, `"sphere"`,
@@ -379,60 +466,180 @@ impl Gate {
         (by_family, errors)
     }
 
-    fn run(&self, kind: &str, judge: impl Fn(&Case) -> Option<Verdict>) -> Report {
-        let mut report = Report::default();
-        let judge = |c: &Case| guarded(|| judge(c));
-        let (families, errors) = self.load(kind);
+    /// Runs every family of a kind through `kernel`, with the fixture
+    /// lines that could not be loaded as failures.
+    fn run_kind(&self, kind: Kind, kernel: &mut dyn CaseKernel) -> Report {
+        let (families, errors) = self.load(kind.as_str());
+        let mut report = self.run(&families, kernel);
         for e in errors {
-            report.failures.push(Failure {
-                family: "fixtures".into(),
-                eval_line: String::new(),
-                expected: "a loadable case".into(),
-                got: "an error".into(),
-                why: e,
-            });
-            report.families.push(("fixtures".into(), 0, 1));
+            report.failures.insert(
+                0,
+                Failure {
+                    family: "fixtures".into(),
+                    eval_line: String::new(),
+                    expected: "a loadable case".into(),
+                    got: "an error".into(),
+                    why: e,
+                },
+            );
+            report.families.insert(0, ("fixtures".into(), 0, 1));
         }
+        report
+    }
+
+    /// Runs any families of cases through a kernel: every case is asked in
+    /// one batch ([`CaseKernel::answer`]), judged by the declaration, and
+    /// the first three failures of each family are shrunk, by asking the
+    /// kernel one case at a time, unless [`Gate::shrink`] is off. The
+    /// families keep their names, so custom families report as the built-in
+    /// ones do.
+    ///
+    /// ```
+    /// use rayoracle::check::gate::{Answer, Declared, Each, Gate, Reply, Semantics};
+    /// use rayoracle::{Ray, case::Case, sphere::Sphere};
+    /// use glam::Vec3;
+    /// let mine = vec![("mine/behind".to_string(), vec![Case::Sphere(
+    ///     Ray::new(Vec3::new(0.0, 0.0, 5.0), Vec3::Z), Sphere::new(Vec3::ZERO, 1.0))])];
+    /// // A kernel that takes the line's roots as hits, behind the origin too.
+    /// let mut k = Each(|_: &Case| Reply::Answer(Answer::Nearest(Some(-6.0))));
+    /// let report = Gate::new(Declared::f32(Semantics::NearestPositive)).run(&mine, &mut k);
+    /// assert_eq!(report.failing_families(), ["mine/behind"]);
+    /// ```
+    pub fn run(&self, families: &[(String, Vec<Case>)], kernel: &mut dyn CaseKernel) -> Report {
+        let all: Vec<Case> = families.iter().flat_map(|f| f.1.iter().cloned()).collect();
+        let mut replies = Vec::with_capacity(all.len());
+        let mut report = Report::default();
+        if let Err(e) = kernel.answer(&all, &mut replies) {
+            replies.truncate(all.len());
+            let at = replies.len();
+            let family = families
+                .iter()
+                .scan(0, |n, f| {
+                    *n += f.1.len();
+                    Some((*n, &f.0))
+                })
+                .find(|(n, _)| *n > at)
+                .map_or("", |f| f.1.as_str());
+            report.stopped = Some(match all.get(at) {
+                Some(c) => format!(
+                    "{e}; {at} of {} cases were answered; the next case: {}",
+                    all.len(),
+                    eval_line(c, family)
+                ),
+                None => e,
+            });
+        }
+        let mut replies = replies.into_iter();
         for (family, cases) in families {
             let mut failed = 0;
-            for case in &cases {
-                let Some(Verdict::Fail { why, .. }) = judge(case) else {
+            let mut judged = 0;
+            for case in cases {
+                let Some(reply) = replies.next() else { break };
+                judged += 1;
+                let Verdict::Fail { why, .. } = self.verdict(case, &reply) else {
                     continue;
                 };
                 failed += 1;
-                if failed <= 3 {
-                    // A shrink step must keep the kind of failure (the reason
-                    // up to its numbers) and the declared inputs (unit
-                    // directions), so the small case shows the same bug.
-                    let kind = |w: &str| {
-                        w.split(|c: char| c.is_ascii_digit())
-                            .next()
-                            .unwrap_or("")
-                            .to_string()
-                    };
-                    let want = kind(&why);
-                    let unit = self.declared.unit_dirs_only;
-                    let fix = |c: Case| if unit { unit_dir(c) } else { c };
-                    let small = shrink(
-                        case,
-                        &|c| matches!(judge(&fix(c.clone())), Some(Verdict::Fail { why, .. }) if kind(&why) == want),
-                    );
-                    let small = fix(small);
-                    if let Some(Verdict::Fail { expected, got, why }) = judge(&small) {
-                        report.failures.push(Failure {
-                            family: family.clone(),
-                            eval_line: eval_line(&small, &family),
-                            expected,
-                            got,
-                            why,
-                        });
+                if failed > 3 {
+                    continue;
+                }
+                let small = if self.shrink && report.stopped.is_none() {
+                    match self.shrink_failure(case, &why, kernel) {
+                        Ok(small) => small,
+                        Err(e) => {
+                            report.stopped = Some(format!("while shrinking a failure: {e}"));
+                            case.clone()
+                        }
                     }
+                } else {
+                    case.clone()
+                };
+                let reply = if &small == case {
+                    reply.clone()
+                } else {
+                    ask(kernel, &small).unwrap_or(reply.clone())
+                };
+                if let Verdict::Fail { expected, got, why } = self.verdict(&small, &reply) {
+                    report.failures.push(Failure {
+                        family: family.clone(),
+                        eval_line: eval_line(&small, family),
+                        expected,
+                        got,
+                        why,
+                    });
                 }
             }
-            report.cases += cases.len();
-            report.families.push((family, cases.len(), failed));
+            report.cases += judged;
+            report.families.push((family.clone(), judged, failed));
         }
         report
+    }
+
+    /// Shrinks a failing case while it fails for the same reason (up to
+    /// its numbers) and keeps the declared inputs (unit directions), so
+    /// the small case shows the same bug; an error if the kernel stops
+    /// answering.
+    fn shrink_failure(
+        &self,
+        case: &Case,
+        why: &str,
+        kernel: &mut dyn CaseKernel,
+    ) -> Result<Case, String> {
+        let kind = |w: &str| {
+            w.split(|c: char| c.is_ascii_digit())
+                .next()
+                .unwrap_or("")
+                .to_string()
+        };
+        let want = kind(why);
+        let unit = self.declared.unit_dirs_only;
+        let fix = |c: Case| if unit { unit_dir(c) } else { c };
+        let mut stop = None;
+        let small = shrink(case, &mut |c| {
+            if stop.is_some() {
+                return false;
+            }
+            let c = fix(c.clone());
+            match ask(kernel, &c) {
+                Ok(reply) => {
+                    matches!(self.verdict(&c, &reply), Verdict::Fail { why, .. } if kind(&why) == want)
+                }
+                Err(e) => {
+                    stop = Some(e);
+                    false
+                }
+            }
+        });
+        match stop {
+            Some(e) => Err(e),
+            None => Ok(fix(small)),
+        }
+    }
+
+    /// The verdict on one reply.
+    fn verdict(&self, case: &Case, reply: &Reply) -> Verdict {
+        let d = &self.declared;
+        match (case, reply) {
+            (_, Reply::Failed(why)) => Verdict::Fail {
+                expected: "an answer".into(),
+                got: "no answer".into(),
+                why: why.clone(),
+            },
+            (Case::Camera(p, px), Reply::Camera(ray)) => judge_camera(d, p, *px, *ray),
+            (Case::Sphere(r, s), Reply::Answer(a)) => judge_sphere(d, r, s, a.clone()),
+            (Case::Plane(r, p), Reply::Answer(a)) => judge_plane(d, r, p, a.clone()),
+            (Case::Quadric(r, q), Reply::Answer(a)) => judge_quadric(d, r, q, a.clone()),
+            (Case::Camera(..), Reply::Answer(a)) => Verdict::Fail {
+                expected: "a camera ray".into(),
+                got: a.to_string(),
+                why: "an intersection answer to a camera case".into(),
+            },
+            (_, Reply::Camera(_)) => Verdict::Fail {
+                expected: "an intersection answer".into(),
+                got: "a camera ray".into(),
+                why: "a camera answer to an intersection case".into(),
+            },
+        }
     }
 
     /// One sphere case, judged: for a user's own property tests and
@@ -554,21 +761,63 @@ impl Gate {
     }
 }
 
-/// Runs `judge`, turning a panic inside it (the user's kernel) into a
-/// failure that names the panic's message.
-fn guarded(judge: impl FnOnce() -> Option<Verdict>) -> Option<Verdict> {
-    std::panic::catch_unwind(std::panic::AssertUnwindSafe(judge)).unwrap_or_else(|p| {
-        let msg = p
-            .downcast_ref::<&str>()
-            .map(|s| s.to_string())
-            .or_else(|| p.downcast_ref::<String>().cloned())
-            .unwrap_or_else(|| "a non-string payload".into());
-        Some(Verdict::Fail {
-            expected: "an answer".into(),
-            got: "a panic".into(),
-            why: format!("the kernel panicked: {msg}"),
-        })
-    })
+/// A kernel's reply to one case.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Reply {
+    /// A plane, sphere or quadric answer.
+    Answer(Answer),
+    /// A camera's ray, or `None` where the camera refuses its parameters.
+    Camera(Option<Ray>),
+    /// No answer: the kernel panicked, or its answer could not be read.
+    /// Always a failure, with this reason.
+    Failed(String),
+}
+
+/// A kernel over cases of any kind, asked a batch at a time: the common
+/// form of a Rust closure ([`Each`]) and of a program on the other end of
+/// a pipe (`rayoracle gate -- PROGRAM`).
+pub trait CaseKernel {
+    /// Pushes one reply per case onto `replies`, in order. An error ends
+    /// the run (the kernel can no longer answer); the replies pushed before
+    /// it are judged.
+    fn answer(&mut self, cases: &[Case], replies: &mut Vec<Reply>) -> Result<(), String>;
+}
+
+/// A case-at-a-time kernel: a panic inside it becomes a
+/// [`Reply::Failed`] that names the panic's message.
+///
+/// ```
+/// use rayoracle::check::gate::{CaseKernel, Each, Reply};
+/// let mut k = Each(|_: &rayoracle::case::Case| -> Reply { panic!("no such ray") });
+/// let case = rayoracle::case::parse_line(r#"{"kind":"camera","position":[0,0,0],"dir":[0,0,-1],"up":[0,1,0],"angle":1,"res":[4,3],"pixel":[0,2]}"#).unwrap().case;
+/// let mut replies = vec![];
+/// k.answer(&[case], &mut replies).unwrap();
+/// assert_eq!(replies, [Reply::Failed("the kernel panicked: no such ray".into())]);
+/// ```
+pub struct Each<F>(pub F);
+
+impl<F: FnMut(&Case) -> Reply> CaseKernel for Each<F> {
+    fn answer(&mut self, cases: &[Case], replies: &mut Vec<Reply>) -> Result<(), String> {
+        for c in cases {
+            let reply = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| (self.0)(c)));
+            replies.push(reply.unwrap_or_else(|p| {
+                let msg = p
+                    .downcast_ref::<&str>()
+                    .map(|s| s.to_string())
+                    .or_else(|| p.downcast_ref::<String>().cloned())
+                    .unwrap_or_else(|| "a non-string payload".into());
+                Reply::Failed(format!("the kernel panicked: {msg}"))
+            }));
+        }
+        Ok(())
+    }
+}
+
+/// One case asked of a kernel.
+fn ask(kernel: &mut dyn CaseKernel, case: &Case) -> Result<Reply, String> {
+    let mut r = Vec::with_capacity(1);
+    kernel.answer(std::slice::from_ref(case), &mut r)?;
+    r.pop().ok_or_else(|| "no answer".to_string())
 }
 
 /// A single judged case as a result.
@@ -704,10 +953,22 @@ fn proper(c: &Case) -> bool {
 }
 
 /// Shrinks a failing case: each input in turn becomes 0, its nearest
-/// integer, or keeps fewer significant bits, while the case still fails
-/// and, if it was a proper case of its kind ([`proper`]: no zero radius,
-/// no zero direction, a camera that builds), stays one.
-fn shrink(case: &Case, fails: &dyn Fn(&Case) -> bool) -> Case {
+/// integer, or keeps fewer significant bits, while `fails` still holds
+/// and, if it was a proper case of its kind (no zero radius, no zero
+/// direction, a nonzero normal or quadric, a camera that builds), stays
+/// one. At most 400 candidates are tried.
+///
+/// ```
+/// use rayoracle::check::gate::shrink;
+/// use rayoracle::{Ray, case::Case, sphere::Sphere};
+/// use glam::Vec3;
+/// let big = Case::Sphere(Ray::new(Vec3::new(1.3, -2.7, 3.1), Vec3::new(0.3, -0.7, 0.9)),
+///                        Sphere::new(Vec3::new(4.5, 0.7, -2.2), 1.7371));
+/// let small = shrink(&big, &mut |c| matches!(c, Case::Sphere(_, s) if s.radius > 1.0));
+/// assert_eq!(small, Case::Sphere(Ray::new(Vec3::ZERO, Vec3::new(0.25, 0.0, 0.0)),
+///                                Sphere::new(Vec3::ZERO, 2.0)));
+/// ```
+pub fn shrink(case: &Case, fails: &mut dyn FnMut(&Case) -> bool) -> Case {
     let keep_proper = proper(case);
     let mut best = case.clone();
     let mut tries = 0;
@@ -744,40 +1005,12 @@ fn shrink(case: &Case, fails: &dyn Fn(&Case) -> bool) -> Case {
     }
 }
 
-/// The case as an `eval` line.
+/// The case as an `eval` line (a non-finite number as a string).
 fn eval_line(c: &Case, family: &str) -> String {
-    let v = |x: Vec3| format!("[{:?},{:?},{:?}]", x.x, x.y, x.z);
-    match c {
-        Case::Plane(r, p) => format!(
-            r#"{{"kind":"plane","family":"{family}","origin":{},"dir":{},"point":{},"normal":{}}}"#,
-            v(r.origin),
-            v(r.dir),
-            v(p.point),
-            v(p.normal)
-        ),
-        Case::Sphere(r, s) => format!(
-            r#"{{"kind":"sphere","family":"{family}","origin":{},"dir":{},"center":{},"radius":{:?}}}"#,
-            v(r.origin),
-            v(r.dir),
-            v(s.center),
-            s.radius
-        ),
-        Case::Quadric(r, q) => format!(
-            r#"{{"kind":"quadric","family":"{family}","origin":{},"dir":{},"coeffs":{:?}}}"#,
-            v(r.origin),
-            v(r.dir),
-            q.coeffs
-        ),
-        Case::Camera(p, px) => format!(
-            r#"{{"kind":"camera","family":"{family}","position":{},"dir":{},"up":{},"angle":{:?},"res":[{},{}],"pixel":[{},{}]}}"#,
-            v(p.position),
-            v(p.dir),
-            v(p.up),
-            p.angle,
-            p.res[0],
-            p.res[1],
-            px[0],
-            px[1]
-        ),
-    }
+    format!(
+        r#"{{"kind":"{}","family":{},{}}}"#,
+        c.kind().as_str(),
+        serde_json::Value::from(family),
+        protocol::fields(c, protocol::short_num)
+    )
 }

@@ -1,0 +1,514 @@
+//! `rayoracle cases`, `judge` and `gate -- PROGRAM`: the gate for kernels
+//! in any language, over the line protocol of
+//! `rayoracle::check::gate::protocol` (docs/protocol.md).
+
+use clap::Args;
+use rayoracle::case::{Case, Kind};
+use rayoracle::check::gate::Answer;
+use rayoracle::check::gate::protocol::{answer_id, answer_line, case_line, read_answer};
+use rayoracle::check::gate::{CaseKernel, Declared, Gate, Reply, Report, Semantics};
+use rayoracle::eval::{Implementation, Outcome};
+use rayoracle::hit::Class;
+use std::collections::HashMap;
+use std::io::{self, BufRead, BufReader, BufWriter, Write};
+use std::path::PathBuf;
+use std::process::{Child, ChildStdin, Command, Stdio};
+use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender, channel};
+use std::time::Duration;
+
+/// Which cases: the kind, the families, the budget, the seed.
+#[derive(Args, Debug, Clone)]
+pub struct Selection {
+    /// plane, sphere, quadric or camera.
+    #[arg(long, value_parser = parse_kind)]
+    pub kind: Kind,
+    /// Only this family, or the families under it (`sphere/random` takes
+    /// `sphere/random/aimed`); repeat for more. Default: every family.
+    #[arg(long = "family", value_name = "NAME")]
+    pub families: Vec<String>,
+    /// At most this many cases a family.
+    #[arg(long, default_value_t = 256)]
+    pub budget: usize,
+    /// The random families' seed.
+    #[arg(long)]
+    pub seed: Option<u64>,
+}
+
+/// What the kernel promises.
+#[derive(Args, Debug, Clone)]
+pub struct Declaration {
+    /// nearest (the nearest t > 0, answered {"t": …}) or whole-line
+    /// (answered {"class": …, "roots": […]}). Cameras answer {"dir": […]}
+    /// under either.
+    #[arg(long, value_parser = parse_semantics, default_value = "nearest")]
+    pub semantics: Semantics,
+    /// The accuracy promised: f32 (a careful f32 kernel), faithful (one
+    /// ulp) or correctly-rounded (the oracle's bits).
+    #[arg(long, value_name = "LEVEL", default_value = "f32", value_parser = ["f32", "faithful", "correctly-rounded"])]
+    pub declared: String,
+    /// Send only unit-length directions (normalised in f32).
+    #[arg(long)]
+    pub unit_dirs: bool,
+    /// Override the bits allowed on a well-conditioned root.
+    #[arg(long)]
+    pub bits: Option<f64>,
+    /// Override the working precision (relative, e.g. 2.4e-7).
+    #[arg(long)]
+    pub precision: Option<f64>,
+    /// Override the class band, as a multiple of the unit band.
+    #[arg(long)]
+    pub band_scale: Option<f64>,
+}
+
+impl Declaration {
+    /// The declaration these flags make.
+    pub fn declared(&self) -> Declared {
+        let mut d = match self.declared.as_str() {
+            "faithful" => Declared::faithful(self.semantics),
+            "correctly-rounded" => Declared::correctly_rounded(self.semantics),
+            _ => Declared::f32(self.semantics),
+        };
+        if self.unit_dirs {
+            d = d.unit_dirs();
+        }
+        d.bits = self.bits.unwrap_or(d.bits);
+        d.precision = self.precision.unwrap_or(d.precision);
+        d.band_scale = self.band_scale.unwrap_or(d.band_scale);
+        d
+    }
+}
+
+fn parse_kind(s: &str) -> Result<Kind, String> {
+    s.parse().map_err(|e| format!("{e}"))
+}
+
+pub fn parse_semantics(s: &str) -> Result<Semantics, String> {
+    match s {
+        "nearest" => Ok(Semantics::NearestPositive),
+        "whole-line" => Ok(Semantics::WholeLine),
+        _ => Err(format!(
+            "\"{s}\" is not a semantics: expected nearest or whole-line"
+        )),
+    }
+}
+
+/// The gate for these flags.
+fn gate(sel: &Selection, decl: &Declaration) -> Gate {
+    let mut g = Gate::new(decl.declared()).budget(sel.budget);
+    if let Some(seed) = sel.seed {
+        g.seed = seed;
+    }
+    g
+}
+
+/// The selected families, each case with its id (its place in the order
+/// sent, from 0).
+fn families(g: &Gate, sel: &Selection) -> Vec<(String, Vec<Case>)> {
+    let wanted = |f: &str| {
+        sel.families.is_empty()
+            || sel.families.iter().any(|w| {
+                f == w
+                    || f.strip_prefix(w.as_str())
+                        .is_some_and(|r| r.starts_with('/'))
+            })
+    };
+    g.cases(sel.kind.as_str())
+        .into_iter()
+        .filter(|f| wanted(&f.0))
+        .collect()
+}
+
+/// Refuses a `--family` that selects nothing, naming the families there are.
+fn check_selection(all: &[(String, Vec<Case>)], sel: &Selection) -> Result<(), String> {
+    if all.is_empty() {
+        return Err(format!(
+            "--family {}: no {} family has that name or sits under it; run `rayoracle cases --kind {}` to see them",
+            sel.families.join(", --family "),
+            sel.kind.as_str(),
+            sel.kind.as_str()
+        ));
+    }
+    Ok(())
+}
+
+/// `rayoracle cases`: every selected case as a protocol line.
+pub fn cases_command(sel: &Selection, decl: &Declaration) -> u8 {
+    let g = gate(sel, decl);
+    let all = families(&g, sel);
+    if let Err(e) = check_selection(&all, sel) {
+        eprintln!("rayoracle cases: {e}");
+        return 2;
+    }
+    let mut out = BufWriter::new(io::stdout().lock());
+    let lines = all
+        .iter()
+        .flat_map(|(f, cases)| cases.iter().map(move |c| (f, c)))
+        .enumerate();
+    for (id, (family, case)) in lines {
+        if writeln!(out, "{}", case_line(case, family, id as u64)).is_err() {
+            return 0; // a closed pipe (`| head`) is not an error
+        }
+    }
+    let _ = out.flush();
+    0
+}
+
+/// Prints the report (text, or JSON with `--json`) and gives the exit
+/// code: 0 if it passed, 1 if not.
+fn finish(report: &Report, kind: Kind, json: bool) -> u8 {
+    if json {
+        let mut j = report.to_json();
+        j["kind"] = kind.as_str().into();
+        println!("{j}");
+    } else {
+        println!("{report}");
+    }
+    u8::from(!report.passed())
+}
+
+/// `rayoracle judge`: answers read from a file, matched to cases by id.
+pub fn judge_command(sel: &Selection, decl: &Declaration, answers: &PathBuf, json: bool) -> u8 {
+    let g = Gate {
+        shrink: false,
+        ..gate(sel, decl)
+    };
+    let all = families(&g, sel);
+    if let Err(e) = check_selection(&all, sel) {
+        eprintln!("rayoracle judge: {e}");
+        return 2;
+    }
+    let text = if answers.as_os_str() == "-" {
+        io::read_to_string(io::stdin())
+    } else {
+        std::fs::read_to_string(answers)
+    };
+    let text = match text {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("rayoracle judge: cannot read {}: {e}", answers.display());
+            return 2;
+        }
+    };
+    let cases: Vec<&Case> = all.iter().flat_map(|f| f.1.iter()).collect();
+    let mut by_id: HashMap<u64, (usize, &str)> = HashMap::new();
+    let mut errors: Vec<String> = Vec::new();
+    let name = answers.display();
+    for (i, line) in text.lines().enumerate() {
+        if line.trim().is_empty() {
+            continue;
+        }
+        match answer_id(line) {
+            Ok(id) if id as usize >= cases.len() => {
+                errors.push(format!(
+                    "{name}:{}: id {id} is not a case of this selection (ids 0..{})",
+                    i + 1,
+                    cases.len()
+                ));
+            }
+            Ok(id) => {
+                if let Some((first, _)) = by_id.insert(id, (i + 1, line)) {
+                    errors.push(format!(
+                        "{name}:{}: id {id} was already answered on line {first}; the later answer counts",
+                        i + 1
+                    ));
+                }
+            }
+            Err(e) => errors.push(format!("{name}:{}: {e}", i + 1)),
+        }
+    }
+    let replies: Vec<Reply> = cases
+        .iter()
+        .enumerate()
+        .map(|(id, case)| match by_id.get(&(id as u64)) {
+            None => Reply::Failed(format!("no answer line has id {id}")),
+            Some((n, line)) => match read_answer(line, case) {
+                Ok(a) => a.reply,
+                Err(e) => Reply::Failed(format!("{name}:{n}: {e}")),
+            },
+        })
+        .collect();
+    for e in errors.iter().take(10) {
+        eprintln!("rayoracle judge: {e}");
+    }
+    if errors.len() > 10 {
+        eprintln!(
+            "rayoracle judge: … and {} more lines that could not be matched to a case",
+            errors.len() - 10
+        );
+    }
+    let report = g.run(&all, &mut Recorded(Some(replies)));
+    finish(&report, sel.kind, json).max(u8::from(!errors.is_empty()))
+}
+
+/// Answers read beforehand: the first batch only (no shrinking).
+struct Recorded(Option<Vec<Reply>>);
+
+impl CaseKernel for Recorded {
+    fn answer(&mut self, _: &[Case], replies: &mut Vec<Reply>) -> Result<(), String> {
+        replies.extend(self.0.take().ok_or("the answers were read from a file")?);
+        Ok(())
+    }
+}
+
+/// `rayoracle gate -- PROGRAM`.
+pub fn gate_command(
+    sel: &Selection,
+    decl: &Declaration,
+    program: &[String],
+    timeout: f64,
+    shrink: bool,
+    json: bool,
+) -> u8 {
+    let g = Gate {
+        shrink,
+        ..gate(sel, decl)
+    };
+    let all = families(&g, sel);
+    if let Err(e) = check_selection(&all, sel) {
+        eprintln!("rayoracle gate: {e}");
+        return 2;
+    }
+    let mut kernel = match Program::start(program, Duration::from_secs_f64(timeout.max(0.001))) {
+        Ok(k) => k,
+        Err(e) => {
+            eprintln!("rayoracle gate: cannot start {}: {e}", program[0]);
+            return 2;
+        }
+    };
+    kernel.families = all
+        .iter()
+        .flat_map(|(f, cases)| cases.iter().map(move |_| f.clone()))
+        .collect();
+    kernel.bar = indicatif::ProgressBar::new(kernel.families.len() as u64).with_style(
+        indicatif::ProgressStyle::with_template(
+            "gate [{bar:40}] {pos}/{len} answers, {per_sec}, {eta} left",
+        )
+        .expect("a valid template")
+        .progress_chars("=> "),
+    );
+    let report = g.run(&all, &mut kernel);
+    kernel.bar.finish_and_clear();
+    kernel.stop();
+    finish(&report, sel.kind, json)
+}
+
+/// A kernel program: case lines to its stdin (from a writer thread, so a
+/// full pipe never blocks the reader), answer lines from its stdout (from
+/// a reader thread, so a hang is a timeout).
+struct Program {
+    name: String,
+    child: Child,
+    to_writer: Option<Sender<Vec<String>>>,
+    from_reader: Receiver<io::Result<String>>,
+    timeout: Duration,
+    next_id: u64,
+    lines_read: usize,
+    dead: Option<String>,
+    /// The family of each case of the first batch, by id; later cases are
+    /// a failure's shrinking.
+    families: Vec<String>,
+    /// Answer lines read, on stderr when it is a terminal.
+    bar: indicatif::ProgressBar,
+}
+
+impl Program {
+    fn start(program: &[String], timeout: Duration) -> io::Result<Program> {
+        let mut child = Command::new(&program[0])
+            .args(&program[1..])
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::inherit())
+            .spawn()?;
+        let stdin = child.stdin.take().expect("stdin was piped");
+        let stdout = child.stdout.take().expect("stdout was piped");
+        let (to_writer, batches) = channel::<Vec<String>>();
+        std::thread::spawn(move || write_batches(stdin, batches));
+        let (lines, from_reader) = channel();
+        std::thread::spawn(move || {
+            for line in BufReader::new(stdout).lines() {
+                let end = line.is_err();
+                if lines.send(line).is_err() || end {
+                    break;
+                }
+            }
+        });
+        Ok(Program {
+            name: program.join(" "),
+            child,
+            to_writer: Some(to_writer),
+            from_reader,
+            timeout,
+            next_id: 0,
+            lines_read: 0,
+            dead: None,
+            families: Vec::new(),
+            bar: indicatif::ProgressBar::hidden(),
+        })
+    }
+
+    /// Closes the program's stdin and waits briefly for it; kills it if it
+    /// does not end.
+    fn stop(&mut self) {
+        self.to_writer = None;
+        for _ in 0..50 {
+            if let Ok(Some(_)) = self.child.try_wait() {
+                return;
+            }
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+
+    /// How the program ended, if it has.
+    fn exit_status(&mut self) -> String {
+        std::thread::sleep(Duration::from_millis(20));
+        match self.child.try_wait() {
+            Ok(Some(s)) => format!("exited ({s})"),
+            _ => "closed its stdout".into(),
+        }
+    }
+}
+
+fn write_batches(stdin: ChildStdin, batches: Receiver<Vec<String>>) {
+    let mut w = BufWriter::new(stdin);
+    for batch in batches {
+        for line in batch {
+            if writeln!(w, "{line}").is_err() {
+                return; // the program is gone; the reader reports it
+            }
+        }
+        if w.flush().is_err() {
+            return;
+        }
+    }
+}
+
+impl CaseKernel for Program {
+    fn answer(&mut self, cases: &[Case], replies: &mut Vec<Reply>) -> Result<(), String> {
+        if let Some(why) = &self.dead {
+            return Err(why.clone());
+        }
+        let first = self.next_id;
+        let lines = cases
+            .iter()
+            .enumerate()
+            .map(|(i, c)| {
+                let id = first + i as u64;
+                let family = self.families.get(id as usize).map_or("shrinking", |f| f);
+                case_line(c, family, id)
+            })
+            .collect();
+        self.next_id += cases.len() as u64;
+        if let Some(w) = &self.to_writer {
+            let _ = w.send(lines);
+        }
+        for (i, case) in cases.iter().enumerate() {
+            let id = first + i as u64;
+            let line_no = self.lines_read + 1;
+            let why = match self.from_reader.recv_timeout(self.timeout) {
+                Ok(Ok(line)) => {
+                    self.lines_read += 1;
+                    self.bar.inc(1);
+                    replies.push(match read_answer(&line, case) {
+                        Ok(a) if a.id.is_some_and(|x| x != id) => Reply::Failed(format!(
+                            "answer line {line_no} has id {}, but answers the case of id {id}",
+                            a.id.unwrap_or(0)
+                        )),
+                        Ok(a) => a.reply,
+                        Err(e) => Reply::Failed(format!(
+                            "answer line {line_no} is malformed: {e}: {}",
+                            clip(&line)
+                        )),
+                    });
+                    continue;
+                }
+                Ok(Err(e)) => format!("reading answer line {line_no} failed: {e}"),
+                Err(RecvTimeoutError::Disconnected) => {
+                    let status = self.exit_status();
+                    format!(
+                        "{} {status} after {} answer lines, without answering the case of id {id}",
+                        self.name, self.lines_read
+                    )
+                }
+                Err(RecvTimeoutError::Timeout) => {
+                    let _ = self.child.kill();
+                    format!(
+                        "{} gave no answer line {line_no} (the case of id {id}) within {:?}, so it was stopped; answer lines must end with a newline and be flushed",
+                        self.name, self.timeout
+                    )
+                }
+            };
+            self.dead = Some(why.clone());
+            return Err(why);
+        }
+        Ok(())
+    }
+}
+
+/// At most 80 characters of a line, for messages.
+fn clip(line: &str) -> String {
+    if line.chars().count() > 80 {
+        format!("{}…", line.chars().take(80).collect::<String>())
+    } else {
+        line.to_string()
+    }
+}
+
+/// `rayoracle answer`: answers case lines on stdin with rayoracle's own
+/// correctly rounded reference kernels, one answer line each, flushed: a
+/// peer that speaks the protocol, to compare a kernel's answers with or to
+/// time the pipe.
+pub fn answer_command(semantics: Semantics) -> u8 {
+    let mut out = io::stdout().lock();
+    let mut code = 0;
+    for (i, line) in io::stdin().lock().lines().enumerate() {
+        let Ok(line) = line else {
+            eprintln!("rayoracle answer: stdin:{}: not UTF-8 text", i + 1);
+            return 2;
+        };
+        if line.trim().is_empty() {
+            continue;
+        }
+        let text = match rayoracle::case::parse_line(&line) {
+            Ok(c) => {
+                let a = answer_line(&reply(&c.case, semantics), c.case.kind());
+                match c.id {
+                    Some(id) => format!(r#"{{"id":{id},{}"#, &a[1..]),
+                    None => a,
+                }
+            }
+            Err(e) => {
+                eprintln!("rayoracle answer: stdin:{}: {e}", i + 1);
+                code = 1;
+                answer_line(
+                    &Reply::Failed(format!("stdin:{}: {e}", i + 1)),
+                    Kind::Sphere,
+                )
+            }
+        };
+        if writeln!(out, "{text}").and_then(|()| out.flush()).is_err() {
+            return code;
+        }
+    }
+    code
+}
+
+/// The reference kernel's reply in the semantics.
+fn reply(case: &Case, semantics: Semantics) -> Reply {
+    match Implementation::Reference.run(case) {
+        Outcome::Ray(r) => Reply::Camera(Some(r)),
+        Outcome::Error(_) if case.kind() == Kind::Camera => Reply::Camera(None),
+        Outcome::Error(e) => Reply::Failed(e),
+        Outcome::Hit { class, roots } => {
+            let roots = roots.as_slice();
+            Reply::Answer(match (class, semantics) {
+                (Class::All | Class::InPlane, _) => Answer::Everywhere,
+                (_, Semantics::NearestPositive) => {
+                    Answer::Nearest(roots.iter().copied().find(|&t| t > 0.0))
+                }
+                _ => Answer::Roots(roots.to_vec()),
+            })
+        }
+    }
+}
