@@ -4,6 +4,7 @@
 //   adapter sphere-distance   glm::intersectRaySphere(orig, dir, center, r*r, distance)
 //   adapter sphere-position   glm::intersectRaySphere(orig, dir, center, r, position, normal)
 //   adapter plane             glm::intersectRayPlane(orig, dir, point, normalize(normal), distance)
+//   adapter sphere-patched    the distance form with dSquared = |diff - t0*dir|^2 (see below)
 //
 // Every input is a float (glm::vec3): the case's numbers are f32 values, so
 // the conversion is exact. The answer is the nearest t > 0 ({"t": x} or
@@ -17,6 +18,7 @@
 #include <glm/gtx/intersect.hpp>
 
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -44,6 +46,24 @@ static bool vec(const std::string& s, const char* key, glm::vec3& out) {
   return true;
 }
 
+// glm::intersectRaySphere (distance form, GLM 0.9.9.8) with one change:
+// the squared distance from the center to the ray is formed from the
+// perpendicular vector, |diff - t0*dir|^2 (Ray Tracing Gems ch. 7, eq.
+// 7.5), instead of dot(diff, diff) - t0*t0, which cancels. Everything else,
+// the epsilons included, is GLM's.
+static bool patched(glm::vec3 const& o, glm::vec3 const& dir, glm::vec3 const& center, float r2,
+                    float& distance) {
+  float const eps = std::numeric_limits<float>::epsilon();
+  glm::vec3 const diff = center - o;
+  float const t0 = glm::dot(diff, dir);
+  glm::vec3 const perp = diff - t0 * dir;
+  float const dSquared = glm::dot(perp, perp);
+  if (dSquared > r2) return false;
+  float const t1 = std::sqrt(r2 - dSquared);
+  distance = t0 > t1 + eps ? t0 - t1 : t0 + t1;
+  return distance > eps;
+}
+
 // A t as a JSON value: a number, or "nan", "inf", "-inf" (JSON has none).
 static void answer(double id, bool hit, double t) {
   if (!hit) std::printf("{\"id\":%.0f,\"t\":null}\n", id);
@@ -55,8 +75,10 @@ static void answer(double id, bool hit, double t) {
 
 int main(int argc, char** argv) {
   std::string mode = argc == 2 ? argv[1] : "";
-  if (mode != "sphere-distance" && mode != "sphere-position" && mode != "plane") {
-    std::fprintf(stderr, "usage: %s sphere-distance | sphere-position | plane\n", argv[0]);
+  if (mode != "sphere-distance" && mode != "sphere-position" && mode != "plane" &&
+      mode != "sphere-patched") {
+    std::fprintf(stderr, "usage: %s sphere-distance | sphere-position | plane | sphere-patched\n",
+                 argv[0]);
     return 2;
   }
   for (std::string line; std::getline(std::cin, line);) {
@@ -73,6 +95,9 @@ int main(int argc, char** argv) {
     float rf = float(r), t = 0;
     if (mode == "sphere-distance") {
       bool hit = glm::intersectRaySphere(o, d, c, rf * rf, t);
+      answer(id, hit, t);
+    } else if (mode == "sphere-patched") {
+      bool hit = patched(o, d, c, rf * rf, t);
       answer(id, hit, t);
     } else if (mode == "sphere-position") {
       glm::vec3 p(0), normal(0);
