@@ -304,9 +304,10 @@ struct Program {
     next_id: u64,
     lines_read: usize,
     dead: Option<String>,
-    /// The family of each case of the first batch, by id; later cases are
-    /// a failure's shrinking.
+    /// The family of each case of the first batch, by id.
     families: Vec<String>,
+    /// The family of the failure being shrunk, for the later cases.
+    shrinking: String,
     /// Answer lines read, on stderr when it is a terminal.
     bar: indicatif::ProgressBar,
 }
@@ -342,6 +343,7 @@ impl Program {
             lines_read: 0,
             dead: None,
             families: Vec::new(),
+            shrinking: String::new(),
             bar: indicatif::ProgressBar::hidden(),
         })
     }
@@ -385,6 +387,10 @@ fn write_batches(stdin: ChildStdin, batches: Receiver<Vec<String>>) {
 }
 
 impl CaseKernel for Program {
+    fn shrinking(&mut self, family: &str) {
+        self.shrinking = family.to_string();
+    }
+
     fn answer(&mut self, cases: &[Case], replies: &mut Vec<Reply>) -> Result<(), String> {
         if let Some(why) = &self.dead {
             return Err(why.clone());
@@ -395,7 +401,7 @@ impl CaseKernel for Program {
             .enumerate()
             .map(|(i, c)| {
                 let id = first + i as u64;
-                let family = self.families.get(id as usize).map_or("shrinking", |f| f);
+                let family = self.families.get(id as usize).unwrap_or(&self.shrinking);
                 case_line(c, family, id)
             })
             .collect();

@@ -544,6 +544,7 @@ impl Gate {
                     continue;
                 }
                 let small = if self.shrink && report.stopped.is_none() {
+                    kernel.shrinking(family);
                     match self.shrink_failure(case, &why, kernel) {
                         Ok(small) => small,
                         Err(e) => {
@@ -781,6 +782,12 @@ pub trait CaseKernel {
     /// the run (the kernel can no longer answer); the replies pushed before
     /// it are judged.
     fn answer(&mut self, cases: &[Case], replies: &mut Vec<Reply>) -> Result<(), String>;
+
+    /// Called before the cases that shrink a failure of `family` are
+    /// asked, one at a time; by default nothing.
+    fn shrinking(&mut self, family: &str) {
+        let _ = family;
+    }
 }
 
 /// A case-at-a-time kernel: a panic inside it becomes a

@@ -675,3 +675,42 @@ fn the_invalid_cameras_are_refused_by_the_oracle() {
         assert!(p.build().is_err(), "{p:?}");
     }
 }
+
+/// `Gate::run` asks a batch first, then one case at a time while it
+/// shrinks, naming the family of each failure before its shrinking.
+#[test]
+fn run_asks_one_batch_then_shrinks_each_family_by_name() {
+    struct Never {
+        asked: Vec<usize>,
+        shrinking: Vec<String>,
+    }
+    impl CaseKernel for Never {
+        fn answer(&mut self, cases: &[Case], replies: &mut Vec<Reply>) -> Result<(), String> {
+            self.asked.push(cases.len());
+            replies.extend(cases.iter().map(|_| Reply::Answer(Answer::Nearest(None))));
+            Ok(())
+        }
+        fn shrinking(&mut self, family: &str) {
+            self.shrinking.push(family.to_string());
+        }
+    }
+    let g = nearest_positive().budget(4);
+    let families = g.cases("sphere");
+    let total: usize = families.iter().map(|f| f.1.len()).sum();
+    let mut k = Never {
+        asked: vec![],
+        shrinking: vec![],
+    };
+    let report = g.run(&families, &mut k);
+    assert_eq!(k.asked[0], total);
+    assert!(k.asked[1..].iter().all(|&n| n == 1));
+    let kept: Vec<&str> = report.failures.iter().map(|f| f.family.as_str()).collect();
+    assert_eq!(k.shrinking, kept);
+    let unshrunk = Gate { shrink: false, ..g }.run(&families, &mut k);
+    assert_eq!(
+        k.asked.last(),
+        Some(&total),
+        "no case asked after the batch"
+    );
+    assert_eq!(unshrunk.failing_families(), report.failing_families());
+}
