@@ -6,6 +6,7 @@
 
 mod bounds;
 mod bounds_search;
+mod careful_f32;
 mod determinism;
 mod fixtures;
 mod known_wrong;

@@ -207,6 +207,9 @@ pub struct Report {
     pub families: Vec<(String, usize, usize)>,
     /// Every failure, shrunk (at most 3 a family are kept).
     pub failures: Vec<Failure>,
+    /// `(precondition, cases skipped)`: cases not run because they violate
+    /// a declared precondition ([`Declared::skips`]).
+    pub skipped: Vec<(String, usize)>,
 }
 
 impl Report {
@@ -357,18 +360,28 @@ impl Gate {
     /// assert!(families.iter().all(|f| f.1.len() <= 4));
     /// ```
     pub fn cases(&self, kind: &str) -> Vec<(String, Vec<Case>)> {
-        self.load(kind).0
+        self.load(kind, &mut Vec::new()).0
     }
 
-    /// [`Gate::cases`], and the fixture lines that could not be loaded.
-    fn load(&self, kind: &str) -> (Vec<(String, Vec<Case>)>, Vec<String>) {
+    /// [`Gate::cases`], and the fixture lines that could not be loaded;
+    /// counts the cases each precondition skips into `skipped`.
+    fn load(
+        &self,
+        kind: &str,
+        skipped: &mut Vec<(String, usize)>,
+    ) -> (Vec<(String, Vec<Case>)>, Vec<String>) {
         let mut by_family: Vec<(String, Vec<Case>)> = Vec::new();
         let (sources, errors) = self.sources(kind, self.budget);
         for (family, case) in sources {
-            let case = if self.declared.unit_dirs_only {
-                unit_dir(case)
-            } else {
-                case
+            let case = match self.declared.prepare(case) {
+                Ok(c) => c,
+                Err(name) => {
+                    match skipped.iter_mut().find(|s| s.0 == name) {
+                        Some(s) => s.1 += 1,
+                        None => skipped.push((name.to_string(), 1)),
+                    }
+                    continue;
+                }
             };
             match by_family.iter_mut().find(|f| f.0 == family) {
                 Some(f) if f.1.len() < self.budget => f.1.push(case),
@@ -382,7 +395,7 @@ impl Gate {
     fn run(&self, kind: &str, judge: impl Fn(&Case) -> Option<Verdict>) -> Report {
         let mut report = Report::default();
         let judge = |c: &Case| guarded(|| judge(c));
-        let (families, errors) = self.load(kind);
+        let (families, errors) = self.load(kind, &mut report.skipped);
         for e in errors {
             report.failures.push(Failure {
                 family: "fixtures".into(),
@@ -411,13 +424,11 @@ impl Gate {
                             .to_string()
                     };
                     let want = kind(&why);
-                    let unit = self.declared.unit_dirs_only;
-                    let fix = |c: Case| if unit { unit_dir(c) } else { c };
-                    let small = shrink(
-                        case,
-                        &|c| matches!(judge(&fix(c.clone())), Some(Verdict::Fail { why, .. }) if kind(&why) == want),
-                    );
-                    let small = fix(small);
+                    let fix = |c: &Case| self.declared.prepare(c.clone()).ok();
+                    let small = shrink(case, &|c| {
+                        fix(c).is_some_and(|c| matches!(judge(&c), Some(Verdict::Fail { why, .. }) if kind(&why) == want))
+                    });
+                    let small = fix(&small).unwrap_or(small);
                     if let Some(Verdict::Fail { expected, got, why }) = judge(&small) {
                         report.failures.push(Failure {
                             family: family.clone(),
@@ -582,18 +593,6 @@ fn one(case: Case, v: Verdict) -> Result<(), Failure> {
             got,
             why,
         }),
-    }
-}
-
-/// Unit-length direction (f32 normalisation); the oracle then sees exactly
-/// these inputs.
-fn unit_dir(case: Case) -> Case {
-    let n = |r: Ray| Ray::new(r.origin, r.dir.normalize_or_zero());
-    match case {
-        Case::Plane(r, p) => Case::Plane(n(r), p),
-        Case::Sphere(r, s) => Case::Sphere(n(r), s),
-        Case::Quadric(r, q) => Case::Quadric(n(r), q),
-        c => c,
     }
 }
 

@@ -95,7 +95,12 @@ use crate::quadric::{self, Quadric, QuadricHit};
 #[cfg(feature = "sphere")]
 use crate::sphere::{self, Sphere, SphereHit};
 use crate::ulp::{ulp_of, ulps};
+use glam::Vec3;
 use std::fmt;
+
+mod preconditions;
+mod semantics;
+pub use semantics::Semantics;
 
 /// The least allowance for a gated camera's direction components, in ulps
 /// of `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|` ([`component_scale`]): what a plain
@@ -120,6 +125,12 @@ pub enum Answer {
     Roots(Vec<f32>),
     /// The nearest root `t > t_min` only, or none.
     Nearest(Option<f32>),
+    /// The nearest hit's point `o + t·d`, or none, in any nearest-hit
+    /// semantics: judged against the exact root's point, each component
+    /// within the root's tolerance times `|dᵢ|`, plus half an ulp of the
+    /// root times `|dᵢ|`, plus `2^bits` ulps of `|oᵢ| + |t dᵢ|` (the
+    /// point's own rounding).
+    Point(Option<Vec3>),
     /// Every `t` is a solution (a ray in the plane, a line on the quadric).
     Everywhere,
     /// The gate's `Lanes` adapter saw the lanes disagree; always a
@@ -152,20 +163,12 @@ impl fmt::Display for Answer {
             Answer::Roots(r) if r.is_empty() => write!(f, "no roots"),
             Answer::Roots(r) => write!(f, "roots {r:?}"),
             Answer::Nearest(Some(t)) => write!(f, "nearest {t:?}"),
-            Answer::Nearest(None) => write!(f, "no hit"),
+            Answer::Nearest(None) | Answer::Point(None) => write!(f, "no hit"),
+            Answer::Point(Some(p)) => write!(f, "point {:?}", p.to_array()),
             Answer::Everywhere => write!(f, "every t"),
             Answer::Inconsistent(why) => write!(f, "inconsistent lanes: {why}"),
         }
     }
-}
-
-/// What the kernel computes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Semantics {
-    /// Every root on the whole line, `t ∈ ℝ` ([`Answer::Roots`]).
-    WholeLine,
-    /// The nearest root `t > 0` ([`Answer::Nearest`]), as a ray caster.
-    NearestPositive,
 }
 
 /// What the kernel promises: its semantics, its accuracy, and its inputs
@@ -188,8 +191,14 @@ pub struct Declared {
     pub precision: f64,
     /// Class tolerance, as a multiple of the unit band (0: none).
     pub band_scale: f64,
-    /// Feed only unit-length directions (normalised in f32 first).
+    /// Feed only unit-length directions (normalised in f32 first); skip
+    /// cases whose normalisation fails (`unit-dirs`).
     pub unit_dirs_only: bool,
+    /// Skip cases with a subnormal input (`no-subnormals`).
+    pub no_subnormals: bool,
+    /// Skip cases with a nonzero input of magnitude outside `[lo, hi]`
+    /// (`magnitudes:LO:HI`).
+    pub magnitudes: Option<(f32, f32)>,
 }
 
 impl Declared {
@@ -203,6 +212,8 @@ impl Declared {
             precision: 2f64.powi(-22),
             band_scale: 2f64.powi(20),
             unit_dirs_only: false,
+            no_subnormals: false,
+            magnitudes: None,
         }
     }
 
@@ -215,6 +226,8 @@ impl Declared {
             precision: 2f64.powi(-42),
             band_scale: 1.0,
             unit_dirs_only: false,
+            no_subnormals: false,
+            magnitudes: None,
         }
     }
 
@@ -235,7 +248,32 @@ impl Declared {
             precision: 0.0,
             band_scale: 0.0,
             unit_dirs_only: false,
+            no_subnormals: false,
+            magnitudes: None,
         }
+    }
+
+    /// A careful pure-f32 renderer, declared honestly: [`Declared::f32`]'s
+    /// roots, a class band of `2²⁴` units (a discriminant formed as `R² −
+    /// |f − (f·d̂)d̂|²` in f32 errs by a few `2⁻²⁴ R|f|`), fed unit
+    /// directions, no subnormal input, and every nonzero input between
+    /// `2⁻³²` and `2⁴⁰` (so that squares and their sums neither underflow
+    /// nor overflow).
+    ///
+    /// ```
+    /// use rayoracle::check::rules::{Declared, Semantics};
+    /// let d = Declared::careful_f32_renderer(Semantics::NearestPositive);
+    /// assert!(d.unit_dirs_only && d.no_subnormals);
+    /// assert_eq!(d.magnitudes, Some((2f32.powi(-32), 2f32.powi(40))));
+    /// ```
+    pub fn careful_f32_renderer(semantics: Semantics) -> Declared {
+        Declared {
+            band_scale: 2f64.powi(24),
+            ..Declared::f32(semantics)
+        }
+        .unit_dirs()
+        .no_subnormals()
+        .magnitudes(2f32.powi(-32), 2f32.powi(40))
     }
 
     /// The same, fed only unit-length directions.
@@ -314,6 +352,12 @@ pub struct Exact {
     /// band: `d·n` and the offset `(a − o)·n` of a plane, α, β and γ of a
     /// quadric; empty for a sphere, which is never every `t`.
     pub lies_on: Vec<(f64, f64)>,
+    /// The ray, as judged (for [`Answer::Point`]).
+    pub ray: Ray,
+    /// The surface's function at the origin, exact and rounded to f64
+    /// (`|o − C|² − R²`, `F(o)`, or `(o − a)·n`; `≤ 0` is inside a
+    /// [`Semantics::Solid`]), and its unit band.
+    pub inside: (f64, f64),
 }
 
 impl Exact {
@@ -388,7 +432,9 @@ impl Exact {
     /// A quadric with α = β = 0 has no vertex: there `t` must be a root of
     /// some α, β and γ within their bands, `|α|t² + |β||t| ≥ |γ| − γ band`;
     /// likewise a plane with `d·n = 0`, `|d·n| |t| ≥ |offset| − its band`.
-    fn near_vertex(&self, d: &Declared, t: f32) -> bool {
+    /// With `below`, only the lower of two roots: `t ≤ t*` or within its
+    /// allowed ulps (a nearest hit is the lower root).
+    fn near_vertex(&self, d: &Declared, t: f32, below: bool) -> bool {
         let Some((c, k, s)) = self.vertex else {
             return match self.lies_on[..] {
                 [(0.0, au), (0.0, bu), (g, gu)] if self.alpha.is_some() => {
@@ -403,7 +449,30 @@ impl Exact {
             };
         };
         let reach = (2.0 * (self.margin.abs() + self.band * d.band_scale)).sqrt() * s;
-        (f64::from(t) - c).abs() <= reach || root_within(c as f32, t, d.allowed_ulps(k))
+        let off = f64::from(t) - c;
+        off.abs() <= reach && !(below && off > 0.0) || root_within(c as f32, t, d.allowed_ulps(k))
+    }
+
+    /// The allowance on a root `x` of condition `kappa` in absolute terms,
+    /// `allowed · ulp(x)`, where the root's error is absolute: where that
+    /// interval stays clear of the double root `t*` (the linear model of
+    /// the error holds: a root near 0 from a cancelling `γ` may then cross
+    /// 0), or for a linear root, where its denominator (`d·n`, or β at
+    /// α = 0) is computed to a relative error below ½. Elsewhere 0, and
+    /// roots are judged in ulps only.
+    pub fn reach(&self, d: &Declared, x: f32, kappa: f64) -> f64 {
+        let tol = match d.allowed_ulps(kappa) {
+            0.0 => return 0.0,
+            a => a * ulp_of(f64::from(x)),
+        };
+        let den = |(v, u): (f64, f64)| u * 2f64.powi(44) * d.precision < 0.5 * v.abs();
+        let clear = match (self.vertex, &self.lies_on[..]) {
+            (Some((c, _, _)), _) => tol < (f64::from(x) - c).abs(),
+            (None, [dn, _]) => den(*dn),
+            (None, [_, beta, _]) => den(*beta),
+            _ => false,
+        };
+        if clear { tol } else { 0.0 }
     }
 
     /// Whether a quadric's α is within the band of its terms under `d`, so
@@ -420,9 +489,12 @@ impl Exact {
     pub fn expected(&self, d: &Declared) -> Answer {
         match &self.roots {
             None => Answer::Everywhere,
-            Some(r) => match d.semantics {
-                Semantics::WholeLine => Answer::Roots(r.clone()),
-                Semantics::NearestPositive => Answer::Nearest(r.iter().copied().find(|&t| t > 0.0)),
+            Some(r) => match d.semantics.range() {
+                None => Answer::Roots(r.clone()),
+                Some(_) if d.semantics == Semantics::Solid && self.inside.0 <= 0.0 => {
+                    Answer::Nearest(Some(0.0))
+                }
+                Some((lo, hi)) => Answer::Nearest(r.iter().copied().find(|&t| lo < t && t < hi)),
             },
         }
     }
@@ -473,6 +545,8 @@ pub fn plane(ray: &Ray, p: &Plane) -> Option<(PlaneHit, Exact)> {
             (dot(&d, &n).to_f64(), plane_band(ray, p)),
             (dot(&sub3(&a, &o), &n).to_f64(), offset_band(ray, p)),
         ],
+        ray: *ray,
+        inside: (dot(&sub3(&o, &a), &n).to_f64(), offset_band(ray, p)),
     };
     Some((exact, e))
 }
@@ -515,6 +589,8 @@ pub(crate) fn sphere_given(
         ]),
         vertex: Some(sphere_vertex(ray, s, f64::NAN)),
         lies_on: Vec::new(),
+        ray: *ray,
+        inside: sphere_inside(ray, s),
     }
 }
 
@@ -547,6 +623,23 @@ fn sphere_vertex(ray: &Ray, s: &Sphere, at: f64) -> (f64, f64, f64) {
             / (a * t.abs())
     };
     (vertex, kappa, a.powf(-1.5))
+}
+
+/// The sphere's `|o − C|² − R²`, exact (from the quadratic of the ray with
+/// `d = 0`, where α = β = 0 and γ keeps its sign), and its unit band
+/// `2⁻⁴⁴(2Σ(|oᵢ| + |Cᵢ|)|fᵢ| + R²)`, since `fᵢ = oᵢ − Cᵢ` rounds relative
+/// to its operands.
+#[cfg(feature = "sphere")]
+fn sphere_inside(ray: &Ray, s: &Sphere) -> (f64, f64) {
+    let value = sphere::exact::quadratic(&Ray::new(ray.origin, Vec3::ZERO), s)
+        .map_or(f64::NAN, |z| z.gamma.to_f64());
+    let (o, c) = (ray.origin.as_dvec3(), s.center.as_dvec3());
+    let f = o - c;
+    let terms: f64 = (0..3)
+        .map(|i| 2.0 * (o[i].abs() + c[i].abs()) * f[i].abs())
+        .sum();
+    let r = f64::from(s.radius);
+    (value, (terms + r * r) * 2f64.powi(-44))
 }
 
 /// A quadric case's exact answer, or `None` for a non-finite input.
@@ -593,6 +686,13 @@ pub(crate) fn quadric_given(
             (eq.beta.to_f64(), unit(&bt)),
             (eq.gamma.to_f64(), unit(&gt)),
         ],
+        ray: *ray,
+        inside: (
+            // With d = 0, α = β = 0 and γ = F(o) keeps its sign.
+            quadric::exact::quadratic(&Ray::new(ray.origin, Vec3::ZERO), q)
+                .map_or(f64::NAN, |z| z.gamma.to_f64()),
+            unit(&gt),
+        ),
     }
 }
 
@@ -743,10 +843,13 @@ pub struct RootJudged {
     pub allowed: f64,
     /// The root's condition number.
     pub kappa: f64,
+    /// The same allowance in absolute terms, `allowed · ulp(exact)`, where
+    /// the root's error is absolute ([`Exact::reach`]), else 0.
+    pub reach: f64,
 }
 
 impl RootJudged {
-    fn new(d: &Declared, index: usize, exact: f32, got: f32, kappa: f64) -> RootJudged {
+    fn new(d: &Declared, e: &Exact, index: usize, exact: f32, got: f32, kappa: f64) -> RootJudged {
         RootJudged {
             index,
             exact,
@@ -754,19 +857,24 @@ impl RootJudged {
             ulps: ulps(exact, got),
             allowed: d.allowed_ulps(kappa),
             kappa,
+            reach: e.reach(d, exact, kappa),
         }
     }
 
-    /// Whether the root is within what is allowed: the exact root's bits
-    /// where nothing is.
+    /// Whether the root is within what is allowed, in ulps or within its
+    /// absolute reach: the exact root's bits where nothing is.
     ///
     /// ```
     /// use rayoracle::check::rules::RootJudged;
-    /// let r = RootJudged { index: 0, exact: 0.0, got: -0.0, ulps: 0, allowed: 0.0, kappa: 1.0 };
+    /// let r = RootJudged { index: 0, exact: 0.0, got: -0.0, ulps: 0, allowed: 0.0, kappa: 1.0, reach: 0.0 };
     /// assert!(!r.ok() && RootJudged { allowed: 1.0, ..r }.ok());
+    /// // Across zero: 2⁻²⁰ − 2⁻³⁰ is 2²⁰ floats away, but within a reach of 2⁻¹⁹.
+    /// let r = RootJudged { exact: 2f32.powi(-20), got: -2f32.powi(-30), ulps: 1 << 30, allowed: 8.0, reach: 2f64.powi(-19), ..r };
+    /// assert!(r.ok() && !RootJudged { reach: 0.0, ..r }.ok());
     /// ```
     pub fn ok(&self) -> bool {
         root_within(self.exact, self.got, self.allowed)
+            || self.reach > 0.0 && (f64::from(self.got) - f64::from(self.exact)).abs() <= self.reach
     }
 }
 
@@ -809,10 +917,16 @@ pub enum Fault {
     Neither(f32),
     /// A nearest hit that exists was missed.
     Missed,
-    /// A nearest hit at `t ≤ 0` was returned.
+    /// A nearest hit at `t ≤ t_min` (0 unless declared) or `t ≥ t_max`
+    /// was returned.
     NotPositive,
     /// A nearest hit where there is none.
     Spurious,
+    /// The origin is inside the solid, and the answer is not `t = 0`.
+    Inside,
+    /// A hit point off the exact root's point (the exact root) by more than
+    /// allowed.
+    Point(f32),
 }
 
 impl fmt::Display for Fault {
@@ -845,6 +959,11 @@ impl fmt::Display for Fault {
             Fault::Missed => write!(f, "a hit was missed"),
             Fault::NotPositive => write!(f, "a hit at t ≤ 0 was returned"),
             Fault::Spurious => write!(f, "a hit where there is none"),
+            Fault::Inside => write!(f, "the origin is inside the solid, and t is not 0"),
+            Fault::Point(t) => write!(
+                f,
+                "the point is farther than allowed from the exact point at t = {t:?}"
+            ),
         }
     }
 }
@@ -894,10 +1013,11 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
     }
     let (in_band, alpha_small) = (e.in_band(d), e.alpha_small(d));
     let kappa = |i: usize| e.kappa.get(i).copied().unwrap_or(f64::INFINITY);
-    let close = |i: usize, x: f32, g: f32| RootJudged::new(d, i, x, g, kappa(i)).ok();
+    let close = |i: usize, x: f32, g: f32| RootJudged::new(d, e, i, x, g, kappa(i)).ok();
     let nan = match got {
         Answer::Roots(g) => g.iter().any(|t| t.is_nan()),
         Answer::Nearest(Some(t)) => t.is_nan(),
+        Answer::Point(Some(p)) => p.is_nan(),
         _ => false,
     };
     let expected = e.expected(d);
@@ -908,7 +1028,7 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
             g => g,
         };
         if x.len() == g.len() {
-            seen.extend((0..x.len()).map(|i| RootJudged::new(d, i, x[i], g[i], kappa(i))));
+            seen.extend((0..x.len()).map(|i| RootJudged::new(d, e, i, x[i], g[i], kappa(i))));
         }
     }
     if nan {
@@ -922,11 +1042,15 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
     let fault = match (&expected, got) {
         (Answer::Everywhere, Answer::Everywhere) => return None,
         // A ray lying on the surface has no nearest hit to compare.
-        (Answer::Everywhere, _) if d.semantics == Semantics::NearestPositive => return None,
-        (Answer::Everywhere, Answer::Nearest(_) | Answer::Roots(_)) if e.everywhere_in_band(d) => {
+        (Answer::Everywhere, _) if d.semantics != Semantics::WholeLine => return None,
+        (Answer::Everywhere, Answer::Nearest(_) | Answer::Roots(_) | Answer::Point(_))
+            if e.everywhere_in_band(d) =>
+        {
             return None;
         }
-        (Answer::Everywhere, Answer::Nearest(_) | Answer::Roots(_)) => Fault::NotEverywhere,
+        (Answer::Everywhere, Answer::Nearest(_) | Answer::Roots(_) | Answer::Point(_)) => {
+            Fault::NotEverywhere
+        }
         (_, Answer::Everywhere) if e.everywhere_in_band(d) => return None,
         (_, Answer::Everywhere) => Fault::Class,
         (Answer::Roots(x), Answer::Roots(g)) => {
@@ -936,7 +1060,7 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
             } else if in_band {
                 // Near a double root the class may differ, but each root
                 // must be as near the double root as the band reaches.
-                match g.iter().find(|&&t| !e.near_vertex(d, t)) {
+                match g.iter().find(|&&t| !e.near_vertex(d, t, false)) {
                     None => return None,
                     Some(&t) => Fault::Stray(t),
                 }
@@ -959,33 +1083,116 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
                 Fault::Class
             }
         }
-        (Answer::Nearest(x), Answer::Nearest(g)) => match (x, g) {
-            (None, None) => return None,
-            (Some(x), Some(g)) => {
-                let i = e
-                    .roots
-                    .as_ref()
-                    .and_then(|r| r.iter().position(|t| t == x))
-                    .unwrap_or(0);
-                let r = RootJudged::new(d, i, *x, *g, kappa(i));
-                seen.push(r);
-                if r.ok() {
-                    return None;
-                }
-                Fault::Root(r)
-            }
-            // A root at t ≈ 0, or a class in the band, may go either way
-            // (a hit near the double root).
-            (Some(x), None) | (None, Some(x)) if x.abs() <= 1e-30 => return None,
-            (Some(_), None) if in_band => return None,
-            (None, Some(g)) if in_band && e.near_vertex(d, *g) => return None,
-            (Some(_), None) => Fault::Missed,
-            (None, Some(g)) if *g <= 0.0 => Fault::NotPositive,
-            (None, Some(_)) => Fault::Spurious,
-        },
+        (Answer::Nearest(_), Answer::Nearest(_) | Answer::Point(_)) => {
+            return nearest_fault(d, e, got, in_band, seen);
+        }
         _ => Fault::Semantics(d.semantics),
     };
     Some(fault)
+}
+
+/// A nearest-hit answer ([`Answer::Nearest`] or [`Answer::Point`]) under a
+/// nearest-hit semantics, judged root by root in absolute terms: each exact
+/// root `rᵢ` stands for the interval `rᵢ ± tolᵢ`, `tolᵢ` its allowed ulps
+/// times `ulp(rᵢ)`. A root whose interval crosses `t_min` or `t_max` may
+/// be taken as a hit or not, so the answer may be any root up to the first
+/// one surely inside the range, or none where every root may be outside.
+fn nearest_fault(
+    d: &Declared,
+    e: &Exact,
+    got: &Answer,
+    in_band: bool,
+    seen: &mut Vec<RootJudged>,
+) -> Option<Fault> {
+    let roots = e.roots.as_deref().unwrap_or(&[]);
+    let kappa = |i: usize| e.kappa.get(i).copied().unwrap_or(f64::INFINITY);
+    let tol = |i: usize| e.reach(d, roots[i], kappa(i));
+    let (t, p) = match got {
+        Answer::Nearest(t) => (*t, None),
+        Answer::Point(p) => (p.map(|p| t_of_point(&e.ray, p)), *p),
+        _ => (None, None),
+    };
+    // The hit matches the exact root `x` within `tol` (in t, or in space).
+    let near = |x: f32, i: usize| match (t, p) {
+        (_, Some(p)) => point_near(d, &e.ray, f64::from(x), tol(i), p),
+        (Some(t), None) => RootJudged::new(d, e, i, x, t, kappa(i)).ok(),
+        _ => false,
+    };
+    if d.semantics == Semantics::Solid {
+        let (v, u) = e.inside;
+        let either = e.may_err(d, u) && v.abs() <= u * d.band_scale;
+        let zero = match (t, p) {
+            (_, Some(p)) => point_near(d, &e.ray, 0.0, 0.0, p),
+            (Some(t), None) => t == 0.0,
+            _ => false,
+        };
+        match () {
+            _ if zero && (v <= 0.0 || either) => return None,
+            _ if v <= 0.0 && !either => return Some(Fault::Inside),
+            _ => {}
+        }
+    }
+    let (lo, hi) = d.semantics.range().unwrap_or((0.0, f32::INFINITY));
+    let (lo64, hi64) = (f64::from(lo), f64::from(hi));
+    let mut candidates = Vec::new();
+    let mut none_ok = true;
+    for (i, &r) in roots.iter().enumerate() {
+        let (r, w) = (f64::from(r), tol(i));
+        if r + w > lo64 && r - w < hi64 {
+            candidates.push(i);
+        }
+        if !(r - w <= lo64 || r + w >= hi64) {
+            none_ok = false;
+            break;
+        }
+    }
+    let expected = roots.iter().position(|&r| lo < r && r < hi);
+    let Some(t) = t else {
+        // A root at t ≈ 0, or a class in the band, may go either way.
+        return match expected.map(|i| roots[i]) {
+            _ if none_ok || in_band => None,
+            Some(x) if x.abs() <= 1e-30 => None,
+            _ => Some(Fault::Missed),
+        };
+    };
+    if let (Some(i), None) = (expected, p) {
+        seen.push(RootJudged::new(d, e, i, roots[i], t, kappa(i)));
+    }
+    if expected.is_none() && t.abs() <= 1e-30 {
+        return None;
+    }
+    if p.is_none() && !(lo < t && t < hi) {
+        return Some(Fault::NotPositive);
+    }
+    // In the band, the nearer of two roots near the double root.
+    if candidates.iter().any(|&i| near(roots[i], i)) || in_band && e.near_vertex(d, t, true) {
+        return None;
+    }
+    Some(match (expected, p) {
+        (None, _) => Fault::Spurious,
+        (Some(i), Some(_)) => Fault::Point(roots[i]),
+        (Some(_), None) => Fault::Root(*seen.last()?),
+    })
+}
+
+/// The `t` nearest a point on the ray, `(p − o)·d / d·d`, for the band's
+/// reach of a double root.
+fn t_of_point(ray: &Ray, p: Vec3) -> f32 {
+    let (o, d) = (ray.origin.as_dvec3(), ray.dir.as_dvec3());
+    ((p.as_dvec3() - o).dot(d) / d.length_squared()) as f32
+}
+
+/// Whether `p` is the point `o + t·d` within `tol` of `t`: each component
+/// within `(tol + ½ ulp(t))·|dᵢ| + 2^bits · ulp(|oᵢ| + |t dᵢ|)`.
+fn point_near(d: &Declared, ray: &Ray, t: f64, tol: f64, p: Vec3) -> bool {
+    let (o, dir) = (ray.origin.as_dvec3(), ray.dir.as_dvec3());
+    let half = 0.5 * ulp_of(t);
+    (0..3).all(|j| {
+        let x = o[j] + t * dir[j];
+        let scale = o[j].abs() + (t * dir[j]).abs();
+        let allow = (tol + half) * dir[j].abs() + 2f64.powf(d.bits) * ulp_of(scale);
+        (f64::from(p[j]) - x).abs() <= allow
+    })
 }
 
 /// One camera direction component compared with the oracle's.
