@@ -19,6 +19,7 @@ mod props_sphere;
 mod props_sphere_quadric;
 mod render_snapshots;
 mod scene_errors;
+mod semantics;
 mod stiff_catalogue;
 mod stiff_report;
 mod support;

@@ -187,3 +187,80 @@ fn a_segment_kernel_must_keep_to_its_range() {
     let k = |ray: &Ray, s: &Sphere| Answer::Nearest(in_range(careful_roots(ray, s), 1e-3, 5.0));
     short.sphere(&k).assert_ok();
 }
+
+/// Where the near root of a huge sphere, off by its own κ allowance,
+/// crosses 0, the careful kernel takes the far root: within the model, so
+/// it passes (before, judged in ulps across 0, it failed by 2·10⁸ ulps).
+/// An answer off by more still fails.
+#[test]
+fn a_root_near_zero_may_cross_it() {
+    let g = Gate::new(Declared::f32(Semantics::NearestPositive));
+    let cases = [
+        (
+            Ray::new(Vec3::new(-6.536133, -2.4682617, 2.2734375), Vec3::Y),
+            Sphere::new(Vec3::new(79600.26, 165400.27, -95403.664), 206875.8),
+        ),
+        (
+            Ray::new(Vec3::ZERO, -Vec3::X),
+            Sphere::new(Vec3::new(-3363461.8, -1952250.0, -5444425.0), 6690733.5),
+        ),
+    ];
+    for (r, s) in cases {
+        let Answer::Nearest(Some(t)) = nearest(&r, &s) else {
+            panic!("a hit")
+        };
+        assert!(g.judge_sphere(&r, &s, Answer::Nearest(Some(t))).is_ok());
+        assert!(
+            g.judge_sphere(&r, &s, Answer::Nearest(Some(t * 1.01)))
+                .is_err()
+        );
+        assert!(g.judge_sphere(&r, &s, Answer::Nearest(None)).is_err());
+    }
+}
+
+/// At an exact tangent off small integers the class has a band: the
+/// nearer of two roots the kernel finds near the double root passes, as
+/// both do in whole-line semantics, but the farther one does not.
+#[test]
+fn the_nearer_root_near_a_tangent_passes() {
+    let (r, s) = (
+        Ray::new(
+            Vec3::new(-562.0, -724.0, 222.0),
+            Vec3::new(160.0, 216.0, -88.0),
+        ),
+        Sphere::new(Vec3::new(18.0, 40.0, -30.0), 60.0),
+    );
+    let g = Gate::new(Declared::f32(Semantics::NearestPositive));
+    assert_eq!(nearest(&r, &s), Answer::Nearest(Some(3.4997933)));
+    assert!(g.judge_sphere(&r, &s, nearest(&r, &s)).is_ok());
+    assert!(
+        g.judge_sphere(&r, &s, Answer::Nearest(Some(3.5002067)))
+            .is_err()
+    );
+    let w = Gate::new(Declared::f32(Semantics::WholeLine));
+    assert!(
+        w.judge_sphere(&r, &s, Answer::Roots(vec![3.4997933, 3.5002067]))
+            .is_ok()
+    );
+}
+
+/// With unit directions, a direction whose f32 normalisation fails is
+/// skipped and counted, never fed as a zero direction.
+#[test]
+fn unit_directions_skip_what_does_not_normalise() {
+    let g = Gate::new(Declared::f32(Semantics::NearestPositive).unit_dirs());
+    for (family, cases) in g.cases("sphere") {
+        for c in cases {
+            if let rayoracle::case::Case::Sphere(r, _) = c {
+                let len = r.dir.length();
+                assert!((len - 1.0).abs() < 1e-6, "{family}: {r:?}");
+            }
+        }
+    }
+    let r = g.sphere(&nearest);
+    assert!(
+        r.skipped.iter().any(|s| s.0 == "unit-dirs" && s.1 > 0),
+        "{:?}",
+        r.skipped
+    );
+}
