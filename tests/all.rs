@@ -8,6 +8,7 @@ mod bounds;
 mod bounds_search;
 mod careful_f32;
 mod determinism;
+mod far_quadric;
 mod fixtures;
 mod known_wrong;
 mod non_finite;
