@@ -56,6 +56,11 @@ fn segment(ray: &Ray, s: &Sphere) -> Answer {
     Answer::Nearest(in_range(careful_roots(ray, s), 1e-3, 1e30))
 }
 
+fn both_in_segment(ray: &Ray, s: &Sphere) -> Answer {
+    let roots = careful_roots(ray, s).into_iter();
+    Answer::Roots(roots.filter(|&t| 1e-3 < t && t < 1e30).collect())
+}
+
 fn whole_line(ray: &Ray, s: &Sphere) -> Answer {
     Answer::Roots(careful_roots(ray, s))
 }
@@ -96,6 +101,7 @@ fn the_careful_sphere_passes_its_honest_declaration() {
         careful(Semantics::WholeLine).sphere(&whole_line),
         careful(Semantics::Solid).sphere(&solid),
         careful("range:0.001:1e30".parse().unwrap()).sphere(&segment),
+        careful("roots-in:0.001:1e30".parse().unwrap()).sphere(&both_in_segment),
     ];
     for r in &runs {
         r.assert_ok();

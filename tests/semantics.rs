@@ -41,6 +41,25 @@ fn a_range_answers_its_nearest_root_inside() {
 }
 
 #[test]
+fn roots_in_a_range_are_every_root_inside() {
+    let r = |t: &[f32]| Answer::Roots(t.to_vec());
+    assert!(ok(&strict("roots-in:0:10"), r(&[4.0, 6.0])));
+    assert!(!ok(&strict("roots-in:0:10"), r(&[4.0])));
+    assert!(ok(&strict("roots-in:0:5"), r(&[4.0])));
+    assert!(!ok(&strict("roots-in:0:5"), r(&[4.0, 6.0])));
+    assert!(!ok(&strict("roots-in:0:5"), r(&[])));
+    assert!(ok(&strict("roots-in:5:10"), r(&[6.0])));
+    assert!(ok(&strict("roots-in:0:4"), r(&[])));
+    assert!(!ok(&strict("roots-in:0:4"), r(&[4.0])));
+    assert!(!ok(&strict("roots-in:0:10"), Answer::Nearest(Some(4.0))));
+    // Off by one ulp: only a declared tolerance passes it.
+    let off = r(&[4.0, 6.0f32.next_up()]);
+    assert!(!ok(&strict("roots-in:0:10"), off.clone()));
+    let f32 = Gate::new(Declared::f32("roots-in:0:10".parse().unwrap()));
+    assert!(ok(&f32, off));
+}
+
+#[test]
 fn a_solid_answers_zero_inside() {
     let g = strict("solid");
     let (_, s) = ball();
@@ -105,7 +124,13 @@ fn hit_points_are_judged_against_the_exact_point() {
 
 #[test]
 fn every_name_parses_and_prints_back() {
-    for s in ["whole-line", "nearest", "solid", "range:0.001:1e30"] {
+    for s in [
+        "whole-line",
+        "nearest",
+        "solid",
+        "range:0.001:1e30",
+        "roots-in:-1:1",
+    ] {
         let sem: Semantics = s.parse().unwrap();
         assert_eq!(sem.to_string().parse::<Semantics>(), Ok(sem));
     }

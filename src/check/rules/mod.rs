@@ -518,6 +518,9 @@ impl Exact {
             None => Answer::Everywhere,
             Some(r) => match d.semantics.range() {
                 None => Answer::Roots(r.clone()),
+                Some((lo, hi)) if matches!(d.semantics, Semantics::RootsIn { .. }) => {
+                    Answer::Roots(r.iter().copied().filter(|&t| lo < t && t < hi).collect())
+                }
                 Some(_) if d.semantics == Semantics::Solid && self.inside.0 <= 0.0 => {
                     Answer::Nearest(Some(0.0))
                 }
@@ -1042,6 +1045,8 @@ pub enum Fault {
     Spurious,
     /// The origin is inside the solid, and the answer is not `t = 0`.
     Inside,
+    /// A root outside the declared range of `t`.
+    OutOfRange(f32),
     /// A hit point off the exact root's point (the exact root) by more than
     /// allowed.
     Point(f32),
@@ -1078,6 +1083,7 @@ impl fmt::Display for Fault {
             Fault::NotPositive => write!(f, "a hit at t ≤ 0 was returned"),
             Fault::Spurious => write!(f, "a hit where there is none"),
             Fault::Inside => write!(f, "the origin is inside the solid, and t is not 0"),
+            Fault::OutOfRange(t) => write!(f, "the root {t:?} is outside the declared range"),
             Fault::Point(t) => write!(
                 f,
                 "the point is farther than allowed from the exact point at t = {t:?}"
@@ -1139,7 +1145,9 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
         _ => false,
     };
     let expected = e.expected(d);
-    if let (Answer::Roots(x), Answer::Roots(g)) = (&expected, got) {
+    if let (Answer::Roots(x), Answer::Roots(g), Semantics::WholeLine) =
+        (&expected, got, d.semantics)
+    {
         // With a band, a single root may come twice.
         let g = match g.as_slice() {
             [a, b] if x.len() == 1 && a == b && d.band_scale != 0.0 => &g[..1],
@@ -1160,7 +1168,14 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
     let fault = match (&expected, got) {
         (Answer::Everywhere, Answer::Everywhere) => return None,
         // A ray lying on the surface has no nearest hit to compare.
-        (Answer::Everywhere, _) if d.semantics != Semantics::WholeLine => return None,
+        (Answer::Everywhere, _)
+            if !matches!(
+                d.semantics,
+                Semantics::WholeLine | Semantics::RootsIn { .. }
+            ) =>
+        {
+            return None;
+        }
         (Answer::Everywhere, Answer::Nearest(_) | Answer::Roots(_) | Answer::Point(_))
             if e.everywhere_in_band(d) =>
         {
@@ -1171,6 +1186,9 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
         }
         (_, Answer::Everywhere) if e.everywhere_in_band(d) => return None,
         (_, Answer::Everywhere) => Fault::Class,
+        (Answer::Roots(_), Answer::Roots(g)) if d.semantics != Semantics::WholeLine => {
+            return roots_in_fault(d, e, g, in_band, seen);
+        }
         (Answer::Roots(x), Answer::Roots(g)) => {
             let one_or_two = x.len().min(g.len()) == 1 && x.len().max(g.len()) == 2;
             if !seen.is_empty() || x.is_empty() && g.is_empty() {
@@ -1290,6 +1308,80 @@ fn nearest_fault(
         (None, _) => Fault::Spurious,
         (Some(i), Some(_)) => Fault::Point(roots[i]),
         (Some(_), None) => Fault::Root(*seen.last()?),
+    })
+}
+
+/// Every root in `(t_min, t_max)` ([`Semantics::RootsIn`]): the answer
+/// must be the exact roots in order, each by its own κ, leaving out only
+/// roots whose absolute reach crosses an end of the range and keeping every
+/// root surely inside; with a band, a single root may come twice, and a
+/// class forgiven near a tangent wants roots near it.
+fn roots_in_fault(
+    d: &Declared,
+    e: &Exact,
+    g: &[f32],
+    in_band: bool,
+    seen: &mut Vec<RootJudged>,
+) -> Option<Fault> {
+    let roots = e.roots.as_deref().unwrap_or(&[]);
+    let kappa = |i: usize| e.kappa.get(i).copied().unwrap_or(f64::INFINITY);
+    let (lo, hi) = d
+        .semantics
+        .range()
+        .unwrap_or((f32::NEG_INFINITY, f32::INFINITY));
+    let (lo64, hi64) = (f64::from(lo), f64::from(hi));
+    if let Some(&t) = g.iter().find(|&&t| !(lo < t && t < hi)) {
+        return Some(Fault::OutOfRange(t));
+    }
+    let g = match g {
+        [a, b] if a == b && d.band_scale != 0.0 => &g[..1],
+        g => g,
+    };
+    let span = |i: usize| {
+        let (r, w) = (f64::from(roots[i]), e.reach(d, roots[i], kappa(i)));
+        (r - w, r + w)
+    };
+    let may = |i: usize| span(i).1 > lo64 && span(i).0 < hi64;
+    let sure = |i: usize| span(i).0 > lo64 && span(i).1 < hi64;
+    // Each subsequence of the exact roots the answer may stand for.
+    let n = roots.len();
+    let mut first_bad = None;
+    for mask in 0u32..(1 << n) {
+        let pick: Vec<usize> = (0..n).filter(|i| mask >> i & 1 == 1).collect();
+        let picked = |i: usize| mask >> i & 1 == 1;
+        if pick.len() != g.len() || (0..n).any(|i| if picked(i) { !may(i) } else { sure(i) }) {
+            continue;
+        }
+        let judged: Vec<RootJudged> = pick
+            .iter()
+            .zip(g)
+            .map(|(&i, &t)| RootJudged::new(d, e, i, roots[i], t, kappa(i)))
+            .collect();
+        match judged.iter().find(|r| !r.ok()) {
+            None => {
+                seen.extend(judged);
+                return None;
+            }
+            Some(r) => {
+                first_bad.get_or_insert(*r);
+            }
+        }
+    }
+    if in_band && g.iter().all(|&t| e.near_vertex(d, t, false)) {
+        return None;
+    }
+    if e.alpha_small(d)
+        && g.len() == 1
+        && (0..n).any(|i| RootJudged::new(d, e, i, roots[i], g[0], kappa(i)).ok())
+    {
+        return None;
+    }
+    Some(match first_bad {
+        Some(r) => {
+            seen.push(r);
+            Fault::Root(r)
+        }
+        None => Fault::Class,
     })
 }
 

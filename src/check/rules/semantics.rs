@@ -13,6 +13,7 @@ use std::str::FromStr;
 /// | `nearest` | the nearest root `t > 0` | [`Answer::Nearest`](super::Answer::Nearest) or [`Answer::Point`](super::Answer::Point) |
 /// | `range:T0:T1` | the nearest root `T0 < t < T1` | the same |
 /// | `solid` | `t = 0` when the origin is inside, else the nearest `t > 0` | the same |
+/// | `roots-in:T0:T1` | every root `T0 < t < T1`, ascending | [`Answer::Roots`](super::Answer::Roots) |
 ///
 /// ```
 /// use rayoracle::check::rules::Semantics;
@@ -42,14 +43,23 @@ pub enum Semantics {
     /// sphere, `F(o) ≤ 0` for a quadric, `(o − a)·n ≤ 0` for a plane,
     /// the half-space behind its normal), else the nearest root `t > 0`.
     Solid,
+    /// Every root with `t_min < t < t_max`, ascending
+    /// ([`Answer::Roots`](super::Answer::Roots)): both hits of a segment.
+    RootsIn {
+        /// Roots at or below this are left out.
+        t_min: f32,
+        /// Roots at or above this are left out.
+        t_max: f32,
+    },
 }
 
 impl Semantics {
     /// Every valid form, for error messages and help texts.
-    pub const FORMS: &'static str = "whole-line, nearest, solid, range:T0:T1 (T0 < T1)";
+    pub const FORMS: &'static str =
+        "whole-line, nearest, solid, range:T0:T1, roots-in:T0:T1 (T0 < T1)";
 
-    /// The open interval of `t` a nearest-hit semantics looks in (`Solid`
-    /// outside the solid too); `None` for the whole line.
+    /// The open interval of `t` a semantics looks in (`Solid` outside the
+    /// solid); `None` for the whole line.
     ///
     /// ```
     /// use rayoracle::check::rules::Semantics;
@@ -60,7 +70,9 @@ impl Semantics {
         match *self {
             Semantics::WholeLine => None,
             Semantics::NearestPositive | Semantics::Solid => Some((0.0, f32::INFINITY)),
-            Semantics::Range { t_min, t_max } => Some((t_min, t_max)),
+            Semantics::Range { t_min, t_max } | Semantics::RootsIn { t_min, t_max } => {
+                Some((t_min, t_max))
+            }
         }
     }
 }
@@ -72,6 +84,7 @@ impl fmt::Display for Semantics {
             Semantics::NearestPositive => write!(f, "nearest"),
             Semantics::Solid => write!(f, "solid"),
             Semantics::Range { t_min, t_max } => write!(f, "range:{t_min:?}:{t_max:?}"),
+            Semantics::RootsIn { t_min, t_max } => write!(f, "roots-in:{t_min:?}:{t_max:?}"),
         }
     }
 }
@@ -86,16 +99,21 @@ impl FromStr for Semantics {
             "nearest" => Ok(Semantics::NearestPositive),
             "solid" => Ok(Semantics::Solid),
             _ => {
-                let rest = s.strip_prefix("range:").ok_or_else(bad)?;
+                let (nearest, rest) = match (s.strip_prefix("range:"), s.strip_prefix("roots-in:"))
+                {
+                    (Some(rest), _) => (true, rest),
+                    (_, Some(rest)) => (false, rest),
+                    _ => return Err(bad()),
+                };
                 let (a, b) = rest.split_once(':').ok_or_else(bad)?;
                 let (t_min, t_max) = (
                     a.parse::<f32>().map_err(|_| bad())?,
                     b.parse::<f32>().map_err(|_| bad())?,
                 );
-                if t_min < t_max {
-                    Ok(Semantics::Range { t_min, t_max })
-                } else {
-                    Err(bad())
+                match () {
+                    _ if !(t_min < t_max) => Err(bad()),
+                    _ if nearest => Ok(Semantics::Range { t_min, t_max }),
+                    _ => Ok(Semantics::RootsIn { t_min, t_max }),
                 }
             }
         }
