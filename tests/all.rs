@@ -6,7 +6,9 @@
 
 mod bounds;
 mod bounds_search;
+mod careful_f32;
 mod determinism;
+mod far_quadric;
 mod fixtures;
 mod known_wrong;
 mod non_finite;
@@ -18,6 +20,7 @@ mod props_sphere;
 mod props_sphere_quadric;
 mod render_snapshots;
 mod scene_errors;
+mod semantics;
 mod stiff_catalogue;
 mod stiff_report;
 mod support;

@@ -1,16 +1,18 @@
-//! `rayoracle answer`: rayoracle's own kernels as a protocol peer.
+//! `rayoracle answer`: the exact oracle as a protocol peer.
 
+use rayoracle::camera;
 use rayoracle::case::{Case, Kind};
 use rayoracle::check::gate::protocol::answer_line;
-use rayoracle::check::gate::{Answer, Reply, Semantics};
+use rayoracle::check::gate::{Answer, Declared, Reply, Semantics};
+use rayoracle::check::rules;
 use rayoracle::eval::{Implementation, Outcome};
 use rayoracle::hit::Class;
 use std::io::{self, BufRead, Write};
 
-/// `rayoracle answer`: answers case lines on stdin with rayoracle's own
-/// correctly rounded reference kernels, one answer line each, flushed: a
-/// peer that speaks the protocol, to compare a kernel's answers with or to
-/// time the pipe.
+/// `rayoracle answer`: answers case lines on stdin with the exact
+/// oracle's answer in the semantics (what the gate expects), one answer
+/// line each, flushed: a peer that speaks the protocol, to compare a
+/// kernel's answers with or to time the pipe.
 pub fn answer_command(semantics: Semantics) -> u8 {
     let mut out = io::stdout().lock();
     let mut code = 0;
@@ -46,21 +48,33 @@ pub fn answer_command(semantics: Semantics) -> u8 {
     code
 }
 
-/// The reference kernel's reply in the semantics.
+/// The exact answer in the semantics: the oracle's roots, read as the
+/// semantics reads them (the answer the gate expects), or the camera's
+/// correctly rounded ray; for a non-finite input, which the oracle does
+/// not take, the reference kernel's.
 fn reply(case: &Case, semantics: Semantics) -> Reply {
+    let d = Declared::correctly_rounded(semantics);
+    let exact = match case {
+        Case::Plane(r, p) => rules::plane(r, p).map(|e| e.1),
+        Case::Sphere(r, s) => rules::sphere(r, s).map(|e| e.1),
+        Case::Quadric(r, q) => rules::quadric(r, q).map(|e| e.1),
+        Case::Camera(p, [x, y]) => return Reply::Camera(camera::exact::ray(p, *x, *y).ok()),
+    };
+    if let Some(e) = exact {
+        return Reply::Answer(e.expected(&d));
+    }
     match Implementation::Reference.run(case) {
-        Outcome::Ray(r) => Reply::Camera(Some(r)),
-        Outcome::Error(_) if case.kind() == Kind::Camera => Reply::Camera(None),
-        Outcome::Error(e) => Reply::Failed(e),
         Outcome::Hit { class, roots } => {
             let roots = roots.as_slice();
-            Reply::Answer(match (class, semantics) {
+            Reply::Answer(match (class, semantics.range()) {
                 (Class::All | Class::InPlane, _) => Answer::Everywhere,
-                (_, Semantics::NearestPositive) => {
-                    Answer::Nearest(roots.iter().copied().find(|&t| t > 0.0))
+                (_, None) => Answer::Roots(roots.to_vec()),
+                (_, Some((lo, hi))) => {
+                    Answer::Nearest(roots.iter().copied().find(|&t| lo < t && t < hi))
                 }
-                _ => Answer::Roots(roots.to_vec()),
             })
         }
+        Outcome::Ray(r) => Reply::Camera(Some(r)),
+        Outcome::Error(e) => Reply::Failed(e),
     }
 }

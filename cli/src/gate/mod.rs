@@ -37,16 +37,24 @@ pub struct Selection {
 /// What the kernel promises.
 #[derive(Args, Debug, Clone)]
 pub struct Declaration {
-    /// nearest (the nearest t > 0, answered {"t": …}) or whole-line
-    /// (answered {"class": …, "roots": […]}). Cameras answer {"dir": […]}
-    /// under either.
+    /// What the kernel computes: nearest (the nearest t > 0), whole-line
+    /// (every root), solid (t = 0 from inside), range:T0:T1 (the nearest
+    /// root in the open range), roots-in:T0:T1 (every root in it). A
+    /// nearest hit is answered {"t": …} or {"point": […]}, roots
+    /// {"class": …, "roots": […]}; cameras answer {"dir": […]} under any.
     #[arg(long, value_parser = parse_semantics, default_value = "nearest")]
     pub semantics: Semantics,
-    /// The accuracy promised: f32 (a careful f32 kernel), faithful (one
-    /// ulp) or correctly-rounded (the oracle's bits).
-    #[arg(long, value_name = "LEVEL", default_value = "f32", value_parser = ["f32", "faithful", "correctly-rounded"])]
+    /// The accuracy promised: f32 (a careful f32 kernel), careful-f32-renderer
+    /// (the same, with the preconditions of a careful f32 renderer),
+    /// faithful (one ulp) or correctly-rounded (the oracle's bits).
+    #[arg(long, value_name = "LEVEL", default_value = "f32", value_parser = ["f32", "careful-f32-renderer", "faithful", "correctly-rounded"])]
     pub declared: String,
-    /// Send only unit-length directions (normalised in f32).
+    /// A precondition: unit-dirs, no-subnormals or magnitudes:LO:HI. A case
+    /// that violates one is skipped and counted; repeat for more.
+    #[arg(long = "require", value_name = "PRECONDITION")]
+    pub requires: Vec<String>,
+    /// Send only unit-length directions (normalised in f32): the same as
+    /// --require unit-dirs.
     #[arg(long)]
     pub unit_dirs: bool,
     /// Override the bits allowed on a well-conditioned root.
@@ -61,20 +69,25 @@ pub struct Declaration {
 }
 
 impl Declaration {
-    /// The declaration these flags make.
-    pub fn declared(&self) -> Declared {
+    /// The declaration these flags make, or what is wrong with a
+    /// precondition.
+    pub fn declared(&self) -> Result<Declared, String> {
         let mut d = match self.declared.as_str() {
             "faithful" => Declared::faithful(self.semantics),
             "correctly-rounded" => Declared::correctly_rounded(self.semantics),
+            "careful-f32-renderer" => Declared::careful_f32_renderer(self.semantics),
             _ => Declared::f32(self.semantics),
         };
         if self.unit_dirs {
             d = d.unit_dirs();
         }
+        for r in &self.requires {
+            d = d.require(r).map_err(|e| format!("--require {r}: {e}"))?;
+        }
         d.bits = self.bits.unwrap_or(d.bits);
         d.precision = self.precision.unwrap_or(d.precision);
         d.band_scale = self.band_scale.unwrap_or(d.band_scale);
-        d
+        Ok(d)
     }
 }
 
@@ -83,62 +96,44 @@ fn parse_kind(s: &str) -> Result<Kind, String> {
 }
 
 pub fn parse_semantics(s: &str) -> Result<Semantics, String> {
-    match s {
-        "nearest" => Ok(Semantics::NearestPositive),
-        "whole-line" => Ok(Semantics::WholeLine),
-        _ => Err(format!(
-            "\"{s}\" is not a semantics: expected nearest or whole-line"
-        )),
-    }
+    s.parse()
 }
 
-/// The gate for these flags.
-fn gate(sel: &Selection, decl: &Declaration) -> Gate {
-    let mut g = Gate::new(decl.declared()).budget(sel.budget);
+/// Cases by family, in the order run.
+type Families = Vec<(String, Vec<Case>)>;
+
+/// The gate these flags make and its families, or exit code 2 after
+/// naming what is wrong (a precondition, a `--family` that selects
+/// nothing).
+fn setup(command: &str, sel: &Selection, decl: &Declaration) -> Result<(Gate, Families), u8> {
+    let fail = |e: String| {
+        eprintln!("rayoracle {command}: {e}");
+        2
+    };
+    let mut g = Gate::new(decl.declared().map_err(fail)?)
+        .budget(sel.budget)
+        .only(&sel.families);
     if let Some(seed) = sel.seed {
         g.seed = seed;
     }
-    g
-}
-
-/// The selected families, each case with its id (its place in the order
-/// sent, from 0).
-fn families(g: &Gate, sel: &Selection) -> Vec<(String, Vec<Case>)> {
-    let wanted = |f: &str| {
-        sel.families.is_empty()
-            || sel.families.iter().any(|w| {
-                f == w
-                    || f.strip_prefix(w.as_str())
-                        .is_some_and(|r| r.starts_with('/'))
-            })
-    };
-    g.cases(sel.kind.as_str())
-        .into_iter()
-        .filter(|f| wanted(&f.0))
-        .collect()
-}
-
-/// Refuses a `--family` that selects nothing, naming the families there are.
-fn check_selection(all: &[(String, Vec<Case>)], sel: &Selection) -> Result<(), String> {
+    let all = g.cases(sel.kind.as_str());
     if all.is_empty() {
-        return Err(format!(
+        return Err(fail(format!(
             "--family {}: no {} family has that name or sits under it; run `rayoracle cases --kind {}` to see them",
             sel.families.join(", --family "),
             sel.kind.as_str(),
             sel.kind.as_str()
-        ));
+        )));
     }
-    Ok(())
+    Ok((g, all))
 }
 
 /// `rayoracle cases`: every selected case as a protocol line.
 pub fn cases_command(sel: &Selection, decl: &Declaration) -> u8 {
-    let g = gate(sel, decl);
-    let all = families(&g, sel);
-    if let Err(e) = check_selection(&all, sel) {
-        eprintln!("rayoracle cases: {e}");
-        return 2;
-    }
+    let all = match setup("cases", sel, decl) {
+        Ok((_, all)) => all,
+        Err(code) => return code,
+    };
     let mut out = BufWriter::new(io::stdout().lock());
     let lines = all
         .iter()
@@ -168,15 +163,10 @@ fn finish(report: &Report, kind: Kind, json: bool) -> u8 {
 
 /// `rayoracle judge`: answers read from a file, matched to cases by id.
 pub fn judge_command(sel: &Selection, decl: &Declaration, answers: &PathBuf, json: bool) -> u8 {
-    let g = Gate {
-        shrink: false,
-        ..gate(sel, decl)
+    let (g, all) = match setup("judge", sel, decl) {
+        Ok((g, all)) => (Gate { shrink: false, ..g }, all),
+        Err(code) => return code,
     };
-    let all = families(&g, sel);
-    if let Err(e) = check_selection(&all, sel) {
-        eprintln!("rayoracle judge: {e}");
-        return 2;
-    }
     let text = if answers.as_os_str() == "-" {
         io::read_to_string(io::stdin())
     } else {
@@ -236,7 +226,8 @@ pub fn judge_command(sel: &Selection, decl: &Declaration, answers: &PathBuf, jso
             errors.len() - 10
         );
     }
-    let report = g.run(&all, &mut Recorded(Some(replies)));
+    let mut report = g.run(&all, &mut Recorded(Some(replies)));
+    report.skipped = g.skipped(sel.kind.as_str());
     finish(&report, sel.kind, json).max(u8::from(!errors.is_empty()))
 }
 
@@ -259,15 +250,10 @@ pub fn gate_command(
     shrink: bool,
     json: bool,
 ) -> u8 {
-    let g = Gate {
-        shrink,
-        ..gate(sel, decl)
+    let (g, all) = match setup("gate", sel, decl) {
+        Ok((g, all)) => (Gate { shrink, ..g }, all),
+        Err(code) => return code,
     };
-    let all = families(&g, sel);
-    if let Err(e) = check_selection(&all, sel) {
-        eprintln!("rayoracle gate: {e}");
-        return 2;
-    }
     let mut kernel = match Program::start(program, Duration::from_secs_f64(timeout.max(0.001))) {
         Ok(k) => k,
         Err(e) => {
@@ -286,7 +272,8 @@ pub fn gate_command(
         .expect("a valid template")
         .progress_chars("=> "),
     );
-    let report = g.run(&all, &mut kernel);
+    let mut report = g.run(&all, &mut kernel);
+    report.skipped = g.skipped(sel.kind.as_str());
     kernel.bar.finish_and_clear();
     kernel.stop();
     finish(&report, sel.kind, json)

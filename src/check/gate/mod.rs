@@ -212,6 +212,9 @@ pub struct Report {
     /// that exited, hung or answered too few lines), naming the case; the
     /// cases judged before it stay in the report.
     pub stopped: Option<String>,
+    /// `(precondition, cases skipped)`: cases not run because they violate
+    /// a declared precondition ([`Declared::skips`]).
+    pub skipped: Vec<(String, usize)>,
 }
 
 impl Report {
@@ -288,6 +291,9 @@ impl Report {
                 "family": f.family, "eval_line": f.eval_line, "expected": f.expected,
                 "got": f.got, "why": f.why,
             })).collect::<Vec<_>>(),
+            "skipped": self.skipped.iter().map(|(p, n)| serde_json::json!({
+                "precondition": p, "cases": n,
+            })).collect::<Vec<_>>(),
             "stopped": self.stopped,
         })
     }
@@ -304,6 +310,12 @@ impl fmt::Display for Report {
         }
         for failure in &self.failures {
             writeln!(f, "\n{failure}")?;
+        }
+        for (precondition, n) in &self.skipped {
+            writeln!(
+                f,
+                "\nskipped: {n} cases outside the precondition {precondition}"
+            )?;
         }
         if let Some(why) = &self.stopped {
             writeln!(f, "\nstopped: {why}")?;
@@ -322,7 +334,7 @@ impl fmt::Display for Report {
 
 /// A gate run's settings: the declaration, how many cases a family, the
 /// seed of the random families.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct Gate {
     /// What the kernel promises.
     pub declared: Declared,
@@ -332,6 +344,9 @@ pub struct Gate {
     pub seed: u64,
     /// Whether failing cases are shrunk (by asking the kernel again).
     pub shrink: bool,
+    /// Only these families, and the families under them (`sphere/random`
+    /// takes `sphere/random/aimed`); empty for every family.
+    pub only: Vec<String>,
 }
 
 /// A case to judge: the family and the inputs.
@@ -350,6 +365,7 @@ impl Gate {
             budget: 256,
             seed: 0x7261_796f,
             shrink: true,
+            only: Vec::new(),
         }
     }
 
@@ -444,18 +460,73 @@ impl Gate {
     /// assert!(families.iter().all(|f| f.1.len() <= 4));
     /// ```
     pub fn cases(&self, kind: &str) -> Vec<(String, Vec<Case>)> {
-        self.load(kind).0
+        self.load(kind, &mut Vec::new()).0
     }
 
-    /// [`Gate::cases`], and the fixture lines that could not be loaded.
-    fn load(&self, kind: &str) -> (Vec<(String, Vec<Case>)>, Vec<String>) {
+    /// The same gate, running only the families named, and those under
+    /// them.
+    ///
+    /// ```
+    /// use rayoracle::check::gate::{Declared, Gate, Semantics};
+    /// let g = Gate::new(Declared::f32(Semantics::WholeLine)).only(["sphere/random", "sphere/two"]);
+    /// let names: Vec<String> = g.cases("sphere").into_iter().map(|f| f.0).collect();
+    /// assert_eq!(names, ["sphere/two", "sphere/random/aimed", "sphere/random/inside"]);
+    /// ```
+    pub fn only<S: Into<String>>(self, families: impl IntoIterator<Item = S>) -> Gate {
+        Gate {
+            only: families.into_iter().map(Into::into).collect(),
+            ..self
+        }
+    }
+
+    /// How many of a kind's cases each declared precondition skips
+    /// ([`Declared::skips`]), `(precondition, cases)`; what a run's
+    /// [`Report::skipped`] holds.
+    ///
+    /// ```
+    /// use rayoracle::check::gate::{Declared, Gate, Semantics};
+    /// let g = Gate::new(Declared::f32(Semantics::WholeLine).no_subnormals());
+    /// assert!(g.skipped("sphere").iter().any(|(p, n)| p == "no-subnormals" && *n > 0));
+    /// ```
+    pub fn skipped(&self, kind: &str) -> Vec<(String, usize)> {
+        let mut skipped = Vec::new();
+        self.load(kind, &mut skipped);
+        skipped
+    }
+
+    /// Whether `family` is run ([`Gate::only`]).
+    fn selects(&self, family: &str) -> bool {
+        self.only.is_empty()
+            || self.only.iter().any(|w| {
+                family == w
+                    || family
+                        .strip_prefix(w.as_str())
+                        .is_some_and(|r| r.starts_with('/'))
+            })
+    }
+
+    /// [`Gate::cases`], and the fixture lines that could not be loaded;
+    /// counts the cases each precondition skips into `skipped`.
+    fn load(
+        &self,
+        kind: &str,
+        skipped: &mut Vec<(String, usize)>,
+    ) -> (Vec<(String, Vec<Case>)>, Vec<String>) {
         let mut by_family: Vec<(String, Vec<Case>)> = Vec::new();
         let (sources, errors) = self.sources(kind, self.budget);
         for (family, case) in sources {
-            let case = if self.declared.unit_dirs_only {
-                unit_dir(case)
-            } else {
-                case
+            if !self.selects(&family) {
+                continue;
+            }
+            let case = match self.declared.prepare(case) {
+                Ok(c) => c,
+                Err(name) => {
+                    match skipped.iter_mut().find(|s| s.0 == name) {
+                        Some(s) => s.1 += 1,
+                        None => skipped.push((name.to_string(), 1)),
+                    }
+                    continue;
+                }
             };
             match by_family.iter_mut().find(|f| f.0 == family) {
                 Some(f) if f.1.len() < self.budget => f.1.push(case),
@@ -467,10 +538,13 @@ impl Gate {
     }
 
     /// Runs every family of a kind through `kernel`, with the fixture
-    /// lines that could not be loaded as failures.
+    /// lines that could not be loaded as failures, and the cases each
+    /// declared precondition skipped.
     fn run_kind(&self, kind: Kind, kernel: &mut dyn CaseKernel) -> Report {
-        let (families, errors) = self.load(kind.as_str());
+        let mut skipped = Vec::new();
+        let (families, errors) = self.load(kind.as_str(), &mut skipped);
         let mut report = self.run(&families, kernel);
+        report.skipped = skipped;
         for e in errors {
             report.failures.insert(
                 0,
@@ -577,7 +651,7 @@ impl Gate {
     }
 
     /// Shrinks a failing case while it fails for the same reason (up to
-    /// its numbers) and keeps the declared inputs (unit directions), so
+    /// its numbers) and meets the declared preconditions, so
     /// the small case shows the same bug; an error if the kernel stops
     /// answering.
     fn shrink_failure(
@@ -593,14 +667,12 @@ impl Gate {
                 .to_string()
         };
         let want = kind(why);
-        let unit = self.declared.unit_dirs_only;
-        let fix = |c: Case| if unit { unit_dir(c) } else { c };
+        let fix = |c: &Case| self.declared.prepare(c.clone()).ok();
         let mut stop = None;
         let small = shrink(case, &mut |c| {
-            if stop.is_some() {
+            let Some(c) = fix(c).filter(|_| stop.is_none()) else {
                 return false;
-            }
-            let c = fix(c.clone());
+            };
             match ask(kernel, &c) {
                 Ok(reply) => {
                     matches!(self.verdict(&c, &reply), Verdict::Fail { why, .. } if kind(&why) == want)
@@ -613,7 +685,7 @@ impl Gate {
         });
         match stop {
             Some(e) => Err(e),
-            None => Ok(fix(small)),
+            None => Ok(fix(&small).unwrap_or(small)),
         }
     }
 
@@ -838,18 +910,6 @@ fn one(case: Case, v: Verdict) -> Result<(), Failure> {
             got,
             why,
         }),
-    }
-}
-
-/// Unit-length direction (f32 normalisation); the oracle then sees exactly
-/// these inputs.
-fn unit_dir(case: Case) -> Case {
-    let n = |r: Ray| Ray::new(r.origin, r.dir.normalize_or_zero());
-    match case {
-        Case::Plane(r, p) => Case::Plane(n(r), p),
-        Case::Sphere(r, s) => Case::Sphere(n(r), s),
-        Case::Quadric(r, q) => Case::Quadric(n(r), q),
-        c => c,
     }
 }
 

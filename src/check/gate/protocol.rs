@@ -5,6 +5,7 @@
 //! ```text
 //! → {"id":0,"family":"sphere/unit","kind":"sphere","origin":[0.0,0.0,-5.0],"dir":[0.0,0.0,1.0],"center":[0.0,0.0,0.0],"radius":1.0}
 //! ← {"t": 4.0}                              nearest t > 0, or {"t": null}
+//! ← {"point": [0.0, 0.0, -1.0]}             the nearest hit as a point, or {"point": null}
 //! ← {"class": "two", "roots": [4.0, 6.0]}   the whole line
 //! ← {"dir": [0.1, 0.2, -0.97]}              a camera's ray, or {"dir": null}
 //! ```
@@ -130,6 +131,10 @@ pub fn answer_line(reply: &Reply, kind: Kind) -> String {
     match reply {
         Reply::Answer(Answer::Nearest(Some(t))) => format!(r#"{{"t":{}}}"#, num(*t)),
         Reply::Answer(Answer::Nearest(None)) => r#"{"t":null}"#.into(),
+        Reply::Answer(Answer::Point(Some(p))) => {
+            format!(r#"{{"point":[{}]}}"#, list(&p.to_array()))
+        }
+        Reply::Answer(Answer::Point(None)) => r#"{"point":null}"#.into(),
         Reply::Answer(Answer::Roots(r)) => format!(r#"{{"roots":[{}]}}"#, list(r)),
         Reply::Answer(Answer::Everywhere) if kind == Kind::Plane => {
             r#"{"class":"in_plane"}"#.into()
@@ -174,6 +179,8 @@ pub fn answer_id(line: &str) -> Result<u64, String> {
 /// let c = Case::Sphere(Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), Sphere::new(Vec3::ZERO, 1.0));
 /// let a = read_answer(r#"{"t": 4}"#, &c).unwrap();
 /// assert_eq!(a.reply, Reply::Answer(Answer::Nearest(Some(4.0))));
+/// let a = read_answer(r#"{"point": [0, 0, -1]}"#, &c).unwrap();
+/// assert_eq!(a.reply, Reply::Answer(Answer::Point(Some(Vec3::new(0.0, 0.0, -1.0)))));
 /// let a = read_answer(r#"{"id": 3, "class": "two", "roots": [4, "0x40c00000"]}"#, &c).unwrap();
 /// assert_eq!((a.id, a.reply), (Some(3), Reply::Answer(Answer::Roots(vec![4.0, 6.0]))));
 /// assert_eq!(read_answer(r#"{"class": "two", "roots": [4]}"#, &c).unwrap_err(),
@@ -197,6 +204,13 @@ pub fn read_answer(line: &str, case: &Case) -> Result<AnswerLine, String> {
                 unreachable!("a camera kind is a camera case")
             };
             Reply::Camera(Some(Ray::new(p.position, Vec3::new(x, y, z))))
+        }
+    } else if let Some(p) = map.remove("point") {
+        if p.get() == "null" {
+            Reply::Answer(Answer::Point(None))
+        } else {
+            let [x, y, z] = f32s::<3>("point", &p)?;
+            Reply::Answer(Answer::Point(Some(Vec3::new(x, y, z))))
         }
     } else if let Some(t) = map.remove("t") {
         if t.get() == "null" {
@@ -232,7 +246,7 @@ fn whole_line(map: &mut BTreeMap<String, Box<RawValue>>, kind: Kind) -> Result<A
     };
     let Some(class) = map.remove("class") else {
         return roots.map(Answer::Roots).ok_or_else(|| {
-            "expected \"t\" (nearest), \"class\" and \"roots\" (whole line) or \"dir\" (camera)"
+            "expected \"t\" or \"point\" (nearest), \"class\" and \"roots\" (whole line) or \"dir\" (camera)"
                 .to_string()
         });
     };

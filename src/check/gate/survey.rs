@@ -99,7 +99,7 @@ fn tally(stats: &mut FamilyStats, ulps_seen: &mut Vec<u64>, truth: Truth, got: &
         Answer::Nearest(t) => Ok(*t),
         Answer::Roots(r) => Ok(r.iter().copied().find(|&t| t > 0.0 || t.is_nan())),
         Answer::Everywhere => Err(true),
-        Answer::Inconsistent(_) => Err(false),
+        Answer::Inconsistent(_) | Answer::Point(_) => Err(false),
     };
     match (truth, got) {
         (Truth::Refused, _) => return,
@@ -275,6 +275,8 @@ mod tests {
             small_integers: true,
             vertex: None,
             lies_on: Vec::new(),
+            ray: Ray::new(Vec3::ZERO, Vec3::Z),
+            inside: (1.0, 0.0),
         };
         assert!(matches!(truth(Some(&e)), Truth::Nearest(Some(2.0))));
     }

@@ -398,7 +398,7 @@ fn every_family_is_compiled_in() {
         k.0.parse::<crate::case::Kind>()
             .is_ok_and(crate::case::Kind::compiled_in)
     }) {
-        let (families, errors) = whole_line().budget(2).load(kind);
+        let (families, errors) = whole_line().budget(2).load(kind, &mut Vec::new());
         assert!(errors.is_empty(), "{kind}: {errors:?}");
         assert!(
             families.len() >= at_least,

@@ -59,11 +59,38 @@
 //!   of its terms (and not on small integers) may be answered as linear
 //!   (one of the exact two roots) or, where α = 0, as a quadratic (one of
 //!   the two roots the exact one).
-//! * **Nearest positive.** In [`Semantics::NearestPositive`] the answer is
-//!   the nearest exact root `t > 0`, judged by that root's κ. A ray lying
-//!   on the surface has no nearest hit, so any answer passes; a hit or a
-//!   miss at `|t| ≤ 10⁻³⁰`, or within the band, may go either way (a hit
-//!   within the band's reach of the double root).
+//! * **Roots in absolute terms.** A root's allowance is also taken in
+//!   absolute terms, `allowed · ulp(root)` ([`Exact::reach`]), where the
+//!   error is absolute: where that interval stays clear of the double root
+//!   (or, for a linear root, where its denominator is computed to better
+//!   than ½). A root near 0 from a cancelling `γ` (an origin near a huge
+//!   sphere's surface) is then judged by its terms' scale, and may cross 0,
+//!   instead of by counting the fine floats near 0.
+//! * **Nearest hit.** In [`Semantics::NearestPositive`] the answer is the
+//!   nearest exact root `t > 0`; in [`Semantics::Range`] the nearest with
+//!   `t_min < t < t_max`. It is judged by that root's κ. A root whose
+//!   absolute reach crosses `t_min` or `t_max` may be taken as a hit or
+//!   not, so the answer may be any root up to the first one surely in the
+//!   range (each by its own κ), or none where every root may be outside.
+//!   A hit outside the range fails. A ray lying on the surface has no
+//!   nearest hit, so any answer passes; a hit or a miss at `|t| ≤ 10⁻³⁰`,
+//!   or within the band, may go either way (a hit: the nearer of two roots
+//!   within the band's reach of the double root, `t ≤ t*`).
+//! * **Solid.** In [`Semantics::Solid`] the answer is `t = 0` where the
+//!   surface's function at the origin ([`Exact::inside`]) is `≤ 0`, else
+//!   the nearest hit `t > 0`. Where that value is within its band, both
+//!   pass.
+//! * **Hit points.** [`Answer::Point`] is judged as the nearest hit, each
+//!   component against the exact root's point within the root's absolute
+//!   allowance times `|dᵢ|`, plus `½ ulp(t)·|dᵢ|` (the exact root rounded to
+//!   f32), plus `2^bits` ulps of `|oᵢ| + |t dᵢ|`.
+//! * **Preconditions** ([`Declared::skips`]). A case that violates one is
+//!   not judged; the gate counts it by the precondition's name.
+//! * **The quadric's band and κ** are measured about the ray's double root
+//!   `p* = o + t*d` as well as at the origin, and the lesser counts: the
+//!   terms of `F(p*)`, of `∇F(p*)·d` and the way from `o` to `p*`, as a
+//!   careful kernel sees them. A far sphere written as a quadric is then
+//!   judged about as strictly as the sphere.
 //! * **Camera** ([`judge_camera`]). Construction must fail exactly when the
 //!   oracle's does (with the same error, where the kernel names one). The
 //!   origin must be the camera position, bit for bit, and each direction
@@ -95,7 +122,12 @@ use crate::quadric::{self, Quadric, QuadricHit};
 #[cfg(feature = "sphere")]
 use crate::sphere::{self, Sphere, SphereHit};
 use crate::ulp::{ulp_of, ulps};
+use glam::Vec3;
 use std::fmt;
+
+mod preconditions;
+mod semantics;
+pub use semantics::Semantics;
 
 /// The least allowance for a gated camera's direction components, in ulps
 /// of `Sᵢ = |fᵢ| + |u xᵢ| + |v yᵢ|` ([`component_scale`]): what a plain
@@ -120,6 +152,12 @@ pub enum Answer {
     Roots(Vec<f32>),
     /// The nearest root `t > t_min` only, or none.
     Nearest(Option<f32>),
+    /// The nearest hit's point `o + t·d`, or none, in any nearest-hit
+    /// semantics: judged against the exact root's point, each component
+    /// within the root's tolerance times `|dᵢ|`, plus half an ulp of the
+    /// root times `|dᵢ|`, plus `2^bits` ulps of `|oᵢ| + |t dᵢ|` (the
+    /// point's own rounding).
+    Point(Option<Vec3>),
     /// Every `t` is a solution (a ray in the plane, a line on the quadric).
     Everywhere,
     /// The gate's `Lanes` adapter saw the lanes disagree; always a
@@ -152,20 +190,12 @@ impl fmt::Display for Answer {
             Answer::Roots(r) if r.is_empty() => write!(f, "no roots"),
             Answer::Roots(r) => write!(f, "roots {r:?}"),
             Answer::Nearest(Some(t)) => write!(f, "nearest {t:?}"),
-            Answer::Nearest(None) => write!(f, "no hit"),
+            Answer::Nearest(None) | Answer::Point(None) => write!(f, "no hit"),
+            Answer::Point(Some(p)) => write!(f, "point {:?}", p.to_array()),
             Answer::Everywhere => write!(f, "every t"),
             Answer::Inconsistent(why) => write!(f, "inconsistent lanes: {why}"),
         }
     }
-}
-
-/// What the kernel computes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Semantics {
-    /// Every root on the whole line, `t ∈ ℝ` ([`Answer::Roots`]).
-    WholeLine,
-    /// The nearest root `t > 0` ([`Answer::Nearest`]), as a ray caster.
-    NearestPositive,
 }
 
 /// What the kernel promises: its semantics, its accuracy, and its inputs
@@ -188,8 +218,14 @@ pub struct Declared {
     pub precision: f64,
     /// Class tolerance, as a multiple of the unit band (0: none).
     pub band_scale: f64,
-    /// Feed only unit-length directions (normalised in f32 first).
+    /// Feed only unit-length directions (normalised in f32 first); skip
+    /// cases whose normalisation fails (`unit-dirs`).
     pub unit_dirs_only: bool,
+    /// Skip cases with a subnormal input (`no-subnormals`).
+    pub no_subnormals: bool,
+    /// Skip cases with a nonzero input of magnitude outside `[lo, hi]`
+    /// (`magnitudes:LO:HI`).
+    pub magnitudes: Option<(f32, f32)>,
 }
 
 impl Declared {
@@ -203,6 +239,8 @@ impl Declared {
             precision: 2f64.powi(-22),
             band_scale: 2f64.powi(20),
             unit_dirs_only: false,
+            no_subnormals: false,
+            magnitudes: None,
         }
     }
 
@@ -215,6 +253,8 @@ impl Declared {
             precision: 2f64.powi(-42),
             band_scale: 1.0,
             unit_dirs_only: false,
+            no_subnormals: false,
+            magnitudes: None,
         }
     }
 
@@ -235,7 +275,32 @@ impl Declared {
             precision: 0.0,
             band_scale: 0.0,
             unit_dirs_only: false,
+            no_subnormals: false,
+            magnitudes: None,
         }
+    }
+
+    /// A careful pure-f32 renderer, declared honestly: [`Declared::f32`]'s
+    /// roots, a class band of `2²⁴` units (a discriminant formed as `R² −
+    /// |f − (f·d̂)d̂|²` in f32 errs by a few `2⁻²⁴ R|f|`), fed unit
+    /// directions, no subnormal input, and every nonzero input between
+    /// `2⁻³²` and `2⁴⁰` (so that squares and their sums neither underflow
+    /// nor overflow).
+    ///
+    /// ```
+    /// use rayoracle::check::rules::{Declared, Semantics};
+    /// let d = Declared::careful_f32_renderer(Semantics::NearestPositive);
+    /// assert!(d.unit_dirs_only && d.no_subnormals);
+    /// assert_eq!(d.magnitudes, Some((2f32.powi(-32), 2f32.powi(40))));
+    /// ```
+    pub fn careful_f32_renderer(semantics: Semantics) -> Declared {
+        Declared {
+            band_scale: 2f64.powi(24),
+            ..Declared::f32(semantics)
+        }
+        .unit_dirs()
+        .no_subnormals()
+        .magnitudes(2f32.powi(-32), 2f32.powi(40))
     }
 
     /// The same, fed only unit-length directions.
@@ -314,6 +379,12 @@ pub struct Exact {
     /// band: `d·n` and the offset `(a − o)·n` of a plane, α, β and γ of a
     /// quadric; empty for a sphere, which is never every `t`.
     pub lies_on: Vec<(f64, f64)>,
+    /// The ray, as judged (for [`Answer::Point`]).
+    pub ray: Ray,
+    /// The surface's function at the origin, exact and rounded to f64
+    /// (`|o − C|² − R²`, `F(o)`, or `(o − a)·n`; `≤ 0` is inside a
+    /// [`Semantics::Solid`]), and its unit band.
+    pub inside: (f64, f64),
 }
 
 impl Exact {
@@ -388,7 +459,9 @@ impl Exact {
     /// A quadric with α = β = 0 has no vertex: there `t` must be a root of
     /// some α, β and γ within their bands, `|α|t² + |β||t| ≥ |γ| − γ band`;
     /// likewise a plane with `d·n = 0`, `|d·n| |t| ≥ |offset| − its band`.
-    fn near_vertex(&self, d: &Declared, t: f32) -> bool {
+    /// With `below`, only the lower of two roots: `t ≤ t*` or within its
+    /// allowed ulps (a nearest hit is the lower root).
+    fn near_vertex(&self, d: &Declared, t: f32, below: bool) -> bool {
         let Some((c, k, s)) = self.vertex else {
             return match self.lies_on[..] {
                 [(0.0, au), (0.0, bu), (g, gu)] if self.alpha.is_some() => {
@@ -403,7 +476,30 @@ impl Exact {
             };
         };
         let reach = (2.0 * (self.margin.abs() + self.band * d.band_scale)).sqrt() * s;
-        (f64::from(t) - c).abs() <= reach || root_within(c as f32, t, d.allowed_ulps(k))
+        let off = f64::from(t) - c;
+        off.abs() <= reach && !(below && off > 0.0) || root_within(c as f32, t, d.allowed_ulps(k))
+    }
+
+    /// The allowance on a root `x` of condition `kappa` in absolute terms,
+    /// `allowed · ulp(x)`, where the root's error is absolute: where that
+    /// interval stays clear of the double root `t*` (the linear model of
+    /// the error holds: a root near 0 from a cancelling `γ` may then cross
+    /// 0), or for a linear root, where its denominator (`d·n`, or β at
+    /// α = 0) is computed to a relative error below ½. Elsewhere 0, and
+    /// roots are judged in ulps only.
+    pub fn reach(&self, d: &Declared, x: f32, kappa: f64) -> f64 {
+        let tol = match d.allowed_ulps(kappa) {
+            0.0 => return 0.0,
+            a => a * ulp_of(f64::from(x)),
+        };
+        let den = |(v, u): (f64, f64)| u * 2f64.powi(44) * d.precision < 0.5 * v.abs();
+        let clear = match (self.vertex, &self.lies_on[..]) {
+            (Some((c, _, _)), _) => tol < (f64::from(x) - c).abs(),
+            (None, [dn, _]) => den(*dn),
+            (None, [_, beta, _]) => den(*beta),
+            _ => false,
+        };
+        if clear { tol } else { 0.0 }
     }
 
     /// Whether a quadric's α is within the band of its terms under `d`, so
@@ -420,9 +516,15 @@ impl Exact {
     pub fn expected(&self, d: &Declared) -> Answer {
         match &self.roots {
             None => Answer::Everywhere,
-            Some(r) => match d.semantics {
-                Semantics::WholeLine => Answer::Roots(r.clone()),
-                Semantics::NearestPositive => Answer::Nearest(r.iter().copied().find(|&t| t > 0.0)),
+            Some(r) => match d.semantics.range() {
+                None => Answer::Roots(r.clone()),
+                Some((lo, hi)) if matches!(d.semantics, Semantics::RootsIn { .. }) => {
+                    Answer::Roots(r.iter().copied().filter(|&t| lo < t && t < hi).collect())
+                }
+                Some(_) if d.semantics == Semantics::Solid && self.inside.0 <= 0.0 => {
+                    Answer::Nearest(Some(0.0))
+                }
+                Some((lo, hi)) => Answer::Nearest(r.iter().copied().find(|&t| lo < t && t < hi)),
             },
         }
     }
@@ -473,6 +575,8 @@ pub fn plane(ray: &Ray, p: &Plane) -> Option<(PlaneHit, Exact)> {
             (dot(&d, &n).to_f64(), plane_band(ray, p)),
             (dot(&sub3(&a, &o), &n).to_f64(), offset_band(ray, p)),
         ],
+        ray: *ray,
+        inside: (dot(&sub3(&o, &a), &n).to_f64(), offset_band(ray, p)),
     };
     Some((exact, e))
 }
@@ -515,6 +619,8 @@ pub(crate) fn sphere_given(
         ]),
         vertex: Some(sphere_vertex(ray, s, f64::NAN)),
         lies_on: Vec::new(),
+        ray: *ray,
+        inside: sphere_inside(ray, s),
     }
 }
 
@@ -547,6 +653,23 @@ fn sphere_vertex(ray: &Ray, s: &Sphere, at: f64) -> (f64, f64, f64) {
             / (a * t.abs())
     };
     (vertex, kappa, a.powf(-1.5))
+}
+
+/// The sphere's `|o − C|² − R²`, exact (from the quadratic of the ray with
+/// `d = 0`, where α = β = 0 and γ keeps its sign), and its unit band
+/// `2⁻⁴⁴(2Σ(|oᵢ| + |Cᵢ|)|fᵢ| + R²)`, since `fᵢ = oᵢ − Cᵢ` rounds relative
+/// to its operands.
+#[cfg(feature = "sphere")]
+fn sphere_inside(ray: &Ray, s: &Sphere) -> (f64, f64) {
+    let value = sphere::exact::quadratic(&Ray::new(ray.origin, Vec3::ZERO), s)
+        .map_or(f64::NAN, |z| z.gamma.to_f64());
+    let (o, c) = (ray.origin.as_dvec3(), s.center.as_dvec3());
+    let f = o - c;
+    let terms: f64 = (0..3)
+        .map(|i| 2.0 * (o[i].abs() + c[i].abs()) * f[i].abs())
+        .sum();
+    let r = f64::from(s.radius);
+    (value, (terms + r * r) * 2f64.powi(-44))
 }
 
 /// A quadric case's exact answer, or `None` for a non-finite input.
@@ -584,7 +707,10 @@ pub(crate) fn quadric_given(
         roots,
         kappa,
         margin: eq.discriminant().to_f64(),
-        band: quadric_band(ray, q),
+        band: match vertex_frame(ray, q, eq) {
+            Some(v) => quadric_band(ray, q).min(v.band()),
+            None => quadric_band(ray, q),
+        },
         alpha: Some((eq.alpha.to_f64(), alpha_terms(ray, q) * 2f64.powi(-44))),
         small_integers: small_integers(&[&ray.origin.to_array(), &ray.dir.to_array(), &q.coeffs]),
         vertex: (!eq.alpha.is_zero()).then(|| quadric_vertex(ray, q, eq)),
@@ -593,6 +719,13 @@ pub(crate) fn quadric_given(
             (eq.beta.to_f64(), unit(&bt)),
             (eq.gamma.to_f64(), unit(&gt)),
         ],
+        ray: *ray,
+        inside: (
+            // With d = 0, α = β = 0 and γ = F(o) keeps its sign.
+            quadric::exact::quadratic(&Ray::new(ray.origin, Vec3::ZERO), q)
+                .map_or(f64::NAN, |z| z.gamma.to_f64()),
+            unit(&gt),
+        ),
     }
 }
 
@@ -665,7 +798,95 @@ fn quadric_kappa_at(ray: &Ray, q: &Quadric, eq: &crate::exact::Quadratic, t: f64
         };
     }
     let dp = (2.0 * eq.alpha.to_f64() * t + eq.beta.to_f64()).abs();
-    (3.0 * sa * t * t + 3.0 * sb * t.abs() + 3.0 * sg) / (dp * t.abs())
+    let at_origin = (3.0 * sa * t * t + 3.0 * sb * t.abs() + 3.0 * sg) / (dp * t.abs());
+    match vertex_frame(ray, q, eq) {
+        Some(v) => {
+            let s = (t - v.t).abs();
+            let at_vertex = (3.0 * sa * s * s + 3.0 * v.beta * s + 3.0 * v.gamma) / (dp * t.abs());
+            at_origin.min(at_vertex)
+        }
+        None => at_origin,
+    }
+}
+
+/// The quadric re-expanded about the ray's double root `p* = o + t*d`
+/// (`t* = −β/2α`), where its α, β, γ are those of `s = t − t*`: what a
+/// careful kernel's error depends on, whatever frame the coefficients are
+/// written in. Measured from the terms at the origin instead, a far sphere
+/// written as a quadric (terms `|o|²` against a discriminant `4aR²`) would
+/// forgive every class and every root.
+#[cfg(feature = "quadric")]
+struct VertexFrame {
+    /// `t*`.
+    t: f64,
+    /// `Σ|α terms|`.
+    alpha: f64,
+    /// `Σ|gᵢdᵢ|`, `g = ∇F(p*)`: the terms of β at `p*` (which sum to 0).
+    beta: f64,
+    /// `Σ|F terms at p*| + G·|t*d|`: the terms of γ at `p*` (what a kernel
+    /// that evaluates `F(p*)` errs by), and what an error of `2⁻⁴⁴` of the
+    /// way from `o` to `p*` changes it by, `G = |g| + |Hd|·√(Σ|F terms|/Σ|α
+    /// terms|)` bounding the gradient between `p*` and the roots (`2R` for
+    /// a sphere, whose gradient vanishes at the centre).
+    gamma: f64,
+}
+
+#[cfg(feature = "quadric")]
+impl VertexFrame {
+    /// The discriminant's unit band in this frame: `2⁻⁴⁰(Σβ)² + 2⁻⁴²
+    /// Σα·γ`, the sphere's `a²(R² + R|f|)·2⁻⁴⁴` (times the 4 of `β² − 4αγ`)
+    /// for a sphere written as a quadric.
+    fn band(&self) -> f64 {
+        self.beta * self.beta * 2f64.powi(-40) + self.alpha * self.gamma * 2f64.powi(-42)
+    }
+}
+
+/// [`VertexFrame`] of a ray and quadric with α ≠ 0, in f64 (a scale, not
+/// an exact value).
+#[cfg(feature = "quadric")]
+fn vertex_frame(ray: &Ray, q: &Quadric, eq: &crate::exact::Quadratic) -> Option<VertexFrame> {
+    if eq.alpha.is_zero() {
+        return None;
+    }
+    let t = -eq.beta.to_f64() / (2.0 * eq.alpha.to_f64());
+    let k = q.coeffs.map(f64::from);
+    let d = ray.dir.as_dvec3();
+    let p = ray.origin.as_dvec3() + t * d;
+    let g = glam::DVec3::new(
+        2.0 * k[0] * p.x + k[3] * p.y + k[4] * p.z + k[6],
+        2.0 * k[1] * p.y + k[3] * p.x + k[5] * p.z + k[7],
+        2.0 * k[2] * p.z + k[4] * p.x + k[5] * p.y + k[8],
+    );
+    let terms = [
+        k[0] * p.x * p.x,
+        k[1] * p.y * p.y,
+        k[2] * p.z * p.z,
+        k[3] * p.x * p.y,
+        k[4] * p.x * p.z,
+        k[5] * p.y * p.z,
+        k[6] * p.x,
+        k[7] * p.y,
+        k[8] * p.z,
+        k[9],
+    ];
+    let f = terms.iter().map(|x| x.abs()).sum::<f64>();
+    let hd = glam::DVec3::new(
+        2.0 * k[0] * d.x + k[3] * d.y + k[4] * d.z,
+        k[3] * d.x + 2.0 * k[1] * d.y + k[5] * d.z,
+        k[4] * d.x + k[5] * d.y + 2.0 * k[2] * d.z,
+    );
+    let alpha = alpha_terms(ray, q);
+    let grad = g.length() + hd.length() * (f / alpha).sqrt();
+    let v = VertexFrame {
+        t,
+        alpha,
+        beta: (g * d).abs().element_sum(),
+        gamma: f + grad * (t * d).length(),
+    };
+    [v.t, v.beta, v.gamma]
+        .iter()
+        .all(|x| x.is_finite())
+        .then_some(v)
 }
 
 /// The sphere's unit band, in units of the margin `aΔ = (aR)² − |af −
@@ -743,10 +964,13 @@ pub struct RootJudged {
     pub allowed: f64,
     /// The root's condition number.
     pub kappa: f64,
+    /// The same allowance in absolute terms, `allowed · ulp(exact)`, where
+    /// the root's error is absolute ([`Exact::reach`]), else 0.
+    pub reach: f64,
 }
 
 impl RootJudged {
-    fn new(d: &Declared, index: usize, exact: f32, got: f32, kappa: f64) -> RootJudged {
+    fn new(d: &Declared, e: &Exact, index: usize, exact: f32, got: f32, kappa: f64) -> RootJudged {
         RootJudged {
             index,
             exact,
@@ -754,19 +978,24 @@ impl RootJudged {
             ulps: ulps(exact, got),
             allowed: d.allowed_ulps(kappa),
             kappa,
+            reach: e.reach(d, exact, kappa),
         }
     }
 
-    /// Whether the root is within what is allowed: the exact root's bits
-    /// where nothing is.
+    /// Whether the root is within what is allowed, in ulps or within its
+    /// absolute reach: the exact root's bits where nothing is.
     ///
     /// ```
     /// use rayoracle::check::rules::RootJudged;
-    /// let r = RootJudged { index: 0, exact: 0.0, got: -0.0, ulps: 0, allowed: 0.0, kappa: 1.0 };
+    /// let r = RootJudged { index: 0, exact: 0.0, got: -0.0, ulps: 0, allowed: 0.0, kappa: 1.0, reach: 0.0 };
     /// assert!(!r.ok() && RootJudged { allowed: 1.0, ..r }.ok());
+    /// // Across zero: 2⁻²⁰ − 2⁻³⁰ is 2²⁰ floats away, but within a reach of 2⁻¹⁹.
+    /// let r = RootJudged { exact: 2f32.powi(-20), got: -2f32.powi(-30), ulps: 1 << 30, allowed: 8.0, reach: 2f64.powi(-19), ..r };
+    /// assert!(r.ok() && !RootJudged { reach: 0.0, ..r }.ok());
     /// ```
     pub fn ok(&self) -> bool {
         root_within(self.exact, self.got, self.allowed)
+            || self.reach > 0.0 && (f64::from(self.got) - f64::from(self.exact)).abs() <= self.reach
     }
 }
 
@@ -809,10 +1038,18 @@ pub enum Fault {
     Neither(f32),
     /// A nearest hit that exists was missed.
     Missed,
-    /// A nearest hit at `t ≤ 0` was returned.
+    /// A nearest hit at `t ≤ t_min` (0 unless declared) or `t ≥ t_max`
+    /// was returned.
     NotPositive,
     /// A nearest hit where there is none.
     Spurious,
+    /// The origin is inside the solid, and the answer is not `t = 0`.
+    Inside,
+    /// A root outside the declared range of `t`.
+    OutOfRange(f32),
+    /// A hit point off the exact root's point (the exact root) by more than
+    /// allowed.
+    Point(f32),
 }
 
 impl fmt::Display for Fault {
@@ -845,6 +1082,12 @@ impl fmt::Display for Fault {
             Fault::Missed => write!(f, "a hit was missed"),
             Fault::NotPositive => write!(f, "a hit at t ≤ 0 was returned"),
             Fault::Spurious => write!(f, "a hit where there is none"),
+            Fault::Inside => write!(f, "the origin is inside the solid, and t is not 0"),
+            Fault::OutOfRange(t) => write!(f, "the root {t:?} is outside the declared range"),
+            Fault::Point(t) => write!(
+                f,
+                "the point is farther than allowed from the exact point at t = {t:?}"
+            ),
         }
     }
 }
@@ -894,21 +1137,24 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
     }
     let (in_band, alpha_small) = (e.in_band(d), e.alpha_small(d));
     let kappa = |i: usize| e.kappa.get(i).copied().unwrap_or(f64::INFINITY);
-    let close = |i: usize, x: f32, g: f32| RootJudged::new(d, i, x, g, kappa(i)).ok();
+    let close = |i: usize, x: f32, g: f32| RootJudged::new(d, e, i, x, g, kappa(i)).ok();
     let nan = match got {
         Answer::Roots(g) => g.iter().any(|t| t.is_nan()),
         Answer::Nearest(Some(t)) => t.is_nan(),
+        Answer::Point(Some(p)) => p.is_nan(),
         _ => false,
     };
     let expected = e.expected(d);
-    if let (Answer::Roots(x), Answer::Roots(g)) = (&expected, got) {
+    if let (Answer::Roots(x), Answer::Roots(g), Semantics::WholeLine) =
+        (&expected, got, d.semantics)
+    {
         // With a band, a single root may come twice.
         let g = match g.as_slice() {
             [a, b] if x.len() == 1 && a == b && d.band_scale != 0.0 => &g[..1],
             g => g,
         };
         if x.len() == g.len() {
-            seen.extend((0..x.len()).map(|i| RootJudged::new(d, i, x[i], g[i], kappa(i))));
+            seen.extend((0..x.len()).map(|i| RootJudged::new(d, e, i, x[i], g[i], kappa(i))));
         }
     }
     if nan {
@@ -922,13 +1168,27 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
     let fault = match (&expected, got) {
         (Answer::Everywhere, Answer::Everywhere) => return None,
         // A ray lying on the surface has no nearest hit to compare.
-        (Answer::Everywhere, _) if d.semantics == Semantics::NearestPositive => return None,
-        (Answer::Everywhere, Answer::Nearest(_) | Answer::Roots(_)) if e.everywhere_in_band(d) => {
+        (Answer::Everywhere, _)
+            if !matches!(
+                d.semantics,
+                Semantics::WholeLine | Semantics::RootsIn { .. }
+            ) =>
+        {
             return None;
         }
-        (Answer::Everywhere, Answer::Nearest(_) | Answer::Roots(_)) => Fault::NotEverywhere,
+        (Answer::Everywhere, Answer::Nearest(_) | Answer::Roots(_) | Answer::Point(_))
+            if e.everywhere_in_band(d) =>
+        {
+            return None;
+        }
+        (Answer::Everywhere, Answer::Nearest(_) | Answer::Roots(_) | Answer::Point(_)) => {
+            Fault::NotEverywhere
+        }
         (_, Answer::Everywhere) if e.everywhere_in_band(d) => return None,
         (_, Answer::Everywhere) => Fault::Class,
+        (Answer::Roots(_), Answer::Roots(g)) if d.semantics != Semantics::WholeLine => {
+            return roots_in_fault(d, e, g, in_band, seen);
+        }
         (Answer::Roots(x), Answer::Roots(g)) => {
             let one_or_two = x.len().min(g.len()) == 1 && x.len().max(g.len()) == 2;
             if !seen.is_empty() || x.is_empty() && g.is_empty() {
@@ -936,7 +1196,7 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
             } else if in_band {
                 // Near a double root the class may differ, but each root
                 // must be as near the double root as the band reaches.
-                match g.iter().find(|&&t| !e.near_vertex(d, t)) {
+                match g.iter().find(|&&t| !e.near_vertex(d, t, false)) {
                     None => return None,
                     Some(&t) => Fault::Stray(t),
                 }
@@ -959,33 +1219,190 @@ fn fault(d: &Declared, e: &Exact, got: &Answer, seen: &mut Vec<RootJudged>) -> O
                 Fault::Class
             }
         }
-        (Answer::Nearest(x), Answer::Nearest(g)) => match (x, g) {
-            (None, None) => return None,
-            (Some(x), Some(g)) => {
-                let i = e
-                    .roots
-                    .as_ref()
-                    .and_then(|r| r.iter().position(|t| t == x))
-                    .unwrap_or(0);
-                let r = RootJudged::new(d, i, *x, *g, kappa(i));
-                seen.push(r);
-                if r.ok() {
-                    return None;
-                }
-                Fault::Root(r)
-            }
-            // A root at t ≈ 0, or a class in the band, may go either way
-            // (a hit near the double root).
-            (Some(x), None) | (None, Some(x)) if x.abs() <= 1e-30 => return None,
-            (Some(_), None) if in_band => return None,
-            (None, Some(g)) if in_band && e.near_vertex(d, *g) => return None,
-            (Some(_), None) => Fault::Missed,
-            (None, Some(g)) if *g <= 0.0 => Fault::NotPositive,
-            (None, Some(_)) => Fault::Spurious,
-        },
+        (Answer::Nearest(_), Answer::Nearest(_) | Answer::Point(_)) => {
+            return nearest_fault(d, e, got, in_band, seen);
+        }
         _ => Fault::Semantics(d.semantics),
     };
     Some(fault)
+}
+
+/// A nearest-hit answer ([`Answer::Nearest`] or [`Answer::Point`]) under a
+/// nearest-hit semantics, judged root by root in absolute terms: each exact
+/// root `rᵢ` stands for the interval `rᵢ ± tolᵢ`, `tolᵢ` its allowed ulps
+/// times `ulp(rᵢ)`. A root whose interval crosses `t_min` or `t_max` may
+/// be taken as a hit or not, so the answer may be any root up to the first
+/// one surely inside the range, or none where every root may be outside.
+fn nearest_fault(
+    d: &Declared,
+    e: &Exact,
+    got: &Answer,
+    in_band: bool,
+    seen: &mut Vec<RootJudged>,
+) -> Option<Fault> {
+    let roots = e.roots.as_deref().unwrap_or(&[]);
+    let kappa = |i: usize| e.kappa.get(i).copied().unwrap_or(f64::INFINITY);
+    let tol = |i: usize| e.reach(d, roots[i], kappa(i));
+    let (t, p) = match got {
+        Answer::Nearest(t) => (*t, None),
+        Answer::Point(p) => (p.map(|p| t_of_point(&e.ray, p)), *p),
+        _ => (None, None),
+    };
+    // The hit matches the exact root `x` within `tol` (in t, or in space).
+    let near = |x: f32, i: usize| match (t, p) {
+        (_, Some(p)) => point_near(d, &e.ray, f64::from(x), tol(i), p),
+        (Some(t), None) => RootJudged::new(d, e, i, x, t, kappa(i)).ok(),
+        _ => false,
+    };
+    if d.semantics == Semantics::Solid {
+        let (v, u) = e.inside;
+        let either = e.may_err(d, u) && v.abs() <= u * d.band_scale;
+        let zero = match (t, p) {
+            (_, Some(p)) => point_near(d, &e.ray, 0.0, 0.0, p),
+            (Some(t), None) => t == 0.0,
+            _ => false,
+        };
+        match () {
+            _ if zero && (v <= 0.0 || either) => return None,
+            _ if v <= 0.0 && !either => return Some(Fault::Inside),
+            _ => {}
+        }
+    }
+    let (lo, hi) = d.semantics.range().unwrap_or((0.0, f32::INFINITY));
+    let (lo64, hi64) = (f64::from(lo), f64::from(hi));
+    let mut candidates = Vec::new();
+    let mut none_ok = true;
+    for (i, &r) in roots.iter().enumerate() {
+        let (r, w) = (f64::from(r), tol(i));
+        if r + w > lo64 && r - w < hi64 {
+            candidates.push(i);
+        }
+        if !(r - w <= lo64 || r + w >= hi64) {
+            none_ok = false;
+            break;
+        }
+    }
+    let expected = roots.iter().position(|&r| lo < r && r < hi);
+    let Some(t) = t else {
+        // A root at t ≈ 0, or a class in the band, may go either way.
+        return match expected.map(|i| roots[i]) {
+            _ if none_ok || in_band => None,
+            Some(x) if x.abs() <= 1e-30 => None,
+            _ => Some(Fault::Missed),
+        };
+    };
+    if let (Some(i), None) = (expected, p) {
+        seen.push(RootJudged::new(d, e, i, roots[i], t, kappa(i)));
+    }
+    if expected.is_none() && t.abs() <= 1e-30 {
+        return None;
+    }
+    if p.is_none() && !(lo < t && t < hi) {
+        return Some(Fault::NotPositive);
+    }
+    // In the band, the nearer of two roots near the double root.
+    if candidates.iter().any(|&i| near(roots[i], i)) || in_band && e.near_vertex(d, t, true) {
+        return None;
+    }
+    Some(match (expected, p) {
+        (None, _) => Fault::Spurious,
+        (Some(i), Some(_)) => Fault::Point(roots[i]),
+        (Some(_), None) => Fault::Root(*seen.last()?),
+    })
+}
+
+/// Every root in `(t_min, t_max)` ([`Semantics::RootsIn`]): the answer
+/// must be the exact roots in order, each by its own κ, leaving out only
+/// roots whose absolute reach crosses an end of the range and keeping every
+/// root surely inside; with a band, a single root may come twice, and a
+/// class forgiven near a tangent wants roots near it.
+fn roots_in_fault(
+    d: &Declared,
+    e: &Exact,
+    g: &[f32],
+    in_band: bool,
+    seen: &mut Vec<RootJudged>,
+) -> Option<Fault> {
+    let roots = e.roots.as_deref().unwrap_or(&[]);
+    let kappa = |i: usize| e.kappa.get(i).copied().unwrap_or(f64::INFINITY);
+    let (lo, hi) = d
+        .semantics
+        .range()
+        .unwrap_or((f32::NEG_INFINITY, f32::INFINITY));
+    let (lo64, hi64) = (f64::from(lo), f64::from(hi));
+    if let Some(&t) = g.iter().find(|&&t| !(lo < t && t < hi)) {
+        return Some(Fault::OutOfRange(t));
+    }
+    let g = match g {
+        [a, b] if a == b && d.band_scale != 0.0 => &g[..1],
+        g => g,
+    };
+    let span = |i: usize| {
+        let (r, w) = (f64::from(roots[i]), e.reach(d, roots[i], kappa(i)));
+        (r - w, r + w)
+    };
+    let may = |i: usize| span(i).1 > lo64 && span(i).0 < hi64;
+    let sure = |i: usize| span(i).0 > lo64 && span(i).1 < hi64;
+    // Each subsequence of the exact roots the answer may stand for.
+    let n = roots.len();
+    let mut first_bad = None;
+    for mask in 0u32..(1 << n) {
+        let pick: Vec<usize> = (0..n).filter(|i| mask >> i & 1 == 1).collect();
+        let picked = |i: usize| mask >> i & 1 == 1;
+        if pick.len() != g.len() || (0..n).any(|i| if picked(i) { !may(i) } else { sure(i) }) {
+            continue;
+        }
+        let judged: Vec<RootJudged> = pick
+            .iter()
+            .zip(g)
+            .map(|(&i, &t)| RootJudged::new(d, e, i, roots[i], t, kappa(i)))
+            .collect();
+        match judged.iter().find(|r| !r.ok()) {
+            None => {
+                seen.extend(judged);
+                return None;
+            }
+            Some(r) => {
+                first_bad.get_or_insert(*r);
+            }
+        }
+    }
+    if in_band && g.iter().all(|&t| e.near_vertex(d, t, false)) {
+        return None;
+    }
+    if e.alpha_small(d)
+        && g.len() == 1
+        && (0..n).any(|i| RootJudged::new(d, e, i, roots[i], g[0], kappa(i)).ok())
+    {
+        return None;
+    }
+    Some(match first_bad {
+        Some(r) => {
+            seen.push(r);
+            Fault::Root(r)
+        }
+        None => Fault::Class,
+    })
+}
+
+/// The `t` nearest a point on the ray, `(p − o)·d / d·d`, for the band's
+/// reach of a double root.
+fn t_of_point(ray: &Ray, p: Vec3) -> f32 {
+    let (o, d) = (ray.origin.as_dvec3(), ray.dir.as_dvec3());
+    ((p.as_dvec3() - o).dot(d) / d.length_squared()) as f32
+}
+
+/// Whether `p` is the point `o + t·d` within `tol` of `t`: each component
+/// within `(tol + ½ ulp(t))·|dᵢ| + 2^bits · ulp(|oᵢ| + |t dᵢ|)`.
+fn point_near(d: &Declared, ray: &Ray, t: f64, tol: f64, p: Vec3) -> bool {
+    let (o, dir) = (ray.origin.as_dvec3(), ray.dir.as_dvec3());
+    let half = 0.5 * ulp_of(t);
+    (0..3).all(|j| {
+        let x = o[j] + t * dir[j];
+        let scale = o[j].abs() + (t * dir[j]).abs();
+        let allow = (tol + half) * dir[j].abs() + 2f64.powf(d.bits) * ulp_of(scale);
+        (f64::from(p[j]) - x).abs() <= allow
+    })
 }
 
 /// One camera direction component compared with the oracle's.
@@ -1257,7 +1674,10 @@ pub(crate) mod tests {
         let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
         let r = Ray::new(Vec3::new(0.0, 0.875, -5.0), Vec3::Z);
         let (_, e) = quadric(&r, &ball).unwrap();
-        assert_eq!((e.margin, e.band), (0.9375, quadric_band(&r, &ball)));
+        // Measured about the double root, the band is narrower than the
+        // terms at the origin make it.
+        assert_eq!(e.margin, 0.9375);
+        assert!(0.0 < e.band && e.band < quadric_band(&r, &ball));
         let with_band = |band: f64| Declared {
             band_scale: band / e.band,
             ..Declared::f32(Semantics::WholeLine)
@@ -1294,18 +1714,21 @@ pub(crate) mod tests {
     }
 
     /// κ at a root by hand: the unit sphere as a quadric, o = (0, 0, −5),
-    /// d = z. The term sums are 1 (α), 10 (β) and 25 + 1 (γ), and
-    /// p'(t) = 2t − 10, so κ(4) = (48 + 120 + 78) / (2·4) and κ(6) =
-    /// (108 + 180 + 78) / (2·6). A zero root is exact only without γ terms.
+    /// d = z. At the origin the term sums are 1 (α), 10 (β) and 25 + 1
+    /// (γ), and p'(t) = 2t − 10, so κ(4) = (48 + 120 + 78) / (2·4) = 30.75.
+    /// About the double root t* = 5, p* = 0, they are 1 (α), 0 (β, g = 0)
+    /// and 1 + G·5 (γ) with G = |Hd|·√1 = 2, so with s = |t − 5| = 1,
+    /// κ(4) = (3 + 33) / (2·4) and κ(6) = (3 + 33) / (2·6): the lesser
+    /// counts. A zero root is exact only without γ terms.
     #[cfg(feature = "quadric")]
     #[test]
     fn quadric_kappa_at_a_root_by_hand() {
         let q = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
         let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
         let eq = quadric::exact::quadratic(&ray, &q).unwrap();
-        assert_eq!(quadric_kappa_at(&ray, &q, &eq, 4.0), 30.75);
-        assert_eq!(quadric_kappa_at(&ray, &q, &eq, 6.0), 30.5);
-        assert_eq!(quadric(&ray, &q).unwrap().1.kappa, [30.75, 30.5]);
+        assert_eq!(quadric_kappa_at(&ray, &q, &eq, 4.0), 4.5);
+        assert_eq!(quadric_kappa_at(&ray, &q, &eq, 6.0), 3.0);
+        assert_eq!(quadric(&ray, &q).unwrap().1.kappa, [4.5, 3.0]);
         assert_eq!(
             quadric_kappa_at(&ray, &q, &eq, f64::INFINITY),
             f64::INFINITY

@@ -1,0 +1,182 @@
+//! Declared preconditions: the inputs a kernel is meant for. A case that
+//! violates one is skipped, not judged, and the gate counts the skips of
+//! each precondition by its name.
+//!
+//! | name | the case is skipped when |
+//! |---|---|
+//! | `unit-dirs` | the direction's `f32` normalisation is zero or not finite (the other cases are fed normalised) |
+//! | `no-subnormals` | an input is subnormal |
+//! | `magnitudes:LO:HI` | the largest magnitude of a finite nonzero input (a vector's largest component, the radius, the quadric's largest coefficient) is below `LO` or above `HI` |
+
+use super::Declared;
+use crate::Ray;
+use crate::case::Case;
+use glam::Vec3;
+
+impl Declared {
+    /// Every precondition's form, for error messages and help texts.
+    pub const PRECONDITIONS: &'static str =
+        "unit-dirs, no-subnormals, magnitudes:LO:HI (0 ≤ LO ≤ HI)";
+
+    /// The same, skipping cases with a subnormal input.
+    pub fn no_subnormals(self) -> Declared {
+        Declared {
+            no_subnormals: true,
+            ..self
+        }
+    }
+
+    /// The same, skipping cases with a finite nonzero input whose largest
+    /// magnitude is outside `[lo, hi]`: a vector's largest component (so
+    /// that a tiny component of a unit vector is no reason to skip), the
+    /// radius, the quadric's largest coefficient, the camera's angle.
+    pub fn magnitudes(self, lo: f32, hi: f32) -> Declared {
+        Declared {
+            magnitudes: Some((lo, hi)),
+            ..self
+        }
+    }
+
+    /// The same with the precondition named `spec` (see the [module
+    /// docs](self)), or an error listing the valid forms.
+    ///
+    /// ```
+    /// use rayoracle::check::rules::{Declared, Semantics};
+    /// let d = Declared::f32(Semantics::NearestPositive);
+    /// let d = d.require("unit-dirs").unwrap().require("magnitudes:1e-9:1e9").unwrap();
+    /// assert!(d.unit_dirs_only && d.magnitudes == Some((1e-9, 1e9)));
+    /// assert!(d.require("positive").unwrap_err().contains("no-subnormals"));
+    /// ```
+    pub fn require(self, spec: &str) -> Result<Declared, String> {
+        let bad = || {
+            format!(
+                "unknown precondition {spec:?}: valid forms are {}",
+                Self::PRECONDITIONS
+            )
+        };
+        match spec {
+            "unit-dirs" => Ok(self.unit_dirs()),
+            "no-subnormals" => Ok(self.no_subnormals()),
+            _ => {
+                let rest = spec.strip_prefix("magnitudes:").ok_or_else(bad)?;
+                let (a, b) = rest.split_once(':').ok_or_else(bad)?;
+                let (lo, hi) = (
+                    a.parse::<f32>().map_err(|_| bad())?,
+                    b.parse::<f32>().map_err(|_| bad())?,
+                );
+                if 0.0 <= lo && lo <= hi {
+                    Ok(self.magnitudes(lo, hi))
+                } else {
+                    Err(bad())
+                }
+            }
+        }
+    }
+
+    /// The name of the first declared precondition `case` violates, or
+    /// `None` if it meets them all. With `unit-dirs`, `case` is taken as
+    /// the gate feeds it: normalised first ([`Declared::prepare`]).
+    ///
+    /// ```
+    /// # #[cfg(feature = "sphere")] {
+    /// use rayoracle::check::rules::{Declared, Semantics};
+    /// use rayoracle::{Ray, case::Case, sphere::Sphere};
+    /// use glam::Vec3;
+    /// let d = Declared::f32(Semantics::NearestPositive).unit_dirs().no_subnormals();
+    /// let s = Sphere::new(Vec3::ZERO, 1.0);
+    /// let zero = Case::Sphere(Ray::new(Vec3::Z, Vec3::ZERO), s);
+    /// assert_eq!(d.skips(&zero), Some("unit-dirs"));
+    /// let tiny = Case::Sphere(Ray::new(Vec3::new(0.0, 0.0, 1e-40), Vec3::Z), s);
+    /// assert_eq!(d.skips(&tiny), Some("no-subnormals"));
+    /// let huge = Case::Sphere(Ray::new(Vec3::new(0.0, 0.0, -1e30), Vec3::Z), s);
+    /// assert_eq!(d.skips(&huge), None);
+    /// assert_eq!(d.magnitudes(0.0, 1e12).skips(&huge), Some("magnitudes"));
+    /// # }
+    /// ```
+    pub fn skips(&self, case: &Case) -> Option<&'static str> {
+        let (ray, inputs) = inputs(case);
+        if self.unit_dirs_only && ray.is_some_and(|r| normalised(r.dir).is_none()) {
+            return Some("unit-dirs");
+        }
+        if self.no_subnormals && inputs.iter().flatten().any(|x| x.is_subnormal()) {
+            return Some("no-subnormals");
+        }
+        let largest = |v: &Vec<f32>| v.iter().fold(0f32, |m, x| m.max(x.abs()));
+        if let Some((lo, hi)) = self.magnitudes
+            && inputs
+                .iter()
+                .map(largest)
+                .any(|x| x != 0.0 && x.is_finite() && !(lo <= x && x <= hi))
+        {
+            return Some("magnitudes");
+        }
+        None
+    }
+
+    /// The case as the gate feeds it, or the name of the precondition it
+    /// violates: with `unit-dirs` the direction normalised in `f32` (the
+    /// exact answer is then the normalised ray's own), and every
+    /// precondition met ([`Declared::skips`]).
+    ///
+    /// ```
+    /// # #[cfg(feature = "sphere")] {
+    /// use rayoracle::check::rules::{Declared, Semantics};
+    /// use rayoracle::{Ray, case::Case, sphere::Sphere};
+    /// use glam::Vec3;
+    /// let d = Declared::f32(Semantics::NearestPositive).unit_dirs();
+    /// let s = Sphere::new(Vec3::ZERO, 1.0);
+    /// let c = d.prepare(Case::Sphere(Ray::new(Vec3::Z, Vec3::new(0.0, 0.0, 4.0)), s));
+    /// assert_eq!(c, Ok(Case::Sphere(Ray::new(Vec3::Z, Vec3::Z), s)));
+    /// // 1e-30² underflows: f32 normalisation fails, and the case is skipped.
+    /// let tiny = Case::Sphere(Ray::new(Vec3::Z, Vec3::splat(1e-30)), s);
+    /// assert_eq!(d.prepare(tiny), Err("unit-dirs"));
+    /// # }
+    /// ```
+    pub fn prepare(&self, case: Case) -> Result<Case, &'static str> {
+        let case = if self.unit_dirs_only {
+            let n = |r: Ray| Ray::new(r.origin, normalised(r.dir).unwrap_or(r.dir));
+            match case {
+                #[cfg(feature = "plane")]
+                Case::Plane(r, p) => Case::Plane(n(r), p),
+                #[cfg(feature = "sphere")]
+                Case::Sphere(r, s) => Case::Sphere(n(r), s),
+                #[cfg(feature = "quadric")]
+                Case::Quadric(r, q) => Case::Quadric(n(r), q),
+                c => c,
+            }
+        } else {
+            case
+        };
+        match self.skips(&case) {
+            Some(name) => Err(name),
+            None => Ok(case),
+        }
+    }
+}
+
+/// `d / |d|` in `f32`, or `None` where that is zero or not finite.
+fn normalised(d: Vec3) -> Option<Vec3> {
+    let n = d.normalize_or_zero();
+    (n != Vec3::ZERO && n.is_finite()).then_some(n)
+}
+
+/// The case's ray, if it has one, and its inputs: each vector, scalar or
+/// the quadric's coefficients as one group.
+fn inputs(case: &Case) -> (Option<Ray>, Vec<Vec<f32>>) {
+    let v = |x: Vec3| x.to_array().to_vec();
+    match case {
+        #[cfg(feature = "plane")]
+        Case::Plane(r, p) => (
+            Some(*r),
+            vec![v(r.origin), v(r.dir), v(p.point), v(p.normal)],
+        ),
+        #[cfg(feature = "sphere")]
+        Case::Sphere(r, s) => (
+            Some(*r),
+            vec![v(r.origin), v(r.dir), v(s.center), vec![s.radius]],
+        ),
+        #[cfg(feature = "quadric")]
+        Case::Quadric(r, q) => (Some(*r), vec![v(r.origin), v(r.dir), q.coeffs.to_vec()]),
+        Case::Camera(p, _) => (None, vec![v(p.position), v(p.dir), v(p.up), vec![p.angle]]),
+    }
+}
