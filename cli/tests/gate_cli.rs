@@ -238,3 +238,123 @@ fn judge_matches_answers_by_id() {
         r.stdout
     );
 }
+
+/// Every semantics and declaration of the Rust gate is a flag: the exact
+/// answers pass each semantics; a precondition's skips are counted in
+/// the report; a bad precondition or semantics is refused naming the
+/// valid forms.
+#[test]
+fn every_semantics_and_precondition_is_a_flag() {
+    for sem in ["solid", "range:0.5:100", "roots-in:-1:3"] {
+        let r = rayoracle(
+            &[
+                "gate",
+                "--kind",
+                "quadric",
+                "--semantics",
+                sem,
+                "--declared",
+                "correctly-rounded",
+                "--budget",
+                "16",
+                "--",
+                BIN,
+                "answer",
+                "--semantics",
+                sem,
+            ],
+            "",
+        );
+        assert_eq!(r.code, 0, "{sem}:\n{}{}", r.stdout, r.stderr);
+    }
+    // The whole line's answers under a nearest-hit semantics fail.
+    let r = rayoracle(
+        &[
+            "gate",
+            "--kind",
+            "sphere",
+            "--semantics",
+            "solid",
+            "--budget",
+            "16",
+            "--",
+            BIN,
+            "answer",
+            "--semantics",
+            "whole-line",
+        ],
+        "",
+    );
+    assert_eq!(r.code, 1);
+    let r = rayoracle(
+        &[
+            "gate",
+            "--kind",
+            "sphere",
+            "--declared",
+            "careful-f32-renderer",
+            "--require",
+            "magnitudes:1e-3:1e3",
+            "--budget",
+            "16",
+            "--json",
+            "--",
+            BIN,
+            "answer",
+        ],
+        "",
+    );
+    assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
+    let report = json(r.stdout.trim());
+    let skipped = report["skipped"].as_array().unwrap();
+    assert!(
+        skipped
+            .iter()
+            .any(|s| s["precondition"] == "magnitudes" && s["cases"].as_u64() > Some(0)),
+        "{skipped:?}"
+    );
+    let bad = rayoracle(&["cases", "--kind", "sphere", "--require", "positive"], "");
+    assert_eq!(bad.code, 2);
+    assert!(
+        bad.stderr
+            .contains("--require positive: unknown precondition"),
+        "{}",
+        bad.stderr
+    );
+    let bad = rayoracle(
+        &["cases", "--kind", "sphere", "--semantics", "range:2:1"],
+        "",
+    );
+    assert_eq!(bad.code, 2);
+    assert!(bad.stderr.contains("roots-in:T0:T1"), "{}", bad.stderr);
+}
+
+/// Hit points are an answer form: the exact hit point passes, a point on
+/// the far side fails.
+#[test]
+fn hit_points_are_an_answer_form() {
+    let args = [
+        "--kind",
+        "sphere",
+        "--family",
+        "sphere/two",
+        "--budget",
+        "1",
+        "--no-shrink",
+    ];
+    let case = rayoracle(&[&["cases"], &args[..6]].concat(), "");
+    assert_eq!(
+        case.stdout.trim(),
+        r#"{"id":0,"family":"sphere/two","kind":"sphere","origin":[0.0,0.0,-5.0],"dir":[0.0,0.0,1.0],"center":[0.0,0.0,0.0],"radius":1.0}"#
+    );
+    let near = gate_sh(
+        &args,
+        r#"while read l; do echo '{"point":[0.0,0.0,-1.0]}'; done"#,
+    );
+    assert_eq!(near.code, 0, "{}", near.stdout);
+    let far = gate_sh(
+        &args,
+        r#"while read l; do echo '{"point":[0.0,0.0,1.0]}'; done"#,
+    );
+    assert_eq!(far.code, 1, "{}", far.stdout);
+}
