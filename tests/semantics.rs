@@ -166,7 +166,11 @@ fn a_root_that_overflows_is_still_a_hit() {
         assert!(strict(s).judge_plane(&r, &p, hit.clone()).is_ok(), "{s}");
     }
     // The origin is behind the plane's front: inside the solid.
-    assert!(strict("solid").judge_plane(&r, &p, Answer::Nearest(Some(0.0))).is_ok());
+    assert!(
+        strict("solid")
+            .judge_plane(&r, &p, Answer::Nearest(Some(0.0)))
+            .is_ok()
+    );
     assert!(
         strict("roots-in:0:inf")
             .judge_plane(&r, &p, Answer::Roots(vec![f32::INFINITY]))
