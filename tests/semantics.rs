@@ -152,3 +152,34 @@ fn every_name_parses_and_prints_back() {
         Ok(true)
     );
 }
+
+/// 1/2⁻¹⁴⁹ overflows: the correctly rounded root is +∞, still a hit of an
+/// unbounded ray, but not of one that stops at 10³⁰.
+#[test]
+fn a_root_that_overflows_is_still_a_hit() {
+    let (r, p) = (
+        Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, f32::from_bits(1))),
+        Plane::new(Vec3::Z, Vec3::Z),
+    );
+    let hit = Answer::Nearest(Some(f32::INFINITY));
+    for s in ["nearest", "range:0:inf"] {
+        assert!(strict(s).judge_plane(&r, &p, hit.clone()).is_ok(), "{s}");
+    }
+    // The origin is behind the plane's front: inside the solid.
+    assert!(
+        strict("solid")
+            .judge_plane(&r, &p, Answer::Nearest(Some(0.0)))
+            .is_ok()
+    );
+    assert!(
+        strict("roots-in:0:inf")
+            .judge_plane(&r, &p, Answer::Roots(vec![f32::INFINITY]))
+            .is_ok()
+    );
+    assert!(strict("range:0:1e30").judge_plane(&r, &p, hit).is_err());
+    assert!(
+        strict("range:0:1e30")
+            .judge_plane(&r, &p, Answer::Nearest(None))
+            .is_ok()
+    );
+}

@@ -14,10 +14,13 @@
 //! Floats are decoded as rayoracle's own fuzz targets decode them
 //! ([`FuzzF32`]: raw bits, special values, exact `m·2^e` of
 //! any magnitude, small integers), so NaN, subnormals and exact tangents are
-//! all reachable. A failure panics with the case as an `eval` line.
+//! all reachable. A case a declared precondition skips is not run (with
+//! `unit-dirs`, the kernel gets the direction normalised). A failure
+//! panics with the case as an `eval` line.
 
 use super::FuzzF32;
 use crate::Ray;
+use crate::case::Case;
 use crate::check::gate::{Gate, PlaneKernel, QuadricKernel, SphereKernel};
 use crate::plane::Plane;
 use crate::quadric::Quadric;
@@ -46,7 +49,12 @@ pub fn sphere(data: &[u8], gate: &Gate, kernel: &impl SphereKernel) {
     let (Some(o), Some(d), Some(c), Some(r)) = (v(&mut u), v(&mut u), v(&mut u), f(&mut u)) else {
         return;
     };
-    let (ray, s) = (Ray::new(o, d), Sphere::new(c, r));
+    let Ok(Case::Sphere(ray, s)) = gate
+        .declared
+        .prepare(Case::Sphere(Ray::new(o, d), Sphere::new(c, r)))
+    else {
+        return; // a declared precondition skips it
+    };
     if let Err(e) = gate.judge_sphere(&ray, &s, kernel.intersect(&ray, &s)) {
         panic!("{e}");
     }
@@ -65,7 +73,12 @@ pub fn plane(data: &[u8], gate: &Gate, kernel: &impl PlaneKernel) {
     let (Some(o), Some(d), Some(a), Some(n)) = (v(&mut u), v(&mut u), v(&mut u), v(&mut u)) else {
         return;
     };
-    let (ray, p) = (Ray::new(o, d), Plane::new(a, n));
+    let Ok(Case::Plane(ray, p)) = gate
+        .declared
+        .prepare(Case::Plane(Ray::new(o, d), Plane::new(a, n)))
+    else {
+        return;
+    };
     if let Err(e) = gate.judge_plane(&ray, &p, kernel.intersect(&ray, &p)) {
         panic!("{e}");
     }
@@ -89,7 +102,12 @@ pub fn quadric(data: &[u8], gate: &Gate, kernel: &impl QuadricKernel) {
         let Some(c) = f(&mut u) else { return };
         *x = c;
     }
-    let (ray, q) = (Ray::new(o, d), Quadric::new(k));
+    let Ok(Case::Quadric(ray, q)) = gate
+        .declared
+        .prepare(Case::Quadric(Ray::new(o, d), Quadric::new(k)))
+    else {
+        return;
+    };
     if let Err(e) = gate.judge_quadric(&ray, &q, kernel.intersect(&ray, &q)) {
         panic!("{e}");
     }
@@ -148,5 +166,34 @@ mod tests {
         super::quadric(&bytes, &whole_line, &right);
         let wrong = |_: &Ray, _: &Quadric| Answer::Roots(vec![4.0]);
         assert!(std::panic::catch_unwind(|| super::quadric(&bytes, &whole_line, &wrong)).is_err());
+    }
+
+    /// A declared precondition applies here as in the gate: with unit
+    /// directions the kernel sees the direction normalised, and a subnormal
+    /// input is skipped, not judged.
+    #[test]
+    fn the_fuzz_helpers_keep_the_preconditions() {
+        let careful = Gate::new(
+            Declared::f32(Semantics::WholeLine)
+                .unit_dirs()
+                .no_subnormals(),
+        );
+        let mut bytes = Vec::new();
+        for x in [0.0, 0.0, -5.0, 0.0, 0.0, 4.0, 0.0, 0.0, 0.0, 1.0] {
+            encode_f32(x, &mut bytes);
+        }
+        let seen = RefCell::new(None);
+        let right = |r: &Ray, _: &Sphere| {
+            *seen.borrow_mut() = Some(r.dir);
+            Answer::Roots(vec![4.0, 6.0])
+        };
+        super::sphere(&bytes, &careful, &right);
+        assert_eq!(seen.into_inner(), Some(Vec3::Z));
+        let mut bytes = Vec::new();
+        for x in [0.0, 0.0, -5.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1e-40] {
+            encode_f32(x, &mut bytes);
+        }
+        let never = |_: &Ray, _: &Sphere| -> Answer { panic!("skipped cases are not run") };
+        super::sphere(&bytes, &careful, &never);
     }
 }

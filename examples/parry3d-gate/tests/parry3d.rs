@@ -26,13 +26,14 @@ fn kernel<'a>(list: &'a [Surveyed], name: &str) -> &'a Surveyed {
 
 /// Exactly these sphere families fail the gate for both of parry3d's ball
 /// casts (declared: nearest t > 0, a careful f32 kernel's tolerance).
-const BALL_FAILS: [&str; 9] = [
+/// (`huge-near` passes: its near roots, off by their own κ allowance in
+/// absolute terms, may cross 0.)
+const BALL_FAILS: [&str; 8] = [
     "sphere/dir-tiny",
     "sphere/far-tiny-1e7",
     "sphere/subnormal",
     "sphere/huge",
     "sphere/far-tiny",
-    "sphere/huge-near",
     "sphere/dir-scale",
     "sphere/random/aimed",
     FAR_1E4,

@@ -519,12 +519,12 @@ impl Exact {
             Some(r) => match d.semantics.range() {
                 None => Answer::Roots(r.clone()),
                 Some((lo, hi)) if matches!(d.semantics, Semantics::RootsIn { .. }) => {
-                    Answer::Roots(r.iter().copied().filter(|&t| lo < t && t < hi).collect())
+                    Answer::Roots(r.iter().copied().filter(|&t| in_range(t, lo, hi)).collect())
                 }
                 Some(_) if d.semantics == Semantics::Solid && self.inside.0 <= 0.0 => {
                     Answer::Nearest(Some(0.0))
                 }
-                Some((lo, hi)) => Answer::Nearest(r.iter().copied().find(|&t| lo < t && t < hi)),
+                Some((lo, hi)) => Answer::Nearest(r.iter().copied().find(|&t| in_range(t, lo, hi))),
             },
         }
     }
@@ -1269,20 +1269,19 @@ fn nearest_fault(
         }
     }
     let (lo, hi) = d.semantics.range().unwrap_or((0.0, f32::INFINITY));
-    let (lo64, hi64) = (f64::from(lo), f64::from(hi));
+    let span = Span { d, e, lo, hi };
     let mut candidates = Vec::new();
     let mut none_ok = true;
-    for (i, &r) in roots.iter().enumerate() {
-        let (r, w) = (f64::from(r), tol(i));
-        if r + w > lo64 && r - w < hi64 {
+    for i in 0..roots.len() {
+        if span.may(i) {
             candidates.push(i);
         }
-        if !(r - w <= lo64 || r + w >= hi64) {
+        if span.sure(i) {
             none_ok = false;
             break;
         }
     }
-    let expected = roots.iter().position(|&r| lo < r && r < hi);
+    let expected = roots.iter().position(|&r| in_range(r, lo, hi));
     let Some(t) = t else {
         // A root at t ≈ 0, or a class in the band, may go either way.
         return match expected.map(|i| roots[i]) {
@@ -1297,7 +1296,7 @@ fn nearest_fault(
     if expected.is_none() && t.abs() <= 1e-30 {
         return None;
     }
-    if p.is_none() && !(lo < t && t < hi) {
+    if p.is_none() && !in_range(t, lo, hi) {
         return Some(Fault::NotPositive);
     }
     // In the band, the nearer of two roots near the double root.
@@ -1329,20 +1328,15 @@ fn roots_in_fault(
         .semantics
         .range()
         .unwrap_or((f32::NEG_INFINITY, f32::INFINITY));
-    let (lo64, hi64) = (f64::from(lo), f64::from(hi));
-    if let Some(&t) = g.iter().find(|&&t| !(lo < t && t < hi)) {
+    if let Some(&t) = g.iter().find(|&&t| !in_range(t, lo, hi)) {
         return Some(Fault::OutOfRange(t));
     }
     let g = match g {
         [a, b] if a == b && d.band_scale != 0.0 => &g[..1],
         g => g,
     };
-    let span = |i: usize| {
-        let (r, w) = (f64::from(roots[i]), e.reach(d, roots[i], kappa(i)));
-        (r - w, r + w)
-    };
-    let may = |i: usize| span(i).1 > lo64 && span(i).0 < hi64;
-    let sure = |i: usize| span(i).0 > lo64 && span(i).1 < hi64;
+    let span = Span { d, e, lo, hi };
+    let (may, sure) = (|i| span.may(i), |i| span.sure(i));
     // Each subsequence of the exact roots the answer may stand for.
     let n = roots.len();
     let mut first_bad = None;
@@ -1383,6 +1377,56 @@ fn roots_in_fault(
         }
         None => Fault::Class,
     })
+}
+
+/// Whether `t` is in the open range `(lo, hi)`, or is an infinite end of
+/// an unbounded one (a root that overflows is still a hit of a ray).
+fn in_range(t: f32, lo: f32, hi: f32) -> bool {
+    (lo < t || t == lo && t == f32::NEG_INFINITY) && (t < hi || t == hi && t == f32::INFINITY)
+}
+
+/// Exact roots as intervals `r ± reach` against a range of `t`.
+struct Span<'a> {
+    d: &'a Declared,
+    e: &'a Exact,
+    lo: f32,
+    hi: f32,
+}
+
+impl Span<'_> {
+    /// Root `i`'s interval (its reach 0 where it is infinite).
+    fn ends(&self, i: usize) -> (f64, f64) {
+        let r = self.e.roots.as_deref().unwrap_or(&[])[i];
+        let k = self.e.kappa.get(i).copied().unwrap_or(f64::INFINITY);
+        let w = if r.is_finite() {
+            self.e.reach(self.d, r, k)
+        } else {
+            0.0
+        };
+        (f64::from(r) - w, f64::from(r) + w)
+    }
+
+    /// Whether root `i` may be inside the range.
+    fn may(&self, i: usize) -> bool {
+        let (a, b) = self.ends(i);
+        let within = |x: f64| in_range(x as f32, self.lo, self.hi);
+        if a == b {
+            within(a)
+        } else {
+            b > f64::from(self.lo) && a < f64::from(self.hi)
+        }
+    }
+
+    /// Whether root `i` is surely inside the range.
+    fn sure(&self, i: usize) -> bool {
+        let (a, b) = self.ends(i);
+        let within = |x: f64| x > f64::from(self.lo) && x < f64::from(self.hi);
+        if a == b {
+            in_range(a as f32, self.lo, self.hi)
+        } else {
+            within(a) && within(b)
+        }
+    }
 }
 
 /// The `t` nearest a point on the ray, `(p − o)·d / d·d`, for the band's
