@@ -8,14 +8,11 @@ use rayoracle::Ray;
 use rayoracle::plane::Plane;
 use rayoracle::sphere::Sphere;
 use std::sync::OnceLock;
-use survey_kit::Surveyed;
+use survey_kit::{Surveyed, named};
 
 fn surveyed(kernel: &str) -> &'static Surveyed {
     static S: OnceLock<Vec<Surveyed>> = OnceLock::new();
-    S.get_or_init(survey)
-        .iter()
-        .find(|s| s.kernel == kernel)
-        .expect("surveyed")
+    named(S.get_or_init(survey), kernel)
 }
 
 #[test]
@@ -59,7 +56,7 @@ fn from_inside_the_sphere_cast_answers_zero() {
         "sphere/near-surface-inside",
         "sphere/random/inside",
     ] {
-        let f = s.stats.iter().find(|f| f.family == family).unwrap();
+        let f = s.family(family);
         assert_eq!(
             (f.wrong_hits, f.wrong_misses, f.hits),
             (0, 0, f.cases),
@@ -89,11 +86,7 @@ fn a_plane_closer_than_epsilon_is_missed() {
     assert_eq!(plane_cast(&Ray::new(Vec3::ZERO, Vec3::Z), &p), None);
     let p = Plane::new(Vec3::new(0.0, 0.0, 1e-6), Vec3::Z);
     assert_eq!(plane_cast(&Ray::new(Vec3::ZERO, Vec3::Z), &p), Some(1e-6));
-    let f = surveyed(PLANE)
-        .stats
-        .iter()
-        .find(|f| f.family == SMALL_T)
-        .unwrap();
+    let f = surveyed(PLANE).family(SMALL_T);
     assert_eq!((f.wrong_misses, f.cases), (256, 256));
 }
 
@@ -104,11 +97,7 @@ fn a_nearly_parallel_plane_is_missed() {
     let d = Vec3::new(1.0, 0.0, 1e-7).normalize();
     let p = Plane::new(Vec3::new(0.0, 0.0, 1e-3), Vec3::Z);
     assert_eq!(plane_cast(&Ray::new(Vec3::ZERO, d), &p), None);
-    let f = surveyed(PLANE)
-        .stats
-        .iter()
-        .find(|f| f.family == "plane/near-parallel")
-        .unwrap();
+    let f = surveyed(PLANE).family("plane/near-parallel");
     assert_eq!((f.wrong_hits, f.wrong_misses, f.failures), (0, 113, 3));
 }
 
@@ -116,11 +105,7 @@ fn a_nearly_parallel_plane_is_missed() {
 /// `far-tiny` cases fail (parry3d's `b² − ac` fails 212).
 #[test]
 fn the_far_sphere_is_mostly_right() {
-    let f = surveyed(SPHERE)
-        .stats
-        .iter()
-        .find(|f| f.family == "sphere/far-tiny")
-        .unwrap();
+    let f = surveyed(SPHERE).family("sphere/far-tiny");
     assert_eq!((f.wrong_hits, f.wrong_misses, f.failures), (0, 9, 7));
     assert!(f.max_ulps <= 3, "{f:?}");
 }

@@ -106,6 +106,16 @@ impl Surveyed {
             .collect()
     }
 
+    /// The numbers of `family`.
+    ///
+    /// # Panics
+    ///
+    /// If `family` was not surveyed.
+    pub fn family(&self, family: &str) -> &FamilyStats {
+        let f = self.stats.iter().find(|f| f.family == family);
+        f.unwrap_or_else(|| panic!("{family} not surveyed"))
+    }
+
     /// The first failure of `family`, if it fails.
     pub fn example(&self, family: &str) -> Option<&Failure> {
         self.examples.iter().find(|f| f.family == family)
@@ -146,6 +156,16 @@ impl Surveyed {
         }
         out
     }
+}
+
+/// The surveyed kernel named `kernel` in `list`.
+///
+/// # Panics
+///
+/// If there is none.
+pub fn named<'a>(list: &'a [Surveyed], kernel: &str) -> &'a Surveyed {
+    let k = list.iter().find(|s| s.kernel == kernel);
+    k.unwrap_or_else(|| panic!("{kernel} not surveyed"))
 }
 
 /// A random unit vector, uniform on the sphere (by rejection from the
