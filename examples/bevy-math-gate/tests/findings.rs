@@ -7,13 +7,8 @@ use glam::Vec3;
 use rayoracle::Ray;
 use rayoracle::plane::Plane;
 use rayoracle::sphere::Sphere;
-use std::sync::OnceLock;
-use survey_kit::{Surveyed, named};
 
-fn surveyed(kernel: &str) -> &'static Surveyed {
-    static S: OnceLock<Vec<Surveyed>> = OnceLock::new();
-    named(S.get_or_init(survey), kernel)
-}
+survey_kit::survey_tests!(survey);
 
 #[test]
 fn the_sphere_cast_fails_exactly_these_families() {

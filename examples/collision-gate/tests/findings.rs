@@ -7,13 +7,8 @@ use cgmath::{Point3, Vector3};
 use collision::prelude::*;
 use collision::{Plane as CPlane, Ray3, Sphere as CSphere};
 use collision_gate::*;
-use std::sync::OnceLock;
-use survey_kit::{Surveyed, named};
 
-fn surveyed(kernel: &str) -> &'static Surveyed {
-    static S: OnceLock<Vec<Surveyed>> = OnceLock::new();
-    named(S.get_or_init(survey), kernel)
-}
+survey_kit::survey_tests!(survey);
 
 #[test]
 fn the_sphere_cast_fails_exactly_these_families() {

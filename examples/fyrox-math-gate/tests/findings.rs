@@ -7,13 +7,8 @@ use fyrox_math::plane::Plane as FPlane;
 use fyrox_math::ray::{CylinderKind, Ray as FRay};
 use fyrox_math_gate::*;
 use nalgebra::Vector3;
-use std::sync::OnceLock;
-use survey_kit::{Surveyed, named};
 
-fn surveyed(kernel: &str) -> &'static Surveyed {
-    static S: OnceLock<Vec<Surveyed>> = OnceLock::new();
-    named(S.get_or_init(survey), kernel)
-}
+survey_kit::survey_tests!(survey);
 
 #[test]
 fn the_sphere_solver_fails_exactly_these_families() {

@@ -126,7 +126,7 @@ impl Surveyed {
     /// first failure's `eval` line with the expected and actual answers).
     pub fn findings(&self) -> String {
         let mut out = format!(
-            "#### {}\n\n{} of {} families fail.\n\n",
+            "### {}\n\n{} of {} families fail.\n\n",
             self.kernel,
             self.failing().len(),
             self.stats.len()
@@ -166,6 +166,48 @@ impl Surveyed {
 pub fn named<'a>(list: &'a [Surveyed], kernel: &str) -> &'a Surveyed {
     let k = list.iter().find(|s| s.kernel == kernel);
     k.unwrap_or_else(|| panic!("{kernel} not surveyed"))
+}
+
+/// The surveyed kernels whose [`Surveyed::findings`] are not in `doc`
+/// word for word (for a test that the published tables are current).
+///
+/// ```
+/// use survey_kit::{Surveyed, missing_from};
+/// let s = Surveyed { kernel: "k".into(), stats: vec![], examples: vec![] };
+/// assert_eq!(missing_from(std::slice::from_ref(&s), &s.findings()), Vec::<&str>::new());
+/// assert_eq!(missing_from(&[s], "nothing"), ["k"]);
+/// ```
+pub fn missing_from<'a>(list: &'a [Surveyed], doc: &str) -> Vec<&'a str> {
+    list.iter()
+        .filter(|s| !doc.contains(s.findings().trim()))
+        .map(|s| s.kernel.as_str())
+        .collect()
+}
+
+/// In a survey's tests: `all()`, the survey run once; `surveyed(kernel)`,
+/// one kernel of it; and the test that docs/crate-surveys.md shows its
+/// findings word for word.
+#[macro_export]
+macro_rules! survey_tests {
+    ($survey:path) => {
+        fn all() -> &'static [$crate::Surveyed] {
+            static S: std::sync::OnceLock<Vec<$crate::Surveyed>> = std::sync::OnceLock::new();
+            S.get_or_init($survey)
+        }
+
+        fn surveyed(kernel: &str) -> &'static $crate::Surveyed {
+            $crate::named(all(), kernel)
+        }
+
+        #[test]
+        fn the_published_tables_are_current() {
+            let doc = include_str!(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/../../docs/crate-surveys.md"
+            ));
+            assert_eq!($crate::missing_from(all(), doc), Vec::<&str>::new());
+        }
+    };
 }
 
 /// A random unit vector, uniform on the sphere (by rejection from the
