@@ -12,6 +12,12 @@
 //!
 //! Every kernel declares what a careful f32 kernel would
 //! ([`Declared::f32`]).
+//!
+//! More known-wrong kernels, one file a kind, share the helpers here:
+//! `known_wrong_sphere.rs`, `known_wrong_plane.rs`,
+//! `known_wrong_quadric.rs`, `known_wrong_camera.rs` and
+//! `known_wrong_lanes.rs`. Each of their bugs is caught by a whole family
+//! ([`assert_family_catches`]), not by one fixture line.
 
 use glam::DVec3;
 use rayoracle::camera::{CameraParams, filter};
@@ -25,7 +31,7 @@ use rayoracle::{Ray, hit::Intersection};
 
 /// The gate every kernel here goes through: the default budget, a careful
 /// f32 declaration.
-fn gate(semantics: Semantics) -> Gate {
+pub(crate) fn gate(semantics: Semantics) -> Gate {
     Gate::new(Declared::f32(semantics))
 }
 
@@ -33,7 +39,7 @@ fn gate(semantics: Semantics) -> Gate {
 /// of `expected` is among the families that caught it. Prints the catchers
 /// and the first failure, so that `cargo test -- --nocapture` documents
 /// which family catches what.
-fn assert_caught(kernel: &str, report: &Report, expected: &[&str]) {
+pub(crate) fn assert_caught(kernel: &str, report: &Report, expected: &[&str]) {
     let caught = report.failing_families();
     eprintln!(
         "{kernel}: caught by {} of {} families: {caught:?}",
@@ -59,7 +65,7 @@ fn assert_caught(kernel: &str, report: &Report, expected: &[&str]) {
 }
 
 /// Asserts that a correct kernel passes, after running at least `min_cases`.
-fn assert_passes(kernel: &str, report: &Report, min_cases: usize) {
+pub(crate) fn assert_passes(kernel: &str, report: &Report, min_cases: usize) {
     eprintln!(
         "{kernel}: {} cases in {} families, no failure",
         report.cases,
@@ -73,21 +79,38 @@ fn assert_passes(kernel: &str, report: &Report, min_cases: usize) {
     );
 }
 
+/// Asserts that the gate caught a known-wrong kernel with a whole family:
+/// `family` ran and failed on at least `min` of its cases (and every kept
+/// failure is a parseable eval line).
+pub(crate) fn assert_family_catches(kernel: &str, report: &Report, family: &str, min: usize) {
+    assert_caught(kernel, report, &[family]);
+    let (_, cases, failed) = report
+        .families
+        .iter()
+        .find(|f| f.0 == family)
+        .unwrap_or_else(|| panic!("{kernel}: no family {family} in {:?}", report.families));
+    eprintln!("{kernel}: {family} fails {failed} of {cases} cases");
+    assert!(
+        *failed >= min,
+        "{kernel}: {family} fails only {failed} of {cases} cases, fewer than {min}"
+    );
+}
+
 // ---------------------------------------------------------------------------
 // The sphere in f64: the helper the derivation slips are built on.
 
 /// The sphere's inputs in `f64`: `f = o − C`, `d`, `R`, `a = d·d`,
 /// `b = f·d` (half the linear coefficient) and `|a f − b d|²`, which is
 /// `a(f·f) − b²` without the cancellation (Lagrange's identity).
-struct Terms {
-    a: f64,
-    b: f64,
-    ff: f64,
-    r2: f64,
-    perp2: f64,
+pub(crate) struct Terms {
+    pub(crate) a: f64,
+    pub(crate) b: f64,
+    pub(crate) ff: f64,
+    pub(crate) r2: f64,
+    pub(crate) perp2: f64,
 }
 
-fn terms(ray: &Ray, s: &Sphere) -> Terms {
+pub(crate) fn terms(ray: &Ray, s: &Sphere) -> Terms {
     let f: DVec3 = ray.origin.as_dvec3() - s.center.as_dvec3();
     let d: DVec3 = ray.dir.as_dvec3();
     let (a, b) = (d.dot(d), f.dot(d));
@@ -105,7 +128,7 @@ fn terms(ray: &Ray, s: &Sphere) -> Terms {
 /// `disc` is `a(b² − ac)`, `q = −(b + sign(b)·√(disc/a))`, `t₀ = c/q`,
 /// `t₁ = q/a`, sorted, each rounded once. `sqrt` is the square root the
 /// kernel uses.
-fn solve(a: f64, b: f64, c: f64, disc: f64, sqrt: impl Fn(f64) -> f64) -> SphereHit {
+pub(crate) fn solve(a: f64, b: f64, c: f64, disc: f64, sqrt: impl Fn(f64) -> f64) -> SphereHit {
     if a == 0.0 || disc.is_nan() || disc < 0.0 {
         SphereHit::None
     } else if disc == 0.0 {
@@ -121,7 +144,7 @@ fn solve(a: f64, b: f64, c: f64, disc: f64, sqrt: impl Fn(f64) -> f64) -> Sphere
 /// The correct sphere through [`solve`]: `c = f·f − R²`,
 /// `disc = (aR)² − |af − bd|²`. A control: the helper the derivation slips are
 /// built on is not itself what the gate catches.
-fn helper_sphere(ray: &Ray, s: &Sphere) -> Answer {
+pub(crate) fn helper_sphere(ray: &Ray, s: &Sphere) -> Answer {
     let t = terms(ray, s);
     let disc = t.a * t.a * t.r2 - t.perp2;
     Answer::roots(solve(t.a, t.b, t.ff - t.r2, disc, f64::sqrt))
@@ -288,7 +311,7 @@ fn seed_quadric_no_alpha_guard(ray: &Ray, q: &Quadric) -> Answer {
 /// The reference camera's basis with the pixel offsets `(u, v)` computed by
 /// `offsets` (from `res` and the pixel), then `(dir + u·x) + v·y` as the
 /// reference does it.
-fn camera_with(
+pub(crate) fn camera_with(
     p: &CameraParams,
     px: [u32; 2],
     offsets: impl Fn([u32; 2], [u32; 2]) -> (f32, f32),
@@ -301,7 +324,7 @@ fn camera_with(
 }
 
 /// The correct camera, as the brief's control.
-fn camera_correct(p: &CameraParams, px: [u32; 2]) -> Option<Ray> {
+pub(crate) fn camera_correct(p: &CameraParams, px: [u32; 2]) -> Option<Ray> {
     p.build().ok().map(|c| c.ray(px[0], px[1]))
 }
 

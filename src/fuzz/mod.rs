@@ -615,8 +615,8 @@ mod tests {
         use glam::Vec3;
         let odd = Ray::new(Vec3::new(-0.0, 1.5, f32::NAN), Vec3::new(3.0, -2.0, 1e-40));
         let negated = |p: &P| P::from_inputs(&P::inputs(p).iter().map(|x| -x).collect::<Vec<_>>());
-        let mut all: Vec<(Ray, P)> = P::decoys().to_vec();
-        all.extend(P::decoys().iter().map(|(_, p)| (odd, negated(p))));
+        let mut all: Vec<(Ray, P)> = P::decoys().concat();
+        all.extend(P::decoys().concat().iter().map(|(_, p)| (odd, negated(p))));
         let bits = |r: Ray, p: P| {
             let mut v: Vec<f32> = [r.origin.to_array(), r.dir.to_array()].concat();
             v.extend(P::inputs(&p));

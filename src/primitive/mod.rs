@@ -66,10 +66,12 @@ pub trait Primitive: Copy + core::fmt::Debug + PartialEq + Sized + 'static {
     /// and the nearest one (`+∞` where there is none).
     fn nearest4(h: &Self::Hit4, t_min: f32x4, t_max: f32x4) -> (f32x4, f32x4);
 
-    /// Three cases for the other lanes of a packet when one case is run in
-    /// each lane in turn: answers of different classes, one of them from a
-    /// NaN ray, so that a lane leaking into its neighbours shows.
-    fn decoys() -> [(Ray, Self); 3];
+    /// Two sets of three cases for the other lanes of a packet when one
+    /// case is run in each lane in turn ([`in_every_lane`]): between them
+    /// every class the kind has and a NaN ray, so that a lane leaking into
+    /// its neighbours shows, and so does a packet that answers every lane
+    /// alike when one lane misses, is NaN or is degenerate.
+    fn decoys() -> [[(Ray, Self); 3]; 2];
 
     /// The primitive's `f32` inputs, [`Primitive::INPUTS`] of them, in the
     /// order of its fields (the fuzz targets' byte order).
@@ -150,10 +152,13 @@ pub fn packet<T: Copy>(case: T, decoys: [T; 3], lane: usize) -> [T; 4] {
 }
 
 /// Runs a ray and a primitive in each lane of a packet in turn, its
-/// [`Primitive::decoys`] in the other lanes: `run` takes the four cases
-/// and answers for each lane, and the result holds the answer of the
-/// case's own lane in each placement. A four-lane kernel that keeps its
-/// lanes apart gives four equal answers.
+/// [`Primitive::decoys`] in the other lanes (the first set when the case
+/// is in lane 0 or 2, the second in lane 1 or 3, so that every class sits
+/// beside the case in two placements): `run` takes the four cases and
+/// answers for each lane, and the result holds the answer of the case's
+/// own lane in each placement. A four-lane kernel that keeps its lanes
+/// apart gives four equal answers; one that answers every lane alike when
+/// any lane misses does not.
 ///
 /// ```
 /// # #[cfg(feature = "sphere")] {
@@ -164,6 +169,12 @@ pub fn packet<T: Copy>(case: T, decoys: [T; 3], lane: usize) -> [T; 4] {
 /// // A kernel that answers from lane 0 only is caught.
 /// let leaky = in_every_lane(r, s, |c| [x4_lanes(c)[0]; 4]);
 /// assert_ne!(leaky[1], leaky[0]);
+/// // So is a packet that gives up on every lane when one lane misses.
+/// let early_out = in_every_lane(r, s, |c| {
+///     let h = x4_lanes(c);
+///     if h.contains(&SphereHit::None) { [SphereHit::None; 4] } else { h }
+/// });
+/// assert!(early_out.contains(&SphereHit::None) && early_out.contains(&SphereHit::Two(2.0, 4.0)));
 /// # }
 /// ```
 pub fn in_every_lane<P: Primitive, A: Clone>(
@@ -171,7 +182,8 @@ pub fn in_every_lane<P: Primitive, A: Clone>(
     p: P,
     run: impl Fn([(Ray, P); 4]) -> [A; 4],
 ) -> [A; 4] {
-    core::array::from_fn(|lane| run(packet((ray, p), P::decoys(), lane))[lane].clone())
+    let sets = P::decoys();
+    core::array::from_fn(|lane| run(packet((ray, p), sets[lane % 2], lane))[lane].clone())
 }
 
 /// Runs the x4 kernel on four `(ray, primitive)` cases and unpacks the
@@ -211,17 +223,25 @@ mod tests {
     use crate::hit::{Class, same_bits};
 
     #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
-    /// Every primitive's decoys give different classes, one of them from a
-    /// NaN ray; a kind's inputs read back to the same primitive; a case
-    /// built from a pair gives that pair back and is of the kind.
-    fn holds_for<P: Primitive>() {
-        let d = P::decoys();
-        let classes: Vec<Class> = d.iter().map(|(r, p)| P::reference(r, p).class()).collect();
-        assert!(
-            classes[0] != classes[1] && classes[1] != classes[2] && classes[0] != classes[2],
-            "{:?}: {classes:?}",
-            P::KIND
-        );
+    /// Every primitive's decoys give every class of the kind (`classes`),
+    /// each set three different answers, one decoy a NaN ray; a kind's
+    /// inputs read back to the same primitive; a case built from a pair
+    /// gives that pair back and is of the kind.
+    fn holds_for<P: Primitive>(classes: &[Class]) {
+        let sets = P::decoys();
+        for set in &sets {
+            let h = set.map(|(r, p)| P::reference(&r, &p));
+            assert!(
+                !same_bits(&h[0], &h[1]) && !same_bits(&h[1], &h[2]) && !same_bits(&h[0], &h[2]),
+                "{:?}: {h:?}",
+                P::KIND
+            );
+        }
+        let d: Vec<(Ray, P)> = sets.concat();
+        let seen: Vec<Class> = d.iter().map(|(r, p)| P::reference(r, p).class()).collect();
+        for c in classes {
+            assert!(seen.contains(c), "{:?}: no {c:?} among {seen:?}", P::KIND);
+        }
         assert!(d.iter().any(|(r, _)| r.origin.is_nan()));
         for (r, p) in d {
             assert_eq!(P::inputs(&p).len(), P::INPUTS);
@@ -250,19 +270,32 @@ mod tests {
     #[cfg(feature = "plane")]
     #[test]
     fn the_plane_is_a_primitive() {
-        holds_for::<crate::plane::Plane>();
+        holds_for::<crate::plane::Plane>(&[Class::Hit, Class::Parallel, Class::InPlane]);
     }
 
     #[cfg(feature = "sphere")]
     #[test]
     fn the_sphere_is_a_primitive() {
-        holds_for::<crate::sphere::Sphere>();
+        holds_for::<crate::sphere::Sphere>(&[Class::Two, Class::None, Class::Tangent]);
     }
 
     #[cfg(feature = "quadric")]
     #[test]
     fn the_quadric_is_a_primitive() {
-        holds_for::<crate::quadric::Quadric>();
+        use crate::quadric::QuadricHit;
+        holds_for::<crate::quadric::Quadric>(&[Class::None, Class::One, Class::Two, Class::All]);
+        // Both kinds of one root: a linear root and a double root.
+        let ones = crate::quadric::Quadric::decoys()
+            .concat()
+            .iter()
+            .filter(|(r, q)| {
+                matches!(
+                    crate::quadric::reference::intersect(r, q),
+                    QuadricHit::One(_)
+                )
+            })
+            .count();
+        assert_eq!(ones, 2);
     }
 
     #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]

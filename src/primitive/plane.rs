@@ -18,13 +18,21 @@ impl Primitive for Plane {
     fn pack(p: [Plane; 4]) -> x4::Plane4 {
         x4::Plane4::from_planes(p)
     }
-    /// A hit, a NaN ray and a ray in the plane.
-    fn decoys() -> [(Ray, Plane); 3] {
+    /// A hit, a parallel ray and a ray in the plane; a hit behind the
+    /// origin, a NaN ray and another ray in the plane.
+    fn decoys() -> [[(Ray, Plane); 3]; 2] {
         let ground = Plane::new(Vec3::ZERO, Vec3::Y);
         [
-            (Ray::new(Vec3::Y, -Vec3::Y), ground),
-            (Ray::new(Vec3::splat(f32::NAN), Vec3::X), ground),
-            (Ray::new(Vec3::ZERO, Vec3::X), ground),
+            [
+                (Ray::new(Vec3::Y, -Vec3::Y), ground),
+                (Ray::new(Vec3::Y, Vec3::X), ground),
+                (Ray::new(Vec3::ZERO, Vec3::X), ground),
+            ],
+            [
+                (Ray::new(Vec3::Y, Vec3::Y), ground),
+                (Ray::new(Vec3::splat(f32::NAN), Vec3::X), ground),
+                (Ray::new(Vec3::X, Vec3::Z), ground),
+            ],
         ]
     }
     fn inputs(&self) -> Vec<f32> {

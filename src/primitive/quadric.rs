@@ -18,13 +18,24 @@ impl Primitive for Quadric {
     fn pack(q: [Quadric; 4]) -> x4::Quadric4 {
         x4::Quadric4::from_quadrics(q)
     }
-    /// A two-hit, a NaN ray and a line on the cylinder.
-    fn decoys() -> [(Ray, Quadric); 3] {
+    /// A two-hit, a miss (parallel to the cylinder's axis, outside) and a
+    /// line on the cylinder; the linear root of a ray along a paraboloid's
+    /// axis, a NaN ray and a tangent (a double root).
+    fn decoys() -> [[(Ray, Quadric); 3]; 2] {
         let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+        let bowl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0]);
+        let ray = |o: [f32; 3], d: Vec3| Ray::new(Vec3::from_array(o), d);
         [
-            (Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X), cyl),
-            (Ray::new(Vec3::splat(f32::NAN), Vec3::X), cyl),
-            (Ray::new(Vec3::new(1.0, 0.0, 0.0), Vec3::Z), cyl),
+            [
+                (ray([-5.0, 0.0, 0.0], Vec3::X), cyl),
+                (ray([5.0, 5.0, 0.0], Vec3::Z), cyl),
+                (ray([1.0, 0.0, 0.0], Vec3::Z), cyl),
+            ],
+            [
+                (ray([0.0, 0.0, -2.0], Vec3::Z), bowl),
+                (ray([f32::NAN; 3], Vec3::X), cyl),
+                (ray([-5.0, 1.0, 0.0], Vec3::X), cyl),
+            ],
         ]
     }
     fn inputs(&self) -> Vec<f32> {

@@ -18,13 +18,22 @@ impl Primitive for Sphere {
     fn pack(s: [Sphere; 4]) -> x4::Sphere4 {
         x4::Sphere4::from_spheres(s)
     }
-    /// A two-hit, a NaN ray and a tangent.
-    fn decoys() -> [(Ray, Sphere); 3] {
+    /// A two-hit, a miss and a tangent; a two-hit from inside (one root
+    /// behind), a NaN ray and a two-hit nearer by.
+    fn decoys() -> [[(Ray, Sphere); 3]; 2] {
         let unit = Sphere::new(Vec3::ZERO, 1.0);
+        let ray = |o: [f32; 3]| Ray::new(Vec3::from_array(o), Vec3::Z);
         [
-            (Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), unit),
-            (Ray::new(Vec3::splat(f32::NAN), Vec3::Z), unit),
-            (Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z), unit),
+            [
+                (ray([0.0, 0.0, -5.0]), unit),
+                (ray([0.0, 3.0, -5.0]), unit),
+                (ray([0.0, 1.0, -5.0]), unit),
+            ],
+            [
+                (ray([0.0, 0.0, 0.0]), unit),
+                (ray([f32::NAN; 3]), unit),
+                (ray([0.0, 0.0, -3.0]), unit),
+            ],
         ]
     }
     fn inputs(&self) -> Vec<f32> {
