@@ -107,13 +107,23 @@ fn the_careful_sphere_passes_its_honest_declaration() {
         r.assert_ok();
         let skipped: usize = r.skipped.iter().map(|s| s.1).sum();
         assert!(
-            r.cases > 2000 && skipped < r.cases / 10,
+            r.cases > 2000 && skipped < r.cases / 3,
             "{} {:?}",
             r.cases,
             r.skipped
         );
-        let names: Vec<&str> = r.skipped.iter().map(|s| s.0.as_str()).collect();
-        assert_eq!(names, ["unit-dirs", "no-subnormals", "magnitudes"]);
+        let mut names: Vec<&str> = r.skipped.iter().map(|s| s.0.as_str()).collect();
+        names.sort();
+        assert_eq!(
+            names,
+            [
+                "magnitudes",
+                "no-subnormals",
+                "off-surface",
+                "spread",
+                "unit-dirs"
+            ]
+        );
     }
 }
 

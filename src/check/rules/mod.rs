@@ -226,6 +226,11 @@ pub struct Declared {
     /// Skip cases with a nonzero input of magnitude outside `[lo, hi]`
     /// (`magnitudes:LO:HI`).
     pub magnitudes: Option<(f32, f32)>,
+    /// Skip cases whose largest input magnitude is more than `k` times the
+    /// least (`spread:K`).
+    pub spread: Option<f32>,
+    /// Skip rays that start exactly on the surface (`off-surface`).
+    pub off_surface: bool,
 }
 
 impl Declared {
@@ -241,6 +246,8 @@ impl Declared {
             unit_dirs_only: false,
             no_subnormals: false,
             magnitudes: None,
+            spread: None,
+            off_surface: false,
         }
     }
 
@@ -255,6 +262,8 @@ impl Declared {
             unit_dirs_only: false,
             no_subnormals: false,
             magnitudes: None,
+            spread: None,
+            off_surface: false,
         }
     }
 
@@ -277,6 +286,8 @@ impl Declared {
             unit_dirs_only: false,
             no_subnormals: false,
             magnitudes: None,
+            spread: None,
+            off_surface: false,
         }
     }
 
@@ -301,6 +312,8 @@ impl Declared {
         .unit_dirs()
         .no_subnormals()
         .magnitudes(2f32.powi(-32), 2f32.powi(40))
+        .spread(2f32.powi(24))
+        .off_surface()
     }
 
     /// The same, fed only unit-length directions.

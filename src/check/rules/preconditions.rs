@@ -7,6 +7,8 @@
 //! | `unit-dirs` | the direction's `f32` normalisation is zero or not finite (the other cases are fed normalised) |
 //! | `no-subnormals` | an input is subnormal |
 //! | `magnitudes:LO:HI` | the largest magnitude of a finite nonzero input (a vector's largest component, the radius, the quadric's largest coefficient) is below `LO` or above `HI` |
+//! | `off-surface` | the ray starts exactly on the surface (the surface's function is exactly 0 at the origin): a renderer offsets such origins or asks for `t > t_min`, since no f32 kernel resolves the sign of roots that close to 0 |
+//! | `spread:K` | the largest of those magnitudes, the direction's left out, is more than `K` times the least nonzero one: a scene whose extent and smallest feature are that far apart (a sphere `10⁹` radii away) is beyond an `f32` kernel's resolution |
 
 use super::Declared;
 use crate::Ray;
@@ -16,7 +18,7 @@ use glam::Vec3;
 impl Declared {
     /// Every precondition's form, for error messages and help texts.
     pub const PRECONDITIONS: &'static str =
-        "unit-dirs, no-subnormals, magnitudes:LO:HI (0 ≤ LO ≤ HI)";
+        "unit-dirs, no-subnormals, magnitudes:LO:HI (0 ≤ LO ≤ HI), spread:K (K ≥ 1), off-surface";
 
     /// The same, skipping cases with a subnormal input.
     pub fn no_subnormals(self) -> Declared {
@@ -33,6 +35,48 @@ impl Declared {
     pub fn magnitudes(self, lo: f32, hi: f32) -> Declared {
         Declared {
             magnitudes: Some((lo, hi)),
+            ..self
+        }
+    }
+
+    /// The same, skipping cases whose largest input magnitude (the
+    /// direction's left out) is more than `k` times the least nonzero one.
+    ///
+    /// ```
+    /// # #[cfg(feature = "sphere")] {
+    /// use rayoracle::check::rules::{Declared, Semantics};
+    /// use rayoracle::{Ray, case::Case, sphere::Sphere};
+    /// use glam::Vec3;
+    /// let d = Declared::f32(Semantics::NearestPositive).spread(1e6);
+    /// let far = Case::Sphere(Ray::new(Vec3::ZERO, Vec3::Z), Sphere::new(Vec3::new(0.0, 0.0, 1e9), 4.0));
+    /// assert_eq!(d.skips(&far), Some("spread"));
+    /// let near = Case::Sphere(Ray::new(Vec3::ZERO, Vec3::Z), Sphere::new(Vec3::new(0.0, 0.0, 1e3), 4.0));
+    /// assert_eq!(d.skips(&near), None);
+    /// # }
+    /// ```
+    pub fn spread(self, k: f32) -> Declared {
+        Declared {
+            spread: Some(k),
+            ..self
+        }
+    }
+
+    /// The same, skipping rays that start exactly on the surface.
+    ///
+    /// ```
+    /// # #[cfg(feature = "sphere")] {
+    /// use rayoracle::check::rules::{Declared, Semantics};
+    /// use rayoracle::{Ray, case::Case, sphere::Sphere};
+    /// use glam::Vec3;
+    /// let d = Declared::f32(Semantics::NearestPositive).off_surface();
+    /// let s = Sphere::new(Vec3::ZERO, 1.0);
+    /// assert_eq!(d.skips(&Case::Sphere(Ray::new(Vec3::X, Vec3::Y), s)), Some("off-surface"));
+    /// assert_eq!(d.skips(&Case::Sphere(Ray::new(Vec3::new(1.5, 0.0, 0.0), Vec3::Y), s)), None);
+    /// # }
+    /// ```
+    pub fn off_surface(self) -> Declared {
+        Declared {
+            off_surface: true,
             ..self
         }
     }
@@ -57,6 +101,11 @@ impl Declared {
         match spec {
             "unit-dirs" => Ok(self.unit_dirs()),
             "no-subnormals" => Ok(self.no_subnormals()),
+            "off-surface" => Ok(self.off_surface()),
+            _ if spec.starts_with("spread:") => match spec["spread:".len()..].parse::<f32>() {
+                Ok(k) if k >= 1.0 => Ok(self.spread(k)),
+                _ => Err(bad()),
+            },
             _ => {
                 let rest = spec.strip_prefix("magnitudes:").ok_or_else(bad)?;
                 let (a, b) = rest.split_once(':').ok_or_else(bad)?;
@@ -110,6 +159,21 @@ impl Declared {
         {
             return Some("magnitudes");
         }
+        if self.off_surface && on_surface(case) {
+            return Some("off-surface");
+        }
+        if let Some(k) = self.spread {
+            let sizes = inputs
+                .iter()
+                .enumerate()
+                .filter(|(i, _)| ray.is_none() || *i != 1)
+                .map(|(_, v)| largest(v))
+                .filter(|x| *x != 0.0 && x.is_finite());
+            let (lo, hi) = sizes.fold((f32::INFINITY, 0f32), |(lo, hi), x| (lo.min(x), hi.max(x)));
+            if hi > k * lo {
+                return Some("spread");
+            }
+        }
         None
     }
 
@@ -152,6 +216,21 @@ impl Declared {
             None => Ok(case),
         }
     }
+}
+
+/// Whether the case's ray starts exactly on its surface (the exact value
+/// of the surface's function at the origin is 0).
+fn on_surface(case: &Case) -> bool {
+    let at_origin = match case {
+        #[cfg(feature = "plane")]
+        Case::Plane(r, p) => super::plane(r, p).map(|e| e.1.inside.0),
+        #[cfg(feature = "sphere")]
+        Case::Sphere(r, s) => super::sphere(r, s).map(|e| e.1.inside.0),
+        #[cfg(feature = "quadric")]
+        Case::Quadric(r, q) => super::quadric(r, q).map(|e| e.1.inside.0),
+        Case::Camera(..) => None,
+    };
+    at_origin == Some(0.0)
 }
 
 /// `d / |d|` in `f32`, or `None` where that is zero or not finite.
