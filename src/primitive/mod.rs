@@ -169,10 +169,12 @@ pub fn packet<T: Copy>(case: T, decoys: [T; 3], lane: usize) -> [T; 4] {
 /// // A kernel that answers from lane 0 only is caught.
 /// let leaky = in_every_lane(r, s, |c| [x4_lanes(c)[0]; 4]);
 /// assert_ne!(leaky[1], leaky[0]);
-/// // So is a packet that gives up on every lane when one lane misses.
+/// // So is a packet that gives up on every lane when one (non-NaN) lane
+/// // misses.
 /// let early_out = in_every_lane(r, s, |c| {
 ///     let h = x4_lanes(c);
-///     if h.contains(&SphereHit::None) { [SphereHit::None; 4] } else { h }
+///     let miss = (0..4).any(|i| h[i] == SphereHit::None && !c[i].0.origin.is_nan());
+///     if miss { [SphereHit::None; 4] } else { h }
 /// });
 /// assert!(early_out.contains(&SphereHit::None) && early_out.contains(&SphereHit::Two(2.0, 4.0)));
 /// # }
