@@ -17,14 +17,18 @@ fn the_sphere_cast_fails_exactly_these_families() {
         [
             ("sphere/origin-inside", 256),
             ("sphere/origin-on-surface", 1),
+            ("sphere/tangent-exact-large", 1),
             ("sphere/huge-close", 1),
             ("sphere/subnormal", 1),
             ("sphere/huge", 1),
             ("sphere/far-tiny", 7),
-            ("sphere/huge-near", 16),
+            ("sphere/huge-near", 32),
             ("sphere/near-surface-inside", 256),
-            ("sphere/exact-tangent", 1),
             ("sphere/random/inside", 256),
+            ("sphere/random/on-surface", 112),
+            ("sphere/random/tangent", 12),
+            ("sphere/random/far", 17),
+            ("sphere/random/far-graze", 9),
         ]
     );
 }
@@ -36,6 +40,8 @@ fn the_plane_cast_fails_exactly_these_families() {
         [
             ("plane/subnormal-normal", 128),
             ("plane/near-parallel", 3),
+            ("plane/random/small-root", 232),
+            ("plane/random/grazing", 30),
             (SMALL_T, 256),
         ]
     );
