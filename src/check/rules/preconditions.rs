@@ -81,8 +81,16 @@ impl Declared {
         }
     }
 
-    /// The same with the precondition named `spec` (see the [module
-    /// docs](self)), or an error listing the valid forms.
+    /// The same with the precondition named `spec`, or an error listing
+    /// the valid forms ([`Declared::PRECONDITIONS`]):
+    ///
+    /// | name | the case is skipped when |
+    /// |---|---|
+    /// | `unit-dirs` | the direction's `f32` normalisation is zero or not finite (the other cases are fed normalised) |
+    /// | `no-subnormals` | an input is subnormal |
+    /// | `magnitudes:LO:HI` | the largest magnitude of a finite nonzero input (a vector's largest component, the radius, the quadric's largest coefficient) is below `LO` or above `HI` |
+    /// | `off-surface` | the ray starts exactly on the surface (the surface's function is exactly 0 at the origin): a renderer offsets such origins or asks for `t > t_min`, since no f32 kernel resolves the sign of roots that close to 0 |
+    /// | `spread:K` | the largest of those magnitudes, the direction's left out, is more than `K` times the least nonzero one: a scene whose extent and smallest feature are that far apart (a sphere `10⁹` radii away) is beyond an `f32` kernel's resolution |
     ///
     /// ```
     /// use rayoracle::check::rules::{Declared, Semantics};
