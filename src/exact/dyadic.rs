@@ -788,6 +788,15 @@ fn sum_parts<I: Iterator<Item = (i128, i32)>>(parts: impl Fn() -> I, len: usize)
             return Some(Dyadic::small(if negative { -m } else { m }, exp));
         }
     }
+    // Below 2^255: a 256-bit mantissa, without a big integer.
+    if words.len() <= 4 && words.get(3).is_none_or(|w| w >> 63 == 0) {
+        let mut bytes = [0u8; 32];
+        for (chunk, w) in bytes.chunks_exact_mut(8).zip(words) {
+            chunk.copy_from_slice(&w.to_le_bytes());
+        }
+        let m = Wide::from_le_bytes(bytes);
+        return Some(Dyadic::wide(if negative { -m } else { m }, exp));
+    }
     let sign = if negative {
         dashu_int::Sign::Negative
     } else {
