@@ -173,6 +173,16 @@ impl Expansion {
     /// `self += x·y`, exactly (under the bounds of the module docs).
     pub fn add_product(&mut self, x: f64, y: f64) -> Option<()> {
         let (p, e) = two_prod(x, y);
+        if p == 0.0 {
+            // An exact product of 0: `x` or `y` is 0, and so is `e`.
+            return Some(());
+        }
+        if self.n == 0 {
+            // `|e| ≤ ulp(p)/2`, below the lowest set bit of `p`: `[e, p]`
+            // is already nonoverlapping.
+            self.push(e)?;
+            return self.push(p);
+        }
         self.grow_mut(e)?;
         self.grow_mut(p)
     }
