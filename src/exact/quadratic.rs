@@ -19,7 +19,9 @@
 //! a magnitude below `2⁹⁶²`: each partial product is exact
 //! ([`super::expansion::two_prod`]), and no sum overflows. An expansion
 //! that outgrows its capacity sends that comparison (or the whole solve)
-//! to the dyadics, and so does a floating-point environment that flushes
+//! to the dyadics, and so do coefficients of more than [`SHORT`]
+//! components even after Compress (dense mantissas, which the products
+//! would pay for quadratically), and a floating-point environment that flushes
 //! subnormals ([`super::expansion::subnormals_work`]).
 
 use super::expansion::Expansion;
@@ -182,6 +184,13 @@ impl Quadratic {
             .unwrap_or_else(|| [&self.alpha, &self.beta, &self.gamma].map(Dyadic::expansion));
         #[cfg(test)]
         let fast = fast.map(|e| e.filter(|_| !super::dyadic::tests::BIG_ONLY.with(|b| b.get())));
+        // Long expansions (dense mantissas) cost quadratically in the
+        // products below; dyadics hold those better.
+        let short = |x: Expansion| match x.components().len() {
+            ..=SHORT => Some(x),
+            _ => Some(x.compress()).filter(|x| x.components().len() <= SHORT),
+        };
+        let fast = fast.map(|e| e.and_then(short));
         if let [Some(a), Some(b), Some(c)] = fast
             && super::expansion::subnormals_work()
             && let Some(r) = self.solve_expansions([a, b, c])
@@ -311,6 +320,10 @@ fn root_against_expansions(
         }
     })
 }
+
+/// The most components a coefficient may have for [`Quadratic::solve`] to
+/// work on expansions.
+const SHORT: usize = 4;
 
 /// Starting guesses in f64 with the cancellation-free formula.
 fn guess_roots(a: f64, b: f64, c: f64, disc: f64) -> (f64, f64) {
