@@ -19,7 +19,7 @@
 //! a magnitude below `2⁹⁶²`: each partial product is exact
 //! ([`super::expansion::two_prod`]), and no sum overflows. An expansion
 //! that outgrows its capacity sends that comparison (or the whole solve)
-//! to the dyadics, and so do coefficients of more than [`SHORT`]
+//! to the dyadics, and so do coefficients of more than four
 //! components even after Compress (dense mantissas, which the products
 //! would pay for quadratically), and a floating-point environment that flushes
 //! subnormals ([`super::expansion::subnormals_work`]).
