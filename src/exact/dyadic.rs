@@ -2,6 +2,7 @@
 //! integer on the stack while it fits and a `dashu_int::IBig` beyond that.
 
 use super::NonFinite;
+use super::expansion::{self, Expansion};
 use super::wide::{self, Wide};
 use core::cmp::Ordering;
 use core::ops::{Add, Mul, Neg, Sub};
@@ -220,6 +221,77 @@ impl Dyadic {
         }
     }
 
+    /// The exact value of an expansion (the sum of its components).
+    ///
+    /// ```
+    /// use rayoracle::exact::{Dyadic, expansion::Expansion};
+    /// let e = Expansion::from_f64(1e-30).grow(1e30).unwrap();
+    /// assert_eq!(Dyadic::from_expansion(&e), &Dyadic::from_f64(1e30) + &Dyadic::from_f64(1e-30));
+    /// ```
+    pub fn from_expansion(e: &Expansion) -> Dyadic {
+        let parts = || e.components().iter().map(|&x| f64_parts(x));
+        match e.components() {
+            [] => Dyadic::ZERO,
+            &[x] => {
+                let (m, e) = f64_parts(x);
+                Dyadic::small(m, e)
+            }
+            c => sum_parts(parts, c.len()).unwrap_or_else(|| {
+                parts().fold(Dyadic::ZERO, |acc, (m, e)| &acc + &Dyadic::small(m, e))
+            }),
+        }
+    }
+
+    /// The value as an [`Expansion`], if its lowest set bit is at
+    /// `2^expansion::LOW` or above and its magnitude below
+    /// `2^expansion::HIGH`, and it has at most `expansion::CAP` nonzero
+    /// 32-bit chunks (never inside `tests::big_only`). Each chunk of the
+    /// mantissa's magnitude is one component: exact, as it has 32 bits and
+    /// its scale is in the normal range, and nonoverlapping with the
+    /// others, as the chunks are disjoint bit ranges, lowest first.
+    pub(crate) fn expansion(&self) -> Option<Expansion> {
+        #[cfg(test)]
+        if tests::BIG_ONLY.with(core::cell::Cell::get) {
+            return None;
+        }
+        let mut words = [0u64; 32];
+        let (negative, n) = match &self.mant {
+            Mant::Small(m) => {
+                let a = m.unsigned_abs();
+                words[..2].copy_from_slice(&[a as u64, (a >> 64) as u64]);
+                (*m < 0, 2)
+            }
+            Mant::Wide(m) => {
+                let bytes = m.unsigned_abs().to_le_bytes();
+                for (w, b) in words.iter_mut().zip(bytes.chunks_exact(8)) {
+                    *w = u64::from_le_bytes(b.try_into().expect("8 bytes"));
+                }
+                (m.is_negative(), 4)
+            }
+            Mant::Big(m) => {
+                let (sign, w) = m.as_sign_words();
+                words.get_mut(..w.len())?.copy_from_slice(w);
+                (sign == dashu_int::Sign::Negative, w.len())
+            }
+        };
+        let mut out = Expansion::ZERO;
+        for (i, &w) in words[..n].iter().enumerate() {
+            for (j, chunk) in [w & 0xffff_ffff, w >> 32].into_iter().enumerate() {
+                if chunk == 0 {
+                    continue;
+                }
+                let at = self.exp as i64 + 64 * i as i64 + 32 * j as i64;
+                let low = at + chunk.trailing_zeros() as i64;
+                if low < expansion::LOW as i64 || at + 32 > expansion::HIGH as i64 {
+                    return None;
+                }
+                let x = chunk as f64 * pow2(at as i32);
+                out.push(if negative { -x } else { x })?;
+            }
+        }
+        Some(out)
+    }
+
     /// −1, 0 or 1.
     ///
     /// ```
@@ -307,6 +379,19 @@ impl Dyadic {
         let top = (m.as_ref() >> drop as usize).to_f64().value();
         ldexp_f64(top, self.exp as i64 + drop)
     }
+}
+
+/// A finite `f64` as `(m, e)` with value `m · 2^e`.
+fn f64_parts(x: f64) -> (i128, i32) {
+    let bits = x.to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    let frac = (bits & 0x000f_ffff_ffff_ffff) as i128;
+    let (m, e) = if biased == 0 {
+        (frac, -1074)
+    } else {
+        (frac + 0x0010_0000_0000_0000, biased - 1075)
+    };
+    (if bits >> 63 == 1 { -m } else { m }, e)
 }
 
 /// `x · 2^e` in f64 without intermediate overflow or underflow.
@@ -637,40 +722,48 @@ pub fn sum(terms: &[Dyadic]) -> Dyadic {
 /// [`sum`] on the stack accumulator, if the terms allow it: an `i128`
 /// where the aligned total has room in one, else limbs.
 fn sum_fixed(terms: &[Dyadic]) -> Option<Dyadic> {
+    if !terms.iter().all(|t| t.fixed().is_some()) {
+        return None;
+    }
+    let parts = || terms.iter().map(|t| (t.fixed().unwrap_or(0), t.exp));
+    sum_parts(parts, terms.len())
+}
+
+/// The exact sum of the `len` parts `(m, e)`, each `m · 2^e`, that `parts`
+/// gives (it is called twice), on the stack accumulator, if they span at
+/// most 2,040 bits and number at most 64.
+fn sum_parts<I: Iterator<Item = (i128, i32)>>(parts: impl Fn() -> I, len: usize) -> Option<Dyadic> {
     let mut lo = i64::MAX;
     let mut hi = i64::MIN;
-    for t in terms {
-        let m = t.fixed()?;
+    for (m, e) in parts() {
         if m != 0 {
-            lo = lo.min(t.exp as i64);
-            hi = hi.max(t.exp as i64 + 128 - m.unsigned_abs().leading_zeros() as i64);
+            lo = lo.min(e as i64);
+            hi = hi.max(e as i64 + 128 - m.unsigned_abs().leading_zeros() as i64);
         }
     }
     if lo == i64::MAX {
         return Some(Dyadic::ZERO);
     }
     // Room for the terms, the carries of up to 2⁶ of them, and the sign.
-    if hi - lo + 8 > (ACC_LIMBS * 64) as i64 || terms.len() > 64 {
+    if hi - lo + 8 > (ACC_LIMBS * 64) as i64 || len > 64 {
         return None;
     }
     let width = (hi - lo + 8) as usize;
     if width <= 127 {
         // The aligned terms and their total fit in an i128 as they are.
         let mut total = 0i128;
-        for t in terms {
-            let m = t.fixed()?;
+        for (m, e) in parts() {
             if m != 0 {
-                total += m << (t.exp as i64 - lo);
+                total += m << (e as i64 - lo);
             }
         }
         return Some(Dyadic::small(total, i32::try_from(lo).ok()?));
     }
     let mut full = [0u64; ACC_LIMBS];
     let acc = &mut full[..width.div_ceil(64)];
-    for t in terms {
-        let m = t.fixed()?;
+    for (m, e) in parts() {
         if m != 0 {
-            add_shifted(acc, m, (t.exp as i64 - lo) as usize);
+            add_shifted(acc, m, (e as i64 - lo) as usize);
         }
     }
     let negative = acc[acc.len() - 1] >> 63 == 1;
@@ -694,6 +787,15 @@ fn sum_fixed(terms: &[Dyadic]) -> Option<Dyadic> {
         if let Ok(m) = i128::try_from(mag) {
             return Some(Dyadic::small(if negative { -m } else { m }, exp));
         }
+    }
+    // Below 2^255: a 256-bit mantissa, without a big integer.
+    if words.len() <= 4 && words.get(3).is_none_or(|w| w >> 63 == 0) {
+        let mut bytes = [0u8; 32];
+        for (chunk, w) in bytes.chunks_exact_mut(8).zip(words) {
+            chunk.copy_from_slice(&w.to_le_bytes());
+        }
+        let m = Wide::from_le_bytes(bytes);
+        return Some(Dyadic::wide(if negative { -m } else { m }, exp));
     }
     let sign = if negative {
         dashu_int::Sign::Negative
@@ -776,7 +878,7 @@ pub(crate) mod tests {
     use rand::rngs::SmallRng;
     use rand::{Rng, SeedableRng};
 
-    thread_local!(pub(super) static BIG_ONLY: Cell<bool> = const { Cell::new(false) });
+    thread_local!(pub(crate) static BIG_ONLY: Cell<bool> = const { Cell::new(false) });
 
     /// `f()` with every operation done on big integers, as if no mantissa
     /// fitted in an `i128`: the reference for the fixed-width arithmetic.
@@ -790,6 +892,17 @@ pub(crate) mod tests {
         BIG_ONLY.with(|b| b.set(true));
         let _reset = Reset;
         f()
+    }
+
+    /// A finite float as the fuzz targets make them: any bits, a small
+    /// integer, a special value, or a wide-range value.
+    pub(crate) fn fuzz_like_f32(r: &mut SmallRng) -> f32 {
+        match r.random_range(0..4) {
+            0 => f32::from_bits(r.random::<u32>() & 0xff7f_ffff),
+            1 => r.random_range(-8..=8) as f32,
+            2 => [0.0, 1e30, -1e-30, f32::MAX, f32::from_bits(1), 0.5][r.random_range(0..6)],
+            _ => r.random_range(-1.0..1.0f32) * 2f32.powi(r.random_range(-140..120)),
+        }
     }
 
     /// The value as (odd mantissa, exponent), or (0, 0): equal exactly for

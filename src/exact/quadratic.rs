@@ -1,6 +1,31 @@
 //! Exact classification and correctly rounded roots of `α t² + β t + γ = 0`
 //! with dyadic coefficients, shared by the sphere and quadric oracles.
+//!
+//! The signs that decide are those of `α`, `β`, `γ`, the discriminant
+//! `β² − 4αγ`, and of `p(m) = (αm + β)m + γ`, `2αm + β` or `βm + γ` at the
+//! points `m` the rounding asks about ([`round_to_f32_at`]). They are
+//! evaluated on [`Expansion`]s when the coefficients admit it, and on
+//! dyadics otherwise, with the same results.
+//!
+//! # Why the expansions are exact here
+//!
+//! A coefficient is admitted when its lowest set bit is at `2⁻⁵²⁰` or
+//! above and its magnitude below `2⁴⁸⁰` ([`super::expansion::LOW`],
+//! [`super::expansion::HIGH`]); the sphere's and the quadric's always are
+//! (products of two or three `f32`s: lowest bits from `2⁻⁴⁴⁷`, magnitudes
+//! below `2³⁹⁰`). Every point `m` has its lowest bit at `2⁻¹⁵⁰` or above
+//! and `|m| ≤ 2¹²⁸`. So every product formed, `β²`, `αγ`, `αm`, `βm` and
+//! `(αm + β)m`, has factors whose lowest bits add up to `−1040` or more and
+//! a magnitude below `2⁹⁶²`: each partial product is exact
+//! ([`super::expansion::two_prod`]), and no sum overflows. An expansion
+//! that outgrows its capacity sends that comparison (or the whole solve)
+//! to the dyadics, and so do coefficients of more than four
+//! components even after Compress (dense mantissas, which the products
+//! would pay for quadratically), and a floating-point environment that flushes
+//! subnormals ([`super::expansion::subnormals_work`]).
 
+use super::expansion::Expansion;
+use super::round::round_to_f32_at;
 use super::{Dyadic, round_to_f32};
 use core::cmp::Ordering;
 
@@ -12,7 +37,7 @@ use core::cmp::Ordering;
 /// let q = Quadratic::new(Dyadic::new(1, 0), Dyadic::ZERO, Dyadic::new(-2, 0));
 /// assert_eq!(q.solve(), ExactQuadratic::Two(-2f32.sqrt(), 2f32.sqrt()));
 /// ```
-#[derive(Clone, Debug)]
+#[derive(Clone)]
 pub struct Quadratic {
     /// α, normalised to be ≥ 0 (the equation is multiplied by −1 if needed).
     pub alpha: Dyadic,
@@ -20,6 +45,18 @@ pub struct Quadratic {
     pub beta: Dyadic,
     /// γ, with the same normalisation.
     pub gamma: Dyadic,
+    /// α, β, γ as expansions, when the constructor had them.
+    expansions: Option<[Expansion; 3]>,
+}
+
+impl core::fmt::Debug for Quadratic {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Quadratic")
+            .field("alpha", &self.alpha)
+            .field("beta", &self.beta)
+            .field("gamma", &self.gamma)
+            .finish()
+    }
 }
 
 /// The exact answer: classification and correctly rounded roots.
@@ -72,9 +109,33 @@ impl Quadratic {
                 alpha: -alpha,
                 beta: -beta,
                 gamma: -gamma,
+                expansions: None,
             }
         } else {
-            Quadratic { alpha, beta, gamma }
+            Quadratic {
+                alpha,
+                beta,
+                gamma,
+                expansions: None,
+            }
+        }
+    }
+
+    /// The quadratic with coefficients given as expansions (normalised as
+    /// [`Quadratic::new`] does), which [`Quadratic::solve`] then uses as
+    /// they are.
+    pub(crate) fn from_expansions(alpha: Expansion, beta: Expansion, gamma: Expansion) -> Self {
+        let flip = alpha.sign() < 0 || (alpha.sign() == 0 && beta.sign() < 0);
+        let e = if flip {
+            [alpha.neg(), beta.neg(), gamma.neg()]
+        } else {
+            [alpha, beta, gamma]
+        };
+        Quadratic {
+            alpha: Dyadic::from_expansion(&e[0]),
+            beta: Dyadic::from_expansion(&e[1]),
+            gamma: Dyadic::from_expansion(&e[2]),
+            expansions: Some(e),
         }
     }
 
@@ -117,6 +178,92 @@ impl Quadratic {
     /// assert_eq!(q.solve(), ExactQuadratic::One(0.5));
     /// ```
     pub fn solve(&self) -> ExactQuadratic {
+        let fast = self
+            .expansions
+            .map(|e| e.map(Some))
+            .unwrap_or_else(|| [&self.alpha, &self.beta, &self.gamma].map(Dyadic::expansion));
+        #[cfg(test)]
+        let fast = fast.map(|e| e.filter(|_| !super::dyadic::tests::BIG_ONLY.with(|b| b.get())));
+        // Long expansions (dense mantissas) cost quadratically in the
+        // products below; dyadics hold those better.
+        let short = |x: Expansion| match x.components().len() {
+            ..=SHORT => Some(x),
+            _ => Some(x.compress()).filter(|x| x.components().len() <= SHORT),
+        };
+        let fast = fast.map(|e| e.and_then(short));
+        if let [Some(a), Some(b), Some(c)] = fast
+            && super::expansion::subnormals_work()
+            && let Some(r) = self.solve_expansions([a, b, c])
+        {
+            return r;
+        }
+        self.solve_dyadic()
+    }
+
+    /// [`Quadratic::solve`] on expansions: `None` only if the discriminant
+    /// outgrows an expansion; a comparison that does goes to the dyadics.
+    fn solve_expansions(&self, [a, b, c]: [Expansion; 3]) -> Option<ExactQuadratic> {
+        let dy = Dyadic::from_f64;
+        let (fa, fb, fc) = (a.approx(), b.approx(), c.approx());
+        if a.sign() == 0 {
+            if b.sign() == 0 {
+                return Some(if c.sign() == 0 {
+                    ExactQuadratic::All
+                } else {
+                    ExactQuadratic::None
+                });
+            }
+            // β > 0 after normalisation: t ≷ m ⇔ −γ ≷ β m.
+            let nc = c.neg();
+            let t = round_to_f32_at(
+                |m| {
+                    b.scale(m)
+                        .and_then(|bm| nc.compare(&bm))
+                        .unwrap_or_else(|| (-&self.gamma).cmp(&(&self.beta * &dy(m))))
+                },
+                -fc / fb,
+            );
+            return Some(ExactQuadratic::One(t));
+        }
+        let disc = b.mul(&b)?.sub(&a.mul(&c)?.mul_pow2(2))?;
+        Some(match disc.sign() {
+            -1 => ExactQuadratic::None,
+            0 => {
+                // The vertex −β/(2α), with α > 0: t ≷ m ⇔ −β ≷ 2α m.
+                let nb = b.neg();
+                let t = round_to_f32_at(
+                    |m| {
+                        a.scale(2.0 * m)
+                            .and_then(|am| nb.compare(&am))
+                            .unwrap_or_else(|| {
+                                (-&self.beta).cmp(&(&self.alpha * &dy(m)).mul_pow2(1))
+                            })
+                    },
+                    -fb / (2.0 * fa),
+                );
+                ExactQuadratic::One(t)
+            }
+            _ => {
+                let (g0, g1) = guess_roots(fa, fb, fc, disc.approx());
+                let neg = [b.neg(), c.neg()];
+                let root = |upper: bool, guess: f64| {
+                    round_to_f32_at(
+                        |m| {
+                            root_against_expansions(&a, &b, &neg, m, upper).unwrap_or_else(|| {
+                                let neg = [-&self.beta, -&self.gamma];
+                                self.root_against(&neg, &dy(m), upper)
+                            })
+                        },
+                        guess,
+                    )
+                };
+                ExactQuadratic::Two(root(false, g0), root(true, g1))
+            }
+        })
+    }
+
+    /// [`Quadratic::solve`] on dyadics alone.
+    fn solve_dyadic(&self) -> ExactQuadratic {
         let (a, b, c) = (self.alpha.to_f64(), self.beta.to_f64(), self.gamma.to_f64());
         if self.alpha.is_zero() {
             if self.beta.is_zero() {
@@ -153,6 +300,30 @@ impl Quadratic {
         }
     }
 }
+
+/// [`Quadratic::root_against`] on expansions, `neg` being `[−β, −γ]`.
+fn root_against_expansions(
+    a: &Expansion,
+    b: &Expansion,
+    neg: &[Expansion; 2],
+    m: f64,
+    upper: bool,
+) -> Option<Ordering> {
+    let am = a.scale(m)?;
+    let side = am.mul_pow2(1).compare(&neg[0])?;
+    Some(match (side, upper) {
+        (Ordering::Greater, false) => Ordering::Less,
+        (Ordering::Less, true) => Ordering::Greater,
+        _ => {
+            let p = am.add(b)?.scale(m)?.compare(&neg[1])?;
+            if upper { p.reverse() } else { p }
+        }
+    })
+}
+
+/// The most components a coefficient may have for [`Quadratic::solve`] to
+/// work on expansions.
+const SHORT: usize = 4;
 
 /// Starting guesses in f64 with the cancellation-free formula.
 fn guess_roots(a: f64, b: f64, c: f64, disc: f64) -> (f64, f64) {

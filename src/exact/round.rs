@@ -1,5 +1,12 @@
 //! Correct rounding to `f32` of a real number known only through exact
 //! comparisons.
+//!
+//! Every point the rounding compares with is a finite `f32`, a midpoint
+//! between two neighbouring ones (25 significant bits, from `2⁻¹⁵⁰` up),
+//! zero, or the overflow threshold `2^128 − 2^103`: all exactly `f64`s. So
+//! the comparisons are asked at `f64` points ([`round_to_f32_at`]), which
+//! an oracle can take as they are or convert to a [`Dyadic`] exactly
+//! ([`round_to_f32`]).
 
 use super::Dyadic;
 use core::cmp::Ordering;
@@ -18,26 +25,39 @@ fn float_of(k: i64) -> f32 {
     }
 }
 
-fn value_of(k: i64) -> Dyadic {
-    Dyadic::from_f32(float_of(k))
+/// The value of the float with key `k`, formed from integers (a
+/// conversion from `f32` would read a subnormal as 0 under
+/// denormals-are-zero).
+fn value_of(k: i64) -> f64 {
+    if k < 0 {
+        return -value_of(-k);
+    }
+    let biased = (k >> 23) as i32;
+    let hidden = if biased > 0 { 0x80_0000 } else { 0 };
+    ((k & 0x7f_ffff) + hidden) as f64 * pow2(biased.max(1) - 150)
 }
 
 /// The midpoint between the floats with keys `k` and `k + 1`, exactly:
 /// `(2M + 1)·2^(e−1)` for the float `M·2^e` of a key `k ≥ 0` (its
 /// successor is `(M + 1)·2^e`, across a binade too), mirrored below zero.
-fn midpoint(k: i64) -> Dyadic {
+/// It has 25 significant bits and its exponent is at least −150, so the
+/// `f64` holds it exactly.
+fn midpoint(k: i64) -> f64 {
     if k < 0 {
         return -midpoint(-k - 1);
     }
     let biased = (k >> 23) as i32;
     let hidden = if biased > 0 { 0x80_0000 } else { 0 };
-    Dyadic::new(2 * ((k & 0x7f_ffff) + hidden) + 1, biased.max(1) - 151)
+    (2 * ((k & 0x7f_ffff) + hidden) + 1) as f64 * pow2(biased.max(1) - 151)
+}
+
+/// `2^e`, for `e` in the normal range, from its bits.
+fn pow2(e: i32) -> f64 {
+    f64::from_bits(((e + 1023) as u64) << 52)
 }
 
 /// `f32::MAX + ulp(f32::MAX)/2 = 2^128 − 2^103`: from here on, round to ∞.
-fn overflow_threshold() -> Dyadic {
-    &Dyadic::new(1, 128) - &Dyadic::new(1, 103)
-}
+const OVERFLOW_THRESHOLD: f64 = 340_282_356_779_733_661_637_539_395_458_142_568_448.0;
 
 /// The `f32` nearest to a real number `x`, ties to even, overflowing to ±∞
 /// as IEEE 754 does; `x` is given by `cmp(m)`, the exact ordering of `x`
@@ -54,10 +74,26 @@ fn overflow_threshold() -> Dyadic {
 /// assert_eq!(third, 1.0f32 / 3.0);
 /// ```
 pub fn round_to_f32(cmp: impl Fn(&Dyadic) -> Ordering, guess: f64) -> f32 {
+    round_to_f32_at(|m| cmp(&Dyadic::from_f64(m)), guess)
+}
+
+/// [`round_to_f32`] with the points given as the `f64`s they are (module
+/// docs): `cmp(m)` is the exact ordering of `x` against `m`.
+///
+/// ```
+/// use core::cmp::Ordering::Greater;
+/// use rayoracle::exact::round::round_to_f32_at;
+/// // √2 correctly rounded: above every m ≤ 0, else as 2 is to m² (exact
+/// // in f64 for these m).
+/// let sqrt2 = |m: f64| if m <= 0.0 { Greater } else { 2.0f64.total_cmp(&(m * m)) };
+/// let r = round_to_f32_at(sqrt2, 1.4);
+/// assert_eq!(r, 2f32.sqrt());
+/// ```
+pub fn round_to_f32_at(cmp: impl Fn(f64) -> Ordering, guess: f64) -> f32 {
     #[cfg(test)]
     let calls = comparisons::Call::default();
     #[cfg(test)]
-    let cmp = |m: &Dyadic| {
+    let cmp = |m: f64| {
         calls.tick();
         cmp(m)
     };
@@ -68,12 +104,12 @@ pub fn round_to_f32(cmp: impl Fn(&Dyadic) -> Ordering, guess: f64) -> f32 {
 /// midpoints on either side of it (two comparisons, three for a zero);
 /// `None` when it does not, or when the guess is not inside the finite
 /// floats' keys.
-fn round_at_guess(cmp: &impl Fn(&Dyadic) -> Ordering, guess: f64) -> Option<f32> {
+fn round_at_guess(cmp: &impl Fn(f64) -> Ordering, guess: f64) -> Option<f32> {
     // NaN and ±∞ (as f32) have keys beyond MAX_KEY.
     let g = key_of(guess as f32);
     if g.abs() >= MAX_KEY
-        || cmp(&midpoint(g)) != Ordering::Less
-        || cmp(&midpoint(g - 1)) != Ordering::Greater
+        || cmp(midpoint(g)) != Ordering::Less
+        || cmp(midpoint(g - 1)) != Ordering::Greater
     {
         return None;
     }
@@ -81,8 +117,8 @@ fn round_at_guess(cmp: &impl Fn(&Dyadic) -> Ordering, guess: f64) -> Option<f32>
 }
 
 /// The float with key `k`, with the sign of `x` if it is zero.
-fn signed(k: i64, cmp: &impl Fn(&Dyadic) -> Ordering) -> f32 {
-    if k == 0 && cmp(&Dyadic::ZERO) == Ordering::Less {
+fn signed(k: i64, cmp: &impl Fn(f64) -> Ordering) -> f32 {
+    if k == 0 && cmp(0.0) == Ordering::Less {
         -0.0
     } else {
         float_of(k)
@@ -91,21 +127,21 @@ fn signed(k: i64, cmp: &impl Fn(&Dyadic) -> Ordering) -> f32 {
 
 /// [`round_to_f32`] by a gallop from the guess to the floor of `x` and a
 /// bisection, then the midpoint above the floor.
-fn search(cmp: &impl Fn(&Dyadic) -> Ordering, guess: f64) -> f32 {
-    let limit = overflow_threshold();
-    if cmp(&limit) != Ordering::Less {
+fn search(cmp: &impl Fn(f64) -> Ordering, guess: f64) -> f32 {
+    let limit = OVERFLOW_THRESHOLD;
+    if cmp(limit) != Ordering::Less {
         return f32::INFINITY;
     }
-    if cmp(&-&limit) != Ordering::Greater {
+    if cmp(-limit) != Ordering::Greater {
         return f32::NEG_INFINITY;
     }
     // Between −(2^128 − 2^103) and −MAX there is no float below x to be its
     // floor, and the nearest is −MAX.
-    if cmp(&value_of(-MAX_KEY)) == Ordering::Less {
+    if cmp(value_of(-MAX_KEY)) == Ordering::Less {
         return -f32::MAX;
     }
     // floor: the largest key whose value is ≤ x. -MAX_KEY qualifies now.
-    let le = |k: i64| cmp(&value_of(k)) != Ordering::Less;
+    let le = |k: i64| cmp(value_of(k)) != Ordering::Less;
     let g = if guess.is_finite() {
         key_of(guess as f32).clamp(-MAX_KEY, MAX_KEY)
     } else {
@@ -141,10 +177,10 @@ fn search(cmp: &impl Fn(&Dyadic) -> Ordering, guess: f64) -> f32 {
         let mid = lo + (hi - lo) / 2;
         if le(mid) { lo = mid } else { hi = mid }
     }
-    let k = if lo == MAX_KEY || cmp(&value_of(lo)) == Ordering::Equal {
+    let k = if lo == MAX_KEY || cmp(value_of(lo)) == Ordering::Equal {
         lo
     } else {
-        match cmp(&midpoint(lo)) {
+        match cmp(midpoint(lo)) {
             Ordering::Less => lo,
             Ordering::Greater => lo + 1,
             Ordering::Equal => {
@@ -225,11 +261,14 @@ mod tests {
             .flat_map(|k| [k, -k - 1])
             .chain((0..2_000).map(|_| r.random_range(-MAX_KEY..MAX_KEY)));
         for k in keys {
-            let mean = (&value_of(k) + &value_of(k + 1)).mul_pow2(-1);
-            assert_eq!(midpoint(k), mean, "{k:#x}");
+            let v = |k| Dyadic::from_f64(value_of(k));
+            let mean = (&v(k) + &v(k + 1)).mul_pow2(-1);
+            assert_eq!(Dyadic::from_f64(midpoint(k)), mean, "{k:#x}");
         }
-        assert_eq!(midpoint(-1), Dyadic::new(-1, -150));
-        assert_eq!(midpoint(0x7f_ffff), Dyadic::new(0xff_ffff, -150));
+        assert_eq!(midpoint(-1), -(2f64.powi(-150)));
+        assert_eq!(midpoint(0x7f_ffff), 0xff_ffff as f64 * 2f64.powi(-150));
+        let threshold = &Dyadic::new(1, 128) - &Dyadic::new(1, 103);
+        assert_eq!(Dyadic::from_f64(OVERFLOW_THRESHOLD), threshold);
     }
 
     /// The two comparisons at the guess give what the full search gives,
@@ -250,20 +289,21 @@ mod tests {
                 _ => -MAX_KEY + r.random_range(1..4),
             };
             let tiny = Dyadic::new(r.random_range(-3..=3), -200);
+            let (value, mid) = (Dyadic::from_f64(value_of(k)), Dyadic::from_f64(midpoint(k)));
             let x = match r.random_range(0..4) {
-                0 => value_of(k),
-                1 => midpoint(k),
-                2 => &midpoint(k) + &tiny,
-                _ => &value_of(k) + &tiny,
+                0 => value,
+                1 => mid,
+                2 => &mid + &tiny,
+                _ => &value + &tiny,
             };
-            let cmp = |m: &Dyadic| x.cmp(m);
+            let cmp = |m: f64| x.cmp(&Dyadic::from_f64(m));
             let want = search(&cmp, 0.0);
             for dk in [0, 1, -1, 2, -3] {
                 let guess = f64::from(float_of((k + dk).clamp(-MAX_KEY, MAX_KEY)));
                 if round_at_guess(&cmp, guess).is_some() {
                     shortcut += 1;
                 }
-                let got = round_to_f32(cmp, guess);
+                let got = round_to_f32_at(cmp, guess);
                 assert_eq!(got.to_bits(), want.to_bits(), "{x:?} from {guess:e}");
             }
         }

@@ -1,9 +1,18 @@
-//! The exact oracle: `a`, `b`, `c` as exact dyadics, the class from the exact
-//! sign of `b² − ac`, and the correctly rounded roots.
+//! The exact oracle: `a`, `b`, `c` exactly, the class from the exact sign
+//! of `b² − ac`, and the correctly rounded roots.
+//!
+//! The coefficients are formed on expansions ([`crate::exact::expansion`]):
+//! `f = o − c` is a two-term sum of `f32`s, and `|d|²`, `2 f·d`,
+//! `|f|² − r²` are sums of products of two such terms. Every factor's
+//! lowest bit is at `2⁻¹⁴⁹` or above and its magnitude below `2¹²⁹`, so
+//! every product is exact (lowest bits from `2⁻²⁹⁸`, magnitudes below
+//! `2²⁵⁸`), and so are the coefficients. Where subnormals are flushed
+//! ([`subnormals_work`]), they are formed on dyadics instead.
 
 use super::{Sphere, SphereHit};
 use crate::Ray;
-use crate::exact::dyadic::{dot, sub3, vec3};
+use crate::exact::dyadic::{dot, sub3};
+use crate::exact::expansion::{Expansion, subnormals_work};
 use crate::exact::{Dyadic, ExactQuadratic, NonFinite, Quadratic};
 
 /// The exact quadratic `a t² + 2b t + c` of a ray and a sphere.
@@ -15,15 +24,50 @@ use crate::exact::{Dyadic, ExactQuadratic, NonFinite, Quadratic};
 /// assert!(q.discriminant().is_zero()); // grazing the top of the sphere
 /// ```
 pub fn quadratic(ray: &Ray, sphere: &Sphere) -> Result<Quadratic, NonFinite> {
-    let o = vec3(ray.origin.to_array())?;
-    let d = vec3(ray.dir.to_array())?;
-    let c = vec3(sphere.center.to_array())?;
-    let r = Dyadic::try_from_f32(sphere.radius)?;
+    let (o, d, c) = (ray.origin, ray.dir, sphere.center);
+    let r = sphere.radius;
+    if !(o.is_finite() && d.is_finite() && c.is_finite() && r.is_finite()) {
+        return Err(NonFinite);
+    }
+    match on_expansions(ray, sphere).filter(|_| subnormals_work()) {
+        Some([a, b2, cc]) => Ok(Quadratic::from_expansions(a, b2, cc)),
+        None => Ok(on_dyadics(ray, sphere)),
+    }
+}
+
+/// `a`, `2b`, `c` on expansions, unless one outgrows its capacity.
+fn on_expansions(ray: &Ray, sphere: &Sphere) -> Option<[Expansion; 3]> {
+    let (o, d, c) = (
+        ray.origin.as_dvec3(),
+        ray.dir.as_dvec3(),
+        sphere.center.as_dvec3(),
+    );
+    let (mut a, mut b, mut cc) = (Expansion::ZERO, Expansion::ZERO, Expansion::ZERO);
+    for i in 0..3 {
+        let f = Expansion::from_f64(o[i]).grow(-c[i])?;
+        a.add_product(d[i], d[i])?;
+        for &x in f.components() {
+            b.add_product(x, d[i])?;
+            for &y in f.components() {
+                cc.add_product(x, y)?;
+            }
+        }
+    }
+    let r = f64::from(sphere.radius);
+    cc.add_product(-r, r)?;
+    Some([a, b.mul_pow2(1), cc])
+}
+
+/// `a`, `2b`, `c` on dyadics, for finite inputs.
+fn on_dyadics(ray: &Ray, sphere: &Sphere) -> Quadratic {
+    let v = |v: glam::Vec3| v.to_array().map(Dyadic::from_f32);
+    let (o, d, c) = (v(ray.origin), v(ray.dir), v(sphere.center));
+    let r = Dyadic::from_f32(sphere.radius);
     let f = sub3(&o, &c);
     let a = dot(&d, &d);
     let b2 = dot(&f, &d).mul_pow2(1);
     let cc = &dot(&f, &f) - &(&r * &r);
-    Ok(Quadratic::new(a, b2, cc))
+    Quadratic::new(a, b2, cc)
 }
 
 /// The exact answer, or [`NonFinite`] when an input is NaN or infinite.
@@ -54,5 +98,58 @@ pub fn classify(q: &Quadratic) -> SphereHit {
         ExactQuadratic::None | ExactQuadratic::All => SphereHit::None,
         ExactQuadratic::One(t) => SphereHit::Tangent(t),
         ExactQuadratic::Two(t0, t1) => SphereHit::Two(t0, t1),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::dyadic::tests::{big_only, fuzz_like_f32};
+    use crate::exact::dyadic::vec3;
+    use glam::Vec3;
+    use rand::SeedableRng;
+    use rand::rngs::SmallRng;
+
+    /// The coefficients formed on expansions are the dyadic formulas'
+    /// `|d|²`, `2 f·d`, `|f|² − r²` (normalised), and the answer is the one
+    /// solving on big integers alone gives, at every scale.
+    #[test]
+    fn expansions_match_the_dyadic_formulas() {
+        let mut r = SmallRng::seed_from_u64(0x5fe7e);
+        let mut two = 0;
+        for _ in 0..4_000 {
+            let mut v = || {
+                Vec3::new(
+                    fuzz_like_f32(&mut r),
+                    fuzz_like_f32(&mut r),
+                    fuzz_like_f32(&mut r),
+                )
+            };
+            let (o, d, c) = (v(), v(), v());
+            let rad = fuzz_like_f32(&mut r);
+            let (ray, s) = (Ray::new(o, d), Sphere::new(c, rad));
+            let q = quadratic(&ray, &s).unwrap();
+            let want = big_only(|| {
+                let [o, d, c] = [o, d, c].map(|x| vec3(x.to_array()).unwrap());
+                let f = sub3(&o, &c);
+                let rr = Dyadic::from_f32(rad);
+                Quadratic::new(
+                    dot(&d, &d),
+                    dot(&f, &d).mul_pow2(1),
+                    &dot(&f, &f) - &(&rr * &rr),
+                )
+            });
+            assert!(
+                big_only(|| (&q.alpha, &q.beta, &q.gamma) == (&want.alpha, &want.beta, &want.gamma)),
+                "{ray:?} {s:?}"
+            );
+            let (got, slow) = (classify(&q), big_only(|| classify(&want)));
+            assert!(
+                crate::hit::same_bits(&got, &slow),
+                "{ray:?} {s:?}: {got:?} {slow:?}"
+            );
+            two += usize::from(matches!(got, SphereHit::Two(..)));
+        }
+        assert!(two > 200, "{two}");
     }
 }
