@@ -35,8 +35,8 @@ pub(crate) fn gate(semantics: Semantics) -> Gate {
     Gate::new(Declared::f32(semantics))
 }
 
-/// Asserts that the gate caught a known-wrong kernel, and that at least one
-/// of `expected` is among the families that caught it. Prints the catchers
+/// Asserts that the gate caught a known-wrong kernel, and that one of
+/// `expected` caught it on at least 8 of its cases. Prints the catchers
 /// and the first failure, so that `cargo test -- --nocapture` documents
 /// which family catches what.
 pub(crate) fn assert_caught(kernel: &str, report: &Report, expected: &[&str]) {
@@ -57,6 +57,24 @@ pub(crate) fn assert_caught(kernel: &str, report: &Report, expected: &[&str]) {
     assert!(
         expected.iter().any(|e| caught.contains(e)),
         "{kernel}: none of {expected:?} caught it; the catchers are {caught:?}"
+    );
+    // Caught by a whole family, not by a line or two: one of the expected
+    // families fails on at least 8 of its cases.
+    let most = report
+        .families
+        .iter()
+        .filter(|f| expected.contains(&f.0.as_str()))
+        .map(|f| f.2)
+        .max()
+        .unwrap_or(0);
+    assert!(
+        most >= 8,
+        "{kernel}: the expected families {expected:?} fail on at most {most} cases each; families: {:?}",
+        report
+            .families
+            .iter()
+            .filter(|f| f.2 > 0)
+            .collect::<Vec<_>>()
     );
     // Failures must be reproducible: every one is a parseable eval line.
     for f in &report.failures {
@@ -492,15 +510,15 @@ fn seed_sphere_ignores_inside_is_caught_by_origin_inside() {
     );
 }
 
-/// Caught on the easy in-plane cases (small integers), where the gate
-/// requires the exact degenerate class.
+/// Caught on the in-plane lines in small integers (`plane/random/in-plane`),
+/// where the gate requires the exact degenerate class.
 #[test]
 fn plane_no_in_plane_is_caught_by_in_plane() {
     let report = gate(Semantics::WholeLine).plane(&plane_no_in_plane);
     assert_caught(
         "plane without the in-plane case",
         &report,
-        &["plane/in-plane"],
+        &["plane/in-plane", "plane/random/in-plane"],
     );
 }
 

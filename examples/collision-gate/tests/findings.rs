@@ -54,6 +54,7 @@ fn the_plane_cast_fails_exactly_these_families() {
             ("plane/random/any", 164),
             ("plane/random/small-root", 256),
             ("plane/random/on-plane", 23),
+            ("plane/random/in-plane", 65),
             ("plane/random/grazing", 62),
             ("plane/random/short-normal", 191),
         ]
@@ -66,6 +67,7 @@ fn the_plane_cast_fails_exactly_these_families() {
             ("plane/zero-normal", 1),
             ("plane/subnormal-normal", 256),
             ("plane/random/small-root", 8),
+            ("plane/random/in-plane", 172),
         ]
     );
 }

@@ -42,6 +42,7 @@ fn the_plane_and_cylinder_solvers_fail_exactly_these_families() {
             ("plane/subnormal-normal", 256),
             ("plane/near-parallel", 6),
             ("plane/random/small-root", 8),
+            ("plane/random/in-plane", 256),
             ("plane/random/grazing", 20),
             ("plane/random/short-normal", 220),
         ]

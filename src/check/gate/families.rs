@@ -14,8 +14,8 @@
 //!   the surface (a root exactly 0), every input a small integer (where
 //!   the judge forgives no rounding), so that a nearest `t ≥ 0` answers 0
 //!   where `t > 0` wants the other root or none;
-//! * `quadric/random/line-on-surface`: lines on the surface (every `t`)
-//!   in small integers;
+//! * `quadric/random/line-on-surface`, `plane/random/in-plane`: lines on
+//!   the surface (every `t`) in small integers;
 //! * `sphere/random/tangent`: exact tangents in small integers, which a
 //!   kernel that takes `b² − ac = 0` for a miss gets wrong;
 //! * `plane/random/grazing`: `|d·n|` from `2⁻⁴⁰` to `2⁻²⁰` of `|d||n|`, a
@@ -99,6 +99,7 @@ pub(super) fn random_cases(kind: &str, seed: u64, n: usize) -> Vec<Sourced> {
         "plane" => &[
             ("small-root", plane_small_root),
             ("on-plane", plane_on_plane),
+            ("in-plane", plane_in_plane),
             ("grazing", plane_grazing),
             ("short-normal", plane_short_normal),
         ],
@@ -291,6 +292,16 @@ fn plane_on_plane(rng: &mut SmallRng) -> Option<Case> {
     let o = p + n.cross(int3(rng, 2));
     let d = int3(rng, 3);
     (d.dot(n) != 0.0 && small(&[o])).then_some(Case::Plane(Ray::new(o, d), Plane::new(p, n)))
+}
+
+/// A line exactly in a plane, in small integers: the origin and the
+/// direction both `n × v` away from the plane's point, so that a kernel
+/// without the in-plane case (every `t`) answers "parallel".
+fn plane_in_plane(rng: &mut SmallRng) -> Option<Case> {
+    let (p, n) = (int3(rng, 4), int3(rng, 2));
+    let o = p + n.cross(int3(rng, 2));
+    let d = n.cross(int3(rng, 2));
+    (d != Vec3::ZERO && small(&[o, d])).then_some(Case::Plane(Ray::new(o, d), Plane::new(p, n)))
 }
 
 /// The origin exactly on a quadric, in small integers: `J` makes `γ = 0`.

@@ -97,7 +97,7 @@ fn random_families_are_seeded_per_kind() {
     let count = |kind: &str| random_cases(kind, 5, 3).len();
     assert_eq!(
         (count("sphere"), count("plane"), count("quadric")),
-        (6 + 5 * 3, 3 + 4 * 3, 3 + 4 * 3)
+        (6 + 5 * 3, 3 + 5 * 3, 3 + 4 * 3)
     );
     // A valid random camera (`any`, `narrow`) is kept only if it builds;
     // `parallel-up` and `bad-angle` never build and always have 3.
