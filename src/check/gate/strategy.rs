@@ -49,10 +49,13 @@ pub fn families(kind: &str) -> Vec<String> {
     names
 }
 
+/// A family's cases: the compiled-in ones, or 256 drawn cases of a
+/// generated family that has no strategy of its own.
 fn cases_of(family: &str) -> Vec<Case> {
     let kind = family.split('/').next().unwrap_or("");
+    let drawn = if family.contains("/random/") { 256 } else { 0 };
     Gate::new(super::Declared::f32(super::Semantics::WholeLine))
-        .sources(kind, 0)
+        .sources(kind, drawn)
         .0
         .into_iter()
         .filter(|(f, _)| f == family)
@@ -86,7 +89,8 @@ macro_rules! kind_strategy {
 
 kind_strategy!(
     /// The cases of a sphere family as a strategy (`None` for an unknown
-    /// family). `sphere/random/aimed` and `sphere/random/inside` generate.
+    /// family). `sphere/random/aimed` and `sphere/random/inside` generate;
+    /// the other generated families sample 256 drawn cases.
     sphere, Sphere, Sphere, |family: &str| match family {
         "sphere/random/aimed" => Some(
             (v3(10.0), 0.1f32..5.0, v3(30.0), v3(1.0))
