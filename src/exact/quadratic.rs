@@ -124,6 +124,7 @@ impl Quadratic {
     /// The quadratic with coefficients given as expansions (normalised as
     /// [`Quadratic::new`] does), which [`Quadratic::solve`] then uses as
     /// they are.
+    #[cfg(any(feature = "sphere", feature = "quadric"))]
     pub(crate) fn from_expansions(alpha: Expansion, beta: Expansion, gamma: Expansion) -> Self {
         let flip = alpha.sign() < 0 || (alpha.sign() == 0 && beta.sign() < 0);
         let e = if flip {
