@@ -18,14 +18,17 @@
 //! |r − cᵢ| ≤ α(|t| + |s|) + u|p| + u|r| ≤ (δ + 3u)(1 + 2⁻⁴³)·S
 //! ```
 //!
-//! and [`certify`] decides the rounding from it (the two roundings of `S`
-//! itself are in [`SLACK`]). Where `t` and `s` are both exactly 0, so are
-//! `nx·bxᵢ` and `ny·byᵢ`, and `cᵢ = dᵢ` (its sign of zero kept, as
+//! and [`certify`](crate::num::certify::certify)'s test decides the
+//! rounding from it (the two roundings of `S` itself are in [`SLACK`]).
+//! That test adds `2⁻⁵¹|r|` for the roundings of the enclosure's own ends;
+//! with `|r| ≤ S(1 + u)²` it is folded into the constant per unit of `S`
+//! as `2⁻⁵⁰`. Where `t` and `s` are both exactly 0, so are `nx·bxᵢ` and
+//! `ny·byᵢ`, and `cᵢ = dᵢ` (its sign of zero kept, as
 //! [`super::exact`] defines). Elsewhere an undecided lane goes to
 //! [`super::exact`].
 
 use crate::num::Real;
-use crate::num::certify::{SLACK, U, certify, flush_prone, needs_probe, subnormals_work};
+use crate::num::certify::{SLACK, U, flush_prone, needs_probe, subnormals_work};
 
 /// The relative error of the stored basis per unit, `2⁻⁴⁴`: the f64
 /// basis of [`super::basis`] (which refuses a component its bound does not
@@ -34,8 +37,10 @@ use crate::num::certify::{SLACK, U, certify, flush_prone, needs_probe, subnormal
 /// in f64 (within `2⁻⁵⁰`, [`super::tan::Fx::to_f64`]).
 pub const BASIS_REL: f64 = 1.0 / (1u64 << 44) as f64;
 
-/// `(δ + 3u)(1 + 2⁻⁴³)`, widened by [`SLACK`]: the bound per unit of `S`.
-const K: f64 = (BASIS_REL + 3.0 * U) * (1.0 + 1.0 / (1u64 << 43) as f64) * SLACK;
+/// `(δ + 3u)(1 + 2⁻⁴³)`, widened by [`SLACK`], and `2⁻⁵⁰` for the ends of
+/// the enclosure: the bound per unit of `S`.
+const K: f64 =
+    (BASIS_REL + 3.0 * U) * (1.0 + 1.0 / (1u64 << 43) as f64) * SLACK + 1.0 / (1u64 << 50) as f64;
 
 /// `(value, decided)` for one component: see the module docs. `shrink`
 /// scales the bound (1 for the kernels; tests shrink it to show it is
@@ -56,7 +61,8 @@ pub fn component<L: Real>(d: L, bx: L, by: L, nx: L, ny: L, shrink: f64) -> (L, 
     let ts = t.abs() + s.abs();
     let k = K * shrink;
     let exact = ts.eq(L::splat(0.0));
-    let ok = exact | certify(r, L::splat(0.0), (d.abs() + ts) * L::splat(k));
+    let e = (d.abs() + ts) * L::splat(k);
+    let ok = exact | L::same_f32(r - e, r + e);
     (L::select(exact, d, r), ok)
 }
 

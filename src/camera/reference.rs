@@ -7,6 +7,7 @@
 
 use super::{CameraError, CameraParams, MAX_RESOLUTION, basis, filter};
 use crate::Ray;
+use crate::num::real::{F64x4, Real, Real4};
 use glam::Vec3;
 
 /// A validated camera with its basis: `x` (right, half-width) and `y` (down,
@@ -174,6 +175,7 @@ impl Camera {
     /// assert_eq!(centre.origin, Vec3::ONE);
     /// assert_eq!(centre.dir, -Vec3::Z);
     /// ```
+    #[inline]
     pub fn ray(&self, px: u32, py: u32) -> Ray {
         Ray::new(
             self.params.position,
@@ -183,24 +185,25 @@ impl Camera {
 
     /// The direction for pixel `(px, py)`, with the filter's bound scaled by
     /// `shrink` (1 in [`Camera::ray`]).
+    #[inline]
     pub(crate) fn dir(&self, px: u32, py: u32, shrink: f64) -> [f32; 3] {
         let [rx, ry] = self.params.res;
         let (nx, ny) = (filter::numerator(px, rx), filter::numerator(py, ry));
         let d = self.params.dir.to_array();
-        let mut out = [0.0; 3];
-        let mut undecided = [false; 3];
-        for i in 0..3 {
-            let (r, ok) = filter::component(
-                d[i] as f64,
-                self.unit[0][i],
-                self.unit[1][i],
-                nx,
-                ny,
-                shrink,
-            );
-            out[i] = r as f32;
-            undecided[i] = !ok;
-        }
+        // The three components in the lanes of one F64x4 (two SSE2
+        // registers in a default build), the fourth lane idle.
+        let lanes = |v: [f64; 3]| F64x4::from([v[0], v[1], v[2], 0.0]);
+        let (r, ok) = filter::component(
+            lanes(d.map(f64::from)),
+            lanes(self.unit[0]),
+            lanes(self.unit[1]),
+            F64x4::splat(nx),
+            F64x4::splat(ny),
+            shrink,
+        );
+        let ([o0, o1, o2, _], ok) = (r.narrow().to_array(), ok.lanes());
+        let mut out = [o0, o1, o2];
+        let mut undecided = [!ok[0], !ok[1], !ok[2]];
         if filter::flushed(&d, &out) {
             undecided = [true; 3];
         }
