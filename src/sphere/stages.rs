@@ -133,7 +133,7 @@ fn dots<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Dots<L> {
 /// The quadratic and the classes both filters certify: `c = f·f − R²`,
 /// `m_c = f·f + R²`, `Δ̂ = b² − ac` and `E_Δ = 40u(m_b² + â m_c)`, then no
 /// root where `a = 0` or `Δ̂ < −E_Δ`, two where `Δ̂ > E_Δ`.
-struct Classes<L: Real> {
+pub(crate) struct Classes<L: Real> {
     a: L,
     b: L,
     mb: L,
@@ -141,12 +141,13 @@ struct Classes<L: Real> {
     cq: L,
     disc: L,
     ed: L,
-    none: L::Mask,
+    /// Certified: no root.
+    pub(crate) none: L::Mask,
     two: L::Mask,
 }
 
 #[inline(always)]
-fn classes<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Classes<L> {
+pub(crate) fn classes<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Classes<L> {
     let Dots {
         a, b, mb, ff, rr, ..
     } = dots(o, d, c, r);
@@ -291,6 +292,13 @@ pub struct Sorted<L: Real> {
 /// ```
 #[inline(always)]
 pub fn filter_sorted<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Sorted<L> {
+    sorted(classes(o, d, c, r, shrink), shrink)
+}
+
+/// [`filter_sorted`] from the [`classes`] already computed, so that the
+/// x4 kernels can skip the roots of a packet whose lanes all miss.
+#[inline(always)]
+pub(crate) fn sorted<L: Real>(classes: Classes<L>, shrink: f64) -> Sorted<L> {
     let k = |x: f64| L::splat(x * U * shrink);
     let Classes {
         a,
@@ -301,7 +309,7 @@ pub fn filter_sorted<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64
         none,
         two,
         ..
-    } = classes(o, d, c, r, shrink);
+    } = classes;
 
     let slack = L::splat(SLACK);
     let (ia, idisc) = if L::FEW_DIVISIONS {

@@ -80,7 +80,8 @@ pub struct SphereHit4 {
 /// lanes, [`stages::filter_sorted`], whose roots `(−b ∓ ŝ)/â` wait on no
 /// division after the square root, then [`stages::filter`]'s `c/q` for
 /// any lane whose root near 0 cancelled, and the scalar stages for any
-/// lane both leave undecided. Every lane is the exact answer, correctly
+/// lane both leave undecided. A packet whose every lane certainly misses
+/// returns before the roots. Every lane is the exact answer, correctly
 /// rounded, so it equals [`super::reference::intersect`] bit for bit.
 ///
 /// ```
@@ -174,12 +175,8 @@ pub fn intersect_packets(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
 #[inline(always)]
 fn packets_in<L: Real4>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
     let env = subnormals_work();
-    let c = s.center.map(L::widen);
-    let (c2, r, r2) = (
-        c.map(|x| Pair(x, x)),
-        L::widen(s.radius),
-        Pair(L::widen(s.radius), L::widen(s.radius)),
-    );
+    let c2 = s.center.map(|x| Pair(L::widen(x), L::widen(x)));
+    let r2 = Pair(L::widen(s.radius), L::widen(s.radius));
     let len = rays.len().min(out.len());
     let mut pairs = rays[..len].chunks_exact(2);
     let mut outs = out[..len].chunks_exact_mut(2);
@@ -188,13 +185,17 @@ fn packets_in<L: Real4>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
             Pair::widen3(&pk[0].origin, &pk[1].origin),
             Pair::widen3(&pk[0].dir, &pk[1].dir),
         );
-        let [x, y] = decide(o2, d2, c2, r2).halves();
+        let k = stages::classes(o2, d2, c2, r2, 1.0);
+        if L::all(k.none.0) && L::all(k.none.1) && env {
+            o.fill(SphereHit4::MISS);
+            continue;
+        }
+        let [x, y] = decide_sorted(stages::sorted(k, 1.0)).halves();
         o[0] = finish(x, || env, &pk[0], s);
         o[1] = finish(y, || env, &pk[1], s);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
-        let (o1, d1) = (one.origin.map(L::widen), one.dir.map(L::widen));
-        *o = finish(decide(o1, d1, c, r), || env, one, s);
+        *o = intersect_in::<L>(one, s, || env);
     }
 }
 
@@ -227,12 +228,11 @@ impl<L: Real> Decided<Pair<L>> {
     }
 }
 
-/// The first pass over any [`Real`]: [`stages::filter_sorted`] and
-/// [`certify`], which decides every lane but those with a root near 0
-/// against the other (and those the filter leaves undecided).
+/// The first pass over any [`Real`]: [`certify`] on the roots of
+/// [`stages::filter_sorted`], which decides every lane but those with a
+/// root near 0 against the other (and those the filter leaves undecided).
 #[inline(always)]
-fn decide<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L> {
-    let f = stages::filter_sorted(o, d, c, r, 1.0);
+fn decide_sorted<L: Real>(f: stages::Sorted<L>) -> Decided<L> {
     let two = f.two & certify(f.lo, f.r, f.a) & certify(f.hi, f.r, f.a);
     let nan = L::splat(f64::NAN);
     Decided {
@@ -295,9 +295,15 @@ fn finish<L: Real4>(
 
 /// The kernel over any four-lane [`Real4`].
 #[inline(always)]
-fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl FnOnce() -> bool) -> SphereHit4 {
+fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl Fn() -> bool) -> SphereHit4 {
     let (o, d, c, r) = widened::<L>(ray, s);
-    finish(decide(o, d, c, r), env, ray, s)
+    let k = stages::classes(o, d, c, r, 1.0);
+    // A packet whose every lane certainly misses needs no roots: coherent
+    // rays, such as a camera's, often come so.
+    if L::all(k.none) && env() {
+        return SphereHit4::MISS;
+    }
+    finish(decide_sorted(stages::sorted(k, 1.0)), env, ray, s)
 }
 
 /// A packet's inputs in f64 lanes.
@@ -313,6 +319,13 @@ fn widened<L: Real4>(ray: &Ray4, s: &Sphere4) -> ([L; 3], [L; 3], [L; 3], L) {
 }
 
 impl SphereHit4 {
+    /// Every lane a miss.
+    const MISS: SphereHit4 = SphereHit4 {
+        class: i32x4::splat(NONE),
+        t0: f32x4::splat(f32::NAN),
+        t1: f32x4::splat(f32::NAN),
+    };
+
     /// Replaces every lane not `done` (and, with subnormals flushed, every
     /// lane) with the scalar stages' answer.
     #[cold]
@@ -436,6 +449,38 @@ mod tests {
         assert!(classes.len() >= 2, "{classes:?}");
     }
 
+    /// Packets whose lanes all miss skip the roots, one packet at a time
+    /// and in pairs; a packet with one hit among misses does not, and
+    /// every lane is the reference's either way.
+    #[test]
+    fn packets_that_all_miss_take_the_early_exit() {
+        let s = Sphere::new(glam::Vec3::ZERO, 1.0);
+        let s4 = Sphere4::splat(&s);
+        let ray = |y: f32| crate::Ray::new(glam::Vec3::new(0.0, y, -5.0), glam::Vec3::Z);
+        let miss = Ray4::from_rays([1.5, 2.0, -3.0, 1.0 + 1e-6].map(ray));
+        let mixed = Ray4::from_rays([1.5, 2.0, 0.5, -3.0].map(ray));
+        let (o, d, c, r) = widened::<F64x4>(&miss, &s4);
+        assert!(F64x4::all(stages::classes(o, d, c, r, 1.0).none));
+        let (o, d, c, r) = widened::<F64x4>(&mixed, &s4);
+        assert!(!F64x4::all(stages::classes(o, d, c, r, 1.0).none));
+        let packets = [miss, miss, mixed, miss, miss];
+        let mut out = vec![intersect(&miss, &s4); packets.len()];
+        intersect_packets(&packets, &s4, &mut out);
+        packets_in::<F64x4>(&packets[1..], &s4, &mut out[1..]);
+        for (p, h) in packets.iter().zip(&out) {
+            let want = p.to_rays().map(|r| reference::intersect(&r, &s));
+            for hit in [
+                h.lanes(),
+                intersect(p, &s4).lanes(),
+                intersect_baseline(p, &s4).lanes(),
+            ] {
+                assert!(hit.iter().zip(&want).all(|(x, y)| same_bits(x, y)), "{p:?}");
+            }
+        }
+        assert!(matches!(out[2].lanes()[2], SphereHit::Two(..)));
+        assert_eq!(out[0].lanes(), [SphereHit::None; 4]);
+    }
+
     /// Origins a few ulps off the sphere make the textbook root near 0
     /// mostly cancellation: the first pass leaves some of those lanes and
     /// the second (`c/q`) decides them, and every packet is the
@@ -455,7 +500,9 @@ mod tests {
             });
             let r4 = Ray4::from_rays(rays);
             let (o, d, c, r) = widened::<F64x4>(&r4, &s4);
-            let first = decide(o, d, c, r).done.lanes();
+            let first = decide_sorted(stages::filter_sorted(o, d, c, r, 1.0))
+                .done
+                .lanes();
             let second = decide_quotients(o, d, c, r).done.lanes();
             left += first.iter().filter(|&&x| !x).count();
             rescued += (0..4).filter(|&i| !first[i] && second[i]).count();
