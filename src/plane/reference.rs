@@ -53,13 +53,13 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
         return (exact_stage(ray, plane), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let f = stages::filter(
-        w(ray.origin),
-        w(ray.dir),
-        w(plane.point),
-        w(plane.normal),
-        shrink,
-    );
+    let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
+    // The direct bound first, as x4 does: three operations after the
+    // division; the full quotient bound only for lines near parallel.
+    let mut f = stages::filter_direct(o, d, a, n, shrink);
+    if !f.hit {
+        f = stages::filter(o, d, a, n, shrink);
+    }
     if f.hit && certify(f.t, f.r, f.a) {
         if needs_probe(&[], &[f.t]) && !subnormals_work() {
             return (exact_stage(ray, plane), Stage::Exact);
