@@ -1,6 +1,7 @@
-//! The scalar reference: the [filter](super::stages) at `f64`, then the
-//! later stages ([`crate::stage`]) for whatever it leaves undecided, the
-//! exact oracle last.
+//! The scalar reference: the [filter](super::stages) at `f64` (its sorted
+//! roots `(−b ∓ √Δ)/a` first, then `q/a` and `c/q` where the root near 0
+//! cancels), then the later stages ([`crate::stage`]) for whatever it
+//! leaves undecided, the exact oracle last.
 
 use super::{Sphere, SphereHit, exact, stages};
 use crate::Ray;
@@ -57,16 +58,26 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
         return (exact_stage(ray, sphere), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let f = stages::filter(
+    let (o, d, c, r) = (
         w(ray.origin),
         w(ray.dir),
         w(sphere.center),
         f64::from(sphere.radius),
-        shrink,
     );
-    if f.none {
+    let k = stages::classes(o, d, c, r, shrink);
+    if k.none {
         return (SphereHit::None, Stage::Filter);
     }
+    // The sorted roots first, as x4 does (two divisions rather than
+    // three); the quotient form where the root near 0 cancels.
+    let g = stages::sorted(k, shrink);
+    if g.two && certify(g.lo, g.r, g.a) && certify(g.hi, g.r, g.a) {
+        if needs_probe(&[], &[g.lo, g.hi]) && !subnormals_work() {
+            return (exact_stage(ray, sphere), Stage::Exact);
+        }
+        return (SphereHit::Two(g.lo as f32, g.hi as f32), Stage::Filter);
+    }
+    let f = stages::filter(o, d, c, r, shrink);
     if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
         if needs_probe(&[], &[f.t0, f.t1]) && !subnormals_work() {
             return (exact_stage(ray, sphere), Stage::Exact);
