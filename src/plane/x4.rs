@@ -234,17 +234,18 @@ fn decide<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Decided<L> {
 /// The results of one packet; `env` says whether the floating-point
 /// environment keeps subnormals (read only where every lane is done).
 #[inline(always)]
-fn finish<L: Real4>(
-    x: Decided<L>,
-    env: impl FnOnce() -> bool,
-    ray: &Ray4,
-    p: &Plane4,
-) -> PlaneHit4 {
+fn finish<L: Real4>(x: Decided<L>, env: impl Fn() -> bool, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+    let t = x.t.narrow();
+    if L::all(x.hit) && env() {
+        return PlaneHit4 {
+            class: i32x4::splat(ONE),
+            t,
+        };
+    }
     let (h, par) = (L::mask_i32(x.hit), L::mask_i32(x.parallel));
     // ONE where hit, NONE where parallel (never both), else ALL.
     let k = i32x4::splat;
     let class = k(ALL) + (h & k(ONE - ALL)) + (par & k(NONE - ALL));
-    let t = x.t.narrow();
     if L::all(x.done) && env() {
         PlaneHit4 { class, t }
     } else {
@@ -254,7 +255,7 @@ fn finish<L: Real4>(
 
 /// The kernel over any four-lane [`Real4`].
 #[inline(always)]
-fn intersect_in<L: Real4>(ray: &Ray4, p: &Plane4, env: impl FnOnce() -> bool) -> PlaneHit4 {
+fn intersect_in<L: Real4>(ray: &Ray4, p: &Plane4, env: impl Fn() -> bool) -> PlaneHit4 {
     let w = L::widen;
     let x = decide(
         ray.origin.map(w),
