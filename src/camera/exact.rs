@@ -94,7 +94,71 @@ pub struct Approx {
     /// `xᵢ/resX` and `yᵢ/resY` ([`Exact::unit_basis`]): `focus·h/resY`
     /// times `Xᵢ/|X|` and `Yᵢ/|Y|`.
     unit: [(Iv, Iv); 3],
+    /// `unit` in `f64` ([`Iv64`]), where every end is zero or has its
+    /// exponent within ±900 and subnormals work.
+    unit64: Option<[(Iv64, Iv64); 3]>,
     p: u32,
+}
+
+/// An enclosure `[lo, hi]` in `f64`, every operation rounded outward: a
+/// sum or product rounded to nearest is within half an ulp of the exact
+/// one (within `2⁻¹⁰⁷⁵` where it is subnormal, and exact for a sum that
+/// is), so one step of `next_down` (`next_up`) from it is a lower (upper)
+/// bound. This holds where subnormals are not flushed
+/// ([`crate::exact::expansion::subnormals_work`]), and for finite ends.
+#[derive(Clone, Copy, Debug)]
+struct Iv64 {
+    lo: f64,
+    hi: f64,
+}
+
+impl Iv64 {
+    /// The outward `f64` enclosure of `x`, for ends that are 0 or have
+    /// their exponent within ±900: [`Fx::to_f64`] truncates to 60 bits and
+    /// rounds once to nearest, within 0.52 ulp of the end, so two ulps
+    /// outward bound it.
+    fn of(x: &Iv) -> Option<Iv64> {
+        let end = |f: &Fx, out: fn(f64) -> f64| match f.signum() {
+            0 => Some(0.0),
+            _ if (-900..=900).contains(&f.exponent()) => Some(out(out(f.to_f64()))),
+            _ => None,
+        };
+        Some(Iv64 {
+            lo: end(&x.lo, f64::next_down)?,
+            hi: end(&x.hi, f64::next_up)?,
+        })
+    }
+
+    /// `self · n`, for an integer `n` exact in `f64`.
+    fn scale(self, n: f64) -> Iv64 {
+        let (a, b) = (self.lo * n, self.hi * n);
+        let (lo, hi) = if n >= 0.0 { (a, b) } else { (b, a) };
+        Iv64 {
+            lo: lo.next_down(),
+            hi: hi.next_up(),
+        }
+    }
+
+    fn add(self, o: Iv64) -> Iv64 {
+        Iv64 {
+            lo: (self.lo + o.lo).next_down(),
+            hi: (self.hi + o.hi).next_up(),
+        }
+    }
+
+    /// The `f32` every real in the enclosure rounds to, when both ends
+    /// round to it: rounding is monotone, so every real between them does
+    /// too. An enclosure that holds 0 (or a NaN end) decides nothing, as
+    /// [`decide`] does not; a midpoint between two `f32`s inside it does
+    /// not either (the ends round apart), and one at an end is never the
+    /// real number itself (module docs).
+    fn decide(self) -> Option<f32> {
+        if !(self.lo > 0.0 || self.hi < 0.0) || self.lo > self.hi {
+            return None;
+        }
+        let (a, b) = (self.lo as f32, self.hi as f32);
+        (a.to_bits() == b.to_bits()).then_some(a)
+    }
 }
 
 impl Exact {
@@ -137,10 +201,16 @@ impl Exact {
         let k = focus.mul(&h, q).div_pos(&res_y, q);
         let (ix, iy) = (rsqrt(&self.nx, q), rsqrt(&self.ny, q));
         let unit = |v: &Fx, inv: &Iv| Iv::point(v.clone()).round(q).mul(inv, q).mul(&k, q);
-        Approx {
-            unit: [0, 1, 2].map(|i| (unit(&self.x[i], &ix), unit(&self.y[i], &iy))),
-            p: q,
-        }
+        let unit = [0, 1, 2].map(|i| (unit(&self.x[i], &ix), unit(&self.y[i], &iy)));
+        let unit64 = (|| {
+            let mut u = [(Iv64 { lo: 0.0, hi: 0.0 }, Iv64 { lo: 0.0, hi: 0.0 }); 3];
+            for (o, (x, y)) in u.iter_mut().zip(&unit) {
+                *o = (Iv64::of(x)?, Iv64::of(y)?);
+            }
+            Some(u)
+        })()
+        .filter(|_| crate::exact::expansion::subnormals_work());
+        Approx { unit, unit64, p: q }
     }
 
     /// The enclosures at twice `a`'s precision, computed once per camera
@@ -183,6 +253,18 @@ impl Exact {
             .add(&Iv::point(self.d[i].clone()), q)
     }
 
+    /// [`Exact::component`] in `f64` ([`Iv64`]), decided when it can be:
+    /// the same enclosure, a few `f64` ulps wider, at the cost of a few
+    /// floating-point operations (`|nx|`, `|ny|` below `2³⁴`, exact).
+    fn component64(&self, a: &Approx, i: usize, nx: i64, ny: i64) -> Option<f32> {
+        let (bx, by) = a.unit64?[i];
+        let d = f64::from(self.dir[i]);
+        bx.scale(nx as f64)
+            .add(by.scale(ny as f64))
+            .add(Iv64 { lo: d, hi: d })
+            .decide()
+    }
+
     /// Enclosures of `xᵢ/resX` and `yᵢ/resY`: the basis per unit of `nx`
     /// and `ny`.
     pub fn unit_basis(&self, a: &Approx, i: usize) -> (Iv, Iv) {
@@ -197,6 +279,9 @@ impl Exact {
     /// components that needed more are kept with the camera's data (the
     /// reference asks for the same ones the oracle is then asked for).
     pub fn round_component(&self, a: &Approx, i: usize, nx: i64, ny: i64) -> f32 {
+        if let Some(c) = self.component64(a, i, nx, ny) {
+            return c;
+        }
         if let Some(c) = decide(&self.component(a, i, nx, ny)) {
             return c;
         }
@@ -286,9 +371,16 @@ pub fn with_approx<R>(p: &CameraParams, f: impl FnOnce(&Exact, &Approx) -> R) ->
 /// construction does.
 pub fn ray(p: &CameraParams, px: u32, py: u32) -> Result<Ray, CameraError> {
     p.build()?;
+    Ok(Ray::new(p.position, direction(p, px, py)))
+}
+
+/// The direction of [`ray`], for parameters that [`CameraParams::build`]
+/// accepts (the caller has built them once; for others it may panic).
+pub(crate) fn direction(p: &CameraParams, px: u32, py: u32) -> Vec3 {
     let (nx, ny) = (numerator(px, p.res[0]), numerator(py, p.res[1]));
-    let d = with_approx(p, |e, a| [0, 1, 2].map(|i| e.round_component(a, i, nx, ny)));
-    Ok(Ray::new(p.position, Vec3::from_array(d)))
+    Vec3::from_array(with_approx(p, |e, a| {
+        [0, 1, 2].map(|i| e.round_component(a, i, nx, ny))
+    }))
 }
 
 #[cfg(test)]
