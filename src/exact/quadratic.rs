@@ -19,10 +19,12 @@
 //! a magnitude below `2⁹⁶²`: each partial product is exact
 //! ([`super::expansion::two_prod`]), and no sum overflows. An expansion
 //! that outgrows its capacity sends that comparison (or the whole solve)
-//! to the dyadics, and so do coefficients of more than four
-//! components even after Compress (dense mantissas, which the products
-//! would pay for quadratically), and a floating-point environment that flushes
-//! subnormals ([`super::expansion::subnormals_work`]).
+//! to the dyadics, and so does a floating-point environment that flushes
+//! subnormals ([`super::expansion::subnormals_work`]). Each sign is first
+//! asked of an `f64` filter with a proven error bound (`Near`), which
+//! tells nearly all of them; coefficients of more than four components
+//! even after Compress (dense mantissas, which the products would pay for
+//! quadratically) go to the dyadics for the signs it does not tell.
 
 use super::expansion::Expansion;
 use super::round::round_to_f32_at;
@@ -272,31 +274,38 @@ pub(crate) fn solve_expansions(
     slow.get().solve_dyadic()
 }
 
-/// [`Quadratic::solve`] on the expansions `fast`, if each is there and
-/// short enough, subnormals work, and the discriminant fits.
+/// [`Quadratic::solve`] on the expansions `fast`, if each is there,
+/// subnormals work, and the discriminant fits.
 fn solve_fast(fast: [Option<Expansion>; 3], slow: &Slow) -> Option<ExactQuadratic> {
     #[cfg(test)]
     let fast = fast.map(|e| e.filter(|_| !super::dyadic::tests::BIG_ONLY.with(|b| b.get())));
-    // Long expansions (dense mantissas) cost quadratically in the
-    // products below; dyadics hold those better.
-    let short = |x: Expansion| match x.components().len() {
-        ..=SHORT => Some(x),
-        _ => Some(x.compress()).filter(|x| x.components().len() <= SHORT),
+    let compressed = |x: Expansion| match x.components().len() {
+        ..=SHORT => x,
+        _ => x.compress(),
     };
-    let [Some(a), Some(b), Some(c)] = fast.map(|e| e.and_then(short)) else {
+    let [Some(a), Some(b), Some(c)] = fast.map(|e| e.map(compressed)) else {
         return None;
     };
     if !super::expansion::subnormals_work() {
         return None;
     }
-    solve_on_expansions([a, b, c], slow)
+    // Long expansions (dense mantissas) cost quadratically in the exact
+    // products; dyadics hold those better.
+    let short = [a, b, c].iter().all(|x| x.components().len() <= SHORT);
+    solve_on_expansions([a, b, c], short, slow)
 }
 
 /// [`Quadratic::solve`] on expansions: `None` only if the discriminant
-/// outgrows an expansion; a comparison that does goes to the dyadics.
-/// Every sign is first asked of the `f64` filter ([`Near`]), and formed on
-/// the expansions only where that cannot tell.
-fn solve_on_expansions([a, b, c]: [Expansion; 3], slow: &Slow) -> Option<ExactQuadratic> {
+/// outgrows an expansion (or is not told by the filter, unless `short`); a
+/// comparison that does goes to the dyadics. Every sign is first asked of
+/// the `f64` filter ([`Near`]), and formed on the expansions only where
+/// that cannot tell and they are `short`, on the dyadics otherwise.
+fn solve_on_expansions(
+    [a, b, c]: [Expansion; 3],
+    short: bool,
+    slow: &Slow,
+) -> Option<ExactQuadratic> {
+    let exact = |x: Option<Expansion>| x.filter(|_| short);
     let dy = Dyadic::from_f64;
     let [na, nb, nc] = [&a, &b, &c].map(Near::of);
     let (fa, fb, fc) = (na.v, nb.v, nc.v);
@@ -314,7 +323,7 @@ fn solve_on_expansions([a, b, c]: [Expansion; 3], slow: &Slow) -> Option<ExactQu
             |m| {
                 let sum = Near::sum([(nb, m), (nc, 1.0)]);
                 sum.map(Ordering::reverse).unwrap_or_else(|| {
-                    b.scale(m)
+                    exact(b.scale(m))
                         .and_then(|bm| neg_c.compare(&bm))
                         .unwrap_or_else(|| {
                             let q = slow.get();
@@ -332,7 +341,7 @@ fn solve_on_expansions([a, b, c]: [Expansion; 3], slow: &Slow) -> Option<ExactQu
     let (sign, fd) = match sure {
         Some(s) => (s, fd),
         None => {
-            let disc = b.mul(&b)?.sub(&a.mul(&c)?.mul_pow2(2))?;
+            let disc = exact(b.mul(&b))?.sub(&a.mul(&c)?.mul_pow2(2))?;
             (disc.sign().cmp(&0), disc.approx())
         }
     };
@@ -346,7 +355,7 @@ fn solve_on_expansions([a, b, c]: [Expansion; 3], slow: &Slow) -> Option<ExactQu
                 |m| {
                     let sum = Near::sum([(na, 2.0 * m), (nb, 1.0)]);
                     sum.map(Ordering::reverse).unwrap_or_else(|| {
-                        a.scale(2.0 * m)
+                        exact(a.scale(2.0 * m))
                             .and_then(|am| neg_b.compare(&am))
                             .unwrap_or_else(|| {
                                 let q = slow.get();
@@ -365,13 +374,12 @@ fn solve_on_expansions([a, b, c]: [Expansion; 3], slow: &Slow) -> Option<ExactQu
             let root = |upper: bool, guess: f64| {
                 round_to_f32_at(
                     |m| {
-                        root_against_expansions(&a, &b, &neg, &near, m, upper).unwrap_or_else(
-                            || {
-                                let q = slow.get();
-                                let neg = [-&q.beta, -&q.gamma];
-                                q.root_against(&neg, &dy(m), upper)
-                            },
-                        )
+                        let exp = short.then_some((&a, &b, &neg));
+                        root_against_expansions(exp, &near, m, upper).unwrap_or_else(|| {
+                            let q = slow.get();
+                            let neg = [-&q.beta, -&q.gamma];
+                            q.root_against(&neg, &dy(m), upper)
+                        })
                     },
                     guess,
                 )
@@ -392,8 +400,11 @@ const TINY: f64 = f64::from_bits((1023 - 900) << 52);
 ///
 /// # Why the filter's signs are exact
 ///
-/// With `u = 2⁻⁵³` and at most four components (the solver's coefficients
-/// are [`SHORT`]), `|v − x| ≤ γ₃·Σ|cᵢ| ≈ 3u·mag` for the value `x`.
+/// With `u = 2⁻⁵³`: the components are nonoverlapping and increasing, so
+/// those below `cₖ` sum in magnitude to less than `|cₖ|`, each partial sum
+/// `sₖ` is below `2|cₖ|` (and a little), and summing them smallest first
+/// errs by at most `u·Σ|sₖ| < 2.01u·mag` from the value `x`, however many
+/// components there are (within `3u·mag`, as used below).
 /// A sum `Σ xᵢ·kᵢ` of two or three coefficients times exact `f64`
 /// factors (`1`, `m`, `2m`, `m²` formed by Horner's rule), evaluated in
 /// `f64` with at most four roundings, is then within
@@ -457,12 +468,11 @@ fn sure_sign(v: f64, err: f64) -> Option<Ordering> {
     }
 }
 
-/// [`Quadratic::root_against`] on expansions, `neg` being `[−β, −γ]`
-/// and `near` the filter's view of `[α, β, γ]`.
+/// [`Quadratic::root_against`] by the filter, `near` being its view of
+/// `[α, β, γ]`, and where it cannot tell on the expansions `exp`,
+/// `(α, β, [−β, −γ])`, if given.
 fn root_against_expansions(
-    a: &Expansion,
-    b: &Expansion,
-    neg: &[Expansion; 2],
+    exp: Option<(&Expansion, &Expansion, &[Expansion; 2])>,
     near: &[Near; 3],
     m: f64,
     upper: bool,
@@ -471,7 +481,10 @@ fn root_against_expansions(
     // 2αm against −β: the sign of 2αm + β.
     let side = match Near::sum([(na, 2.0 * m), (nb, 1.0)]) {
         Some(s) => s,
-        None => a.scale(m)?.mul_pow2(1).compare(&neg[0])?,
+        None => {
+            let (a, _, neg) = exp?;
+            a.scale(m)?.mul_pow2(1).compare(&neg[0])?
+        }
     };
     Some(match (side, upper) {
         (Ordering::Greater, false) => Ordering::Less,
@@ -480,7 +493,10 @@ fn root_against_expansions(
             // (αm + β)m against −γ: the sign of p(m).
             let p = match Near::horner(near, m) {
                 Some(p) => p,
-                None => a.scale(m)?.add(b)?.scale(m)?.compare(&neg[1])?,
+                None => {
+                    let (a, b, neg) = exp?;
+                    a.scale(m)?.add(b)?.scale(m)?.compare(&neg[1])?
+                }
             };
             if upper { p.reverse() } else { p }
         }
@@ -604,13 +620,10 @@ mod tests {
         };
         for _ in 0..3_000 {
             let q = random_quadratic(&mut r);
-            let e = [&q.alpha, &q.beta, &q.gamma].map(|x| x.expansion().map(|e| e.compress()));
+            let e = [&q.alpha, &q.beta, &q.gamma].map(Dyadic::expansion);
             let [Some(a), Some(b), Some(c)] = e else {
                 continue;
             };
-            if [a, b, c].iter().any(|x| x.components().len() > SHORT) {
-                continue;
-            }
             let near = [a, b, c].map(|x| Near::of(&x));
             let disc = big_only(|| q.discriminant().signum());
             check(Near::discriminant(&near).0, disc);
