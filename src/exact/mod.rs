@@ -15,6 +15,8 @@
 
 pub mod dyadic;
 pub mod expansion;
+#[cfg(any(feature = "sphere", feature = "quadric"))]
+pub(crate) mod memo;
 pub mod quadratic;
 pub mod round;
 mod wide;

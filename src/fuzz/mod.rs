@@ -288,18 +288,16 @@ impl Target for Quadric {
 /// [`Quadric::from_sphere`] is exact and the direction nonzero, the quadric
 /// oracle's exact polynomial is the sphere oracle's, and the quadric
 /// reference gives the sphere oracle's answer (so the two references agree,
-/// the sphere's being the oracle's). Each exact polynomial is formed once,
-/// on expansions, the two compared exactly there, and solved once; where
-/// either does not fit on expansions, `false` leaves it to the full check.
+/// the sphere's being the oracle's). The sphere's answer is
+/// [`sphere::exact::intersect`]'s, which keeps the last few (an answer the
+/// reference's last stage asked for is not solved again); the two
+/// polynomials are compared exactly on expansions, and where either does
+/// not fit there, `false` leaves it to the full check.
 #[cfg(feature = "sphere")]
 fn sphere_accepts(ray: &Ray, s: &Sphere, got: &sphere::SphereHit) -> bool {
-    let Ok(expansions) = sphere::exact::expansions(ray, s) else {
+    let Ok(es) = sphere::exact::intersect(ray, s) else {
         return true;
     };
-    let Some([a, b2, c]) = expansions else {
-        return false;
-    };
-    let es = sphere::exact::hit(crate::exact::quadratic::solve_expansions(a, b2, c));
     if !crate::hit::same_bits(got, &es) {
         return false;
     }
@@ -313,12 +311,13 @@ fn sphere_accepts(ray: &Ray, s: &Sphere, got: &sphere::SphereHit) -> bool {
         let Ok(eq) = quadric::exact::expansions(ray, &q) else {
             return true;
         };
-        let same = eq.is_some_and(|eq| {
-            [a, b2, c]
+        let same = match (sphere::exact::expansions(ray, s), eq) {
+            (Ok(Some(es)), Some(eq)) => es
                 .iter()
                 .zip(&eq)
-                .all(|(x, y)| x.compare(y) == Some(core::cmp::Ordering::Equal))
-        });
+                .all(|(x, y)| x.compare(y) == Some(core::cmp::Ordering::Equal)),
+            _ => false,
+        };
         let as_quadric = match es {
             sphere::SphereHit::None => quadric::QuadricHit::None,
             sphere::SphereHit::Tangent(t) => quadric::QuadricHit::One(t),

@@ -12,8 +12,10 @@ use super::{Quadric, QuadricHit};
 use crate::Ray;
 use crate::exact::dyadic::{sum, vec3};
 use crate::exact::expansion::{Expansion, subnormals_work};
+use crate::exact::memo::{Memo, remembered};
 use crate::exact::quadratic::solve_expansions;
 use crate::exact::{Dyadic, ExactQuadratic, NonFinite, Quadratic};
+use core::cell::RefCell;
 
 /// The exact quadratic `α t² + β t + γ` of a ray and a quadric.
 ///
@@ -144,7 +146,8 @@ fn on_dyadics(ray: &Ray, quadric: &Quadric) -> Result<Quadratic, NonFinite> {
     Ok(Quadratic::new(sum(&alpha), sum(&beta), sum(&gamma)))
 }
 
-/// The exact answer, or [`NonFinite`] when an input is NaN or infinite.
+/// The exact answer, or [`NonFinite`] when an input is NaN or infinite
+/// (the last few kept per thread, by the inputs' bits).
 ///
 /// ```
 /// use rayoracle::{Ray, quadric::{Quadric, QuadricHit, exact::intersect}};
@@ -155,9 +158,21 @@ fn on_dyadics(ray: &Ray, quadric: &Quadric) -> Result<Quadratic, NonFinite> {
 /// assert_eq!(intersect(&r, &p), Ok(QuadricHit::One(2.0)));
 /// ```
 pub fn intersect(ray: &Ray, quadric: &Quadric) -> Result<QuadricHit, NonFinite> {
-    Ok(match expansions(ray, quadric)? {
-        Some([a, b, c]) => hit(solve_expansions(a, b, c)),
-        None => classify(&on_dyadics(ray, quadric)?),
+    type Key = ([u32; 6], [u32; 10]);
+    thread_local! {
+        static LAST: RefCell<Memo<Key, Result<QuadricHit, NonFinite>>> =
+            const { RefCell::new(Memo::new()) };
+    }
+    let (o, d) = (ray.origin, ray.dir);
+    let key = (
+        [o.x, o.y, o.z, d.x, d.y, d.z].map(f32::to_bits),
+        quadric.coeffs.map(f32::to_bits),
+    );
+    remembered(&LAST, key, || {
+        Ok(match expansions(ray, quadric)? {
+            Some([a, b, c]) => hit(solve_expansions(a, b, c)),
+            None => classify(&on_dyadics(ray, quadric)?),
+        })
     })
 }
 

@@ -13,8 +13,10 @@ use super::{Sphere, SphereHit};
 use crate::Ray;
 use crate::exact::dyadic::{dot, sub3};
 use crate::exact::expansion::{Expansion, subnormals_work};
+use crate::exact::memo::{Memo, remembered};
 use crate::exact::quadratic::solve_expansions;
 use crate::exact::{Dyadic, ExactQuadratic, NonFinite, Quadratic};
+use core::cell::RefCell;
 
 /// The exact quadratic `a t² + 2b t + c` of a ray and a sphere.
 ///
@@ -77,7 +79,8 @@ fn on_dyadics(ray: &Ray, sphere: &Sphere) -> Quadratic {
     Quadratic::new(a, b2, cc)
 }
 
-/// The exact answer, or [`NonFinite`] when an input is NaN or infinite.
+/// The exact answer, or [`NonFinite`] when an input is NaN or infinite
+/// (the last few kept per thread, by the inputs' bits).
 ///
 /// ```
 /// use rayoracle::{Ray, sphere::{Sphere, SphereHit, exact::intersect}};
@@ -87,9 +90,18 @@ fn on_dyadics(ray: &Ray, sphere: &Sphere) -> Quadratic {
 /// assert_eq!(intersect(&r, &s), Ok(SphereHit::Tangent(5.0)));
 /// ```
 pub fn intersect(ray: &Ray, sphere: &Sphere) -> Result<SphereHit, NonFinite> {
-    Ok(match expansions(ray, sphere)? {
-        Some([a, b2, cc]) => hit(solve_expansions(a, b2, cc)),
-        None => classify(&on_dyadics(ray, sphere)),
+    type Key = [u32; 10];
+    thread_local! {
+        static LAST: RefCell<Memo<Key, Result<SphereHit, NonFinite>>> =
+            const { RefCell::new(Memo::new()) };
+    }
+    let (o, d, c) = (ray.origin, ray.dir, sphere.center);
+    let key = [o.x, o.y, o.z, d.x, d.y, d.z, c.x, c.y, c.z, sphere.radius].map(f32::to_bits);
+    remembered(&LAST, key, || {
+        Ok(match expansions(ray, sphere)? {
+            Some([a, b2, cc]) => hit(solve_expansions(a, b2, cc)),
+            None => classify(&on_dyadics(ray, sphere)),
+        })
     })
 }
 
