@@ -52,6 +52,8 @@
 use super::tan::{Fx, Iv, decide, rsqrt, sqrt, tan_half};
 use super::{CameraError, CameraParams};
 use crate::Ray;
+use crate::exact::memo::{Memo, remembered};
+use core::cell::RefCell;
 use glam::Vec3;
 
 /// The first precision tried, in bits; each retry doubles it.
@@ -195,7 +197,11 @@ impl Exact {
     /// [`Exact::parallel`]).
     pub fn approx(&self, p: u32) -> Approx {
         let q = p + 8;
-        let h = tan_half(self.angle, q);
+        // Cameras asked for in a row often share their angle.
+        thread_local! {
+            static TAN: RefCell<Memo<(u32, u32), Iv>> = const { RefCell::new(Memo::new()) };
+        }
+        let h = remembered(&TAN, (self.angle.to_bits(), q), || tan_half(self.angle, q));
         let focus = sqrt(&self.nd, q);
         let res_y = Iv::point(Fx::new(self.res[1], 0));
         let k = focus.mul(&h, q).div_pos(&res_y, q);

@@ -25,30 +25,36 @@ pub(crate) struct Memo<K, V> {
     next: usize,
 }
 
-impl<K: Copy + PartialEq, V: Copy> Memo<K, V> {
+impl<K, V> Memo<K, V> {
     /// Empty.
     pub(crate) const fn new() -> Self {
         Memo {
-            kept: [None; KEPT],
+            kept: [const { None }; KEPT],
             next: 0,
         }
     }
 }
 
 /// `f()`, or the answer kept for `key` in `memo`.
-pub(crate) fn remembered<K: Copy + PartialEq, V: Copy>(
+pub(crate) fn remembered<K: PartialEq, V: Clone>(
     memo: &'static std::thread::LocalKey<RefCell<Memo<K, V>>>,
     key: K,
     f: impl FnOnce() -> V,
 ) -> V {
-    let found = memo.with_borrow(|m| m.kept.iter().flatten().find(|e| e.0 == key).map(|e| e.1));
+    let found = memo.with_borrow(|m| {
+        m.kept
+            .iter()
+            .flatten()
+            .find(|e| e.0 == key)
+            .map(|e| e.1.clone())
+    });
     if let Some(v) = found {
         return v;
     }
     let v = f();
     memo.with_borrow_mut(|m| {
         let i = m.next;
-        m.kept[i] = Some((key, v));
+        m.kept[i] = Some((key, v.clone()));
         m.next = (i + 1) % KEPT;
     });
     v

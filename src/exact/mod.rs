@@ -15,7 +15,6 @@
 
 pub mod dyadic;
 pub mod expansion;
-#[cfg(any(feature = "sphere", feature = "quadric"))]
 pub(crate) mod memo;
 pub mod quadratic;
 pub mod round;
