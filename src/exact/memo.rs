@@ -19,10 +19,40 @@ use core::cell::RefCell;
 /// How many answers a [`Memo`] keeps.
 const KEPT: usize = 8;
 
-/// The last [`KEPT`] answers, oldest overwritten first.
+/// The last [`KEPT`] answers, oldest overwritten first, each with a hash
+/// of its key ([`hash`]), compared before the key itself.
 pub(crate) struct Memo<K, V> {
-    kept: [Option<(K, V)>; KEPT],
+    kept: [Option<(u64, K, V)>; KEPT],
     next: usize,
+}
+
+/// A 64-bit hash of `key` (FxHash's multiply and rotate per word): the
+/// comparison of two keys that are not equal almost always ends at their
+/// hashes, without comparing the keys' bytes.
+fn hash<K: core::hash::Hash>(key: &K) -> u64 {
+    struct Fx(u64);
+    impl core::hash::Hasher for Fx {
+        fn finish(&self) -> u64 {
+            self.0
+        }
+        fn write(&mut self, bytes: &[u8]) {
+            for b in bytes {
+                self.write_u64(u64::from(*b));
+            }
+        }
+        fn write_u32(&mut self, x: u32) {
+            self.write_u64(u64::from(x));
+        }
+        fn write_u64(&mut self, x: u64) {
+            self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+        }
+        fn write_usize(&mut self, x: usize) {
+            self.write_u64(x as u64);
+        }
+    }
+    let mut h = Fx(0);
+    key.hash(&mut h);
+    core::hash::Hasher::finish(&h)
 }
 
 impl<K, V> Memo<K, V> {
@@ -36,17 +66,18 @@ impl<K, V> Memo<K, V> {
 }
 
 /// `f()`, or the answer kept for `key` in `memo`.
-pub(crate) fn remembered<K: PartialEq, V: Clone>(
+pub(crate) fn remembered<K: PartialEq + core::hash::Hash, V: Clone>(
     memo: &'static std::thread::LocalKey<RefCell<Memo<K, V>>>,
     key: K,
     f: impl FnOnce() -> V,
 ) -> V {
+    let h = hash(&key);
     let found = memo.with_borrow(|m| {
         m.kept
             .iter()
             .flatten()
-            .find(|e| e.0 == key)
-            .map(|e| e.1.clone())
+            .find(|e| e.0 == h && e.1 == key)
+            .map(|e| e.2.clone())
     });
     if let Some(v) = found {
         return v;
@@ -54,7 +85,7 @@ pub(crate) fn remembered<K: PartialEq, V: Clone>(
     let v = f();
     memo.with_borrow_mut(|m| {
         let i = m.next;
-        m.kept[i] = Some((key, v.clone()));
+        m.kept[i] = Some((h, key, v.clone()));
         m.next = (i + 1) % KEPT;
     });
     v

@@ -303,7 +303,15 @@ fn sphere_accepts(ray: &Ray, s: &Sphere, got: &sphere::SphereHit) -> bool {
     }
     #[cfg(feature = "quadric")]
     {
-        let (q, exact) = Quadric::from_sphere(s);
+        // Spheres recur from one input to the next (the fuzzer mutates one
+        // lane at a time): the last few conversions are kept.
+        use crate::exact::memo::{Memo, remembered};
+        thread_local! {
+            static QUADRICS: core::cell::RefCell<Memo<[u32; 4], (Quadric, bool)>> =
+                const { core::cell::RefCell::new(Memo::new()) };
+        }
+        let key = [s.center.x, s.center.y, s.center.z, s.radius].map(f32::to_bits);
+        let (q, exact) = remembered(&QUADRICS, key, || Quadric::from_sphere(s));
         if !exact || ray.dir == Vec3::ZERO {
             return true;
         }
