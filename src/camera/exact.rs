@@ -523,8 +523,15 @@ pub(crate) fn direction(p: &CameraParams, px: u32, py: u32) -> Vec3 {
     let (nx, ny) = (numerator(px, p.res[0]), numerator(py, p.res[1]));
     Vec3::from_array(with_kept(p, |k| {
         [0, 1, 2].map(|i| {
-            let fast = k.unit64.and_then(|u| k.exact.component64(&u, i, nx, ny));
-            fast.unwrap_or_else(|| k.exact.round_component(k.approx(), i, nx, ny))
+            let e = &k.exact;
+            match k.unit64.and_then(|u| e.component64(&u, i, nx, ny)) {
+                Some(c) => c,
+                // What [`Exact::round_component`] gives where `Bᵢ = 0` (a
+                // zero component, say), without the enclosures it needs
+                // otherwise.
+                None if e.b_is_zero(i, nx, ny) => e.dir[i],
+                None => e.round_component(k.approx(), i, nx, ny),
+            }
         })
     }))
 }
