@@ -116,13 +116,16 @@ struct Iv64 {
 
 impl Iv64 {
     /// The outward `f64` enclosure of `x`, for ends that are 0 or have
-    /// their exponent within ±900: [`Fx::to_f64`] truncates to 60 bits and
-    /// rounds once to nearest, within 0.52 ulp of the end, so two ulps
-    /// outward bound it.
+    /// their exponent within ±900: an end that is an `f64` exactly is
+    /// kept; otherwise [`Fx::to_f64`] truncates to 60 bits and rounds once
+    /// to nearest, within 0.52 ulp of the end, so two ulps outward bound
+    /// it.
     fn of(x: &Iv) -> Option<Iv64> {
         let end = |f: &Fx, out: fn(f64) -> f64| match f.signum() {
             0 => Some(0.0),
-            _ if (-900..=900).contains(&f.exponent()) => Some(out(out(f.to_f64()))),
+            _ if (-900..=900).contains(&f.exponent()) => {
+                Some(f.to_f64_exact().unwrap_or_else(|| out(out(f.to_f64()))))
+            }
             _ => None,
         };
         Some(Iv64 {
