@@ -111,6 +111,25 @@ impl Fx {
         m * pow2(half) * pow2(e - half)
     }
 
+    /// The value as an `f64`, if it is one exactly: at most 53
+    /// significant bits, and normal.
+    ///
+    /// ```
+    /// use rayoracle::camera::tan::Fx;
+    /// assert_eq!(Fx::new(-3, -2).to_f64_exact(), Some(-0.75));
+    /// assert_eq!(Fx::new((1i64 << 54) + 1, 0).to_f64_exact(), None);
+    /// assert_eq!(Fx::new(1, -1074).to_f64_exact(), None);
+    /// ```
+    pub fn to_f64_exact(&self) -> Option<f64> {
+        let b = bits(&self.m);
+        let normal = -1022 <= self.e && self.e + b <= 1023;
+        if b > 53 || !normal {
+            return None;
+        }
+        // |m| < 2⁵³ converts exactly, and so does its product by 2^e.
+        Some(i64::try_from(&self.m).ok()? as f64 * pow2(self.e))
+    }
+
     /// The highest set bit's position: `|x| ∈ [2^b, 2^(b+1))`; very
     /// negative for zero.
     pub fn exponent(&self) -> i64 {

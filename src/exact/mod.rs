@@ -15,6 +15,7 @@
 
 pub mod dyadic;
 pub mod expansion;
+pub(crate) mod memo;
 pub mod quadratic;
 pub mod round;
 mod wide;

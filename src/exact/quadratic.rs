@@ -19,10 +19,12 @@
 //! a magnitude below `2⁹⁶²`: each partial product is exact
 //! ([`super::expansion::two_prod`]), and no sum overflows. An expansion
 //! that outgrows its capacity sends that comparison (or the whole solve)
-//! to the dyadics, and so do coefficients of more than four
-//! components even after Compress (dense mantissas, which the products
-//! would pay for quadratically), and a floating-point environment that flushes
-//! subnormals ([`super::expansion::subnormals_work`]).
+//! to the dyadics, and so does a floating-point environment that flushes
+//! subnormals ([`super::expansion::subnormals_work`]). Each sign is first
+//! asked of an `f64` filter with a proven error bound (`Near`), which
+//! tells nearly all of them; coefficients of more than four components
+//! even after Compress (dense mantissas, which the products would pay for
+//! quadratically) go to the dyadics for the signs it does not tell.
 
 use super::expansion::Expansion;
 use super::round::round_to_f32_at;
@@ -126,12 +128,11 @@ impl Quadratic {
     /// they are.
     #[cfg(any(feature = "sphere", feature = "quadric"))]
     pub(crate) fn from_expansions(alpha: Expansion, beta: Expansion, gamma: Expansion) -> Self {
-        let flip = alpha.sign() < 0 || (alpha.sign() == 0 && beta.sign() < 0);
-        let e = if flip {
-            [alpha.neg(), beta.neg(), gamma.neg()]
-        } else {
-            [alpha, beta, gamma]
-        };
+        Quadratic::of_normalised(normalised([alpha, beta, gamma]))
+    }
+
+    /// The quadratic of coefficients already normalised.
+    fn of_normalised(e: [Expansion; 3]) -> Self {
         Quadratic {
             alpha: Dyadic::from_expansion(&e[0]),
             beta: Dyadic::from_expansion(&e[1]),
@@ -183,84 +184,10 @@ impl Quadratic {
             .expansions
             .map(|e| e.map(Some))
             .unwrap_or_else(|| [&self.alpha, &self.beta, &self.gamma].map(Dyadic::expansion));
-        #[cfg(test)]
-        let fast = fast.map(|e| e.filter(|_| !super::dyadic::tests::BIG_ONLY.with(|b| b.get())));
-        // Long expansions (dense mantissas) cost quadratically in the
-        // products below; dyadics hold those better.
-        let short = |x: Expansion| match x.components().len() {
-            ..=SHORT => Some(x),
-            _ => Some(x.compress()).filter(|x| x.components().len() <= SHORT),
-        };
-        let fast = fast.map(|e| e.and_then(short));
-        if let [Some(a), Some(b), Some(c)] = fast
-            && super::expansion::subnormals_work()
-            && let Some(r) = self.solve_expansions([a, b, c])
-        {
+        if let Some(r) = solve_fast(fast, &Slow::Have(self)) {
             return r;
         }
         self.solve_dyadic()
-    }
-
-    /// [`Quadratic::solve`] on expansions: `None` only if the discriminant
-    /// outgrows an expansion; a comparison that does goes to the dyadics.
-    fn solve_expansions(&self, [a, b, c]: [Expansion; 3]) -> Option<ExactQuadratic> {
-        let dy = Dyadic::from_f64;
-        let (fa, fb, fc) = (a.approx(), b.approx(), c.approx());
-        if a.sign() == 0 {
-            if b.sign() == 0 {
-                return Some(if c.sign() == 0 {
-                    ExactQuadratic::All
-                } else {
-                    ExactQuadratic::None
-                });
-            }
-            // β > 0 after normalisation: t ≷ m ⇔ −γ ≷ β m.
-            let nc = c.neg();
-            let t = round_to_f32_at(
-                |m| {
-                    b.scale(m)
-                        .and_then(|bm| nc.compare(&bm))
-                        .unwrap_or_else(|| (-&self.gamma).cmp(&(&self.beta * &dy(m))))
-                },
-                -fc / fb,
-            );
-            return Some(ExactQuadratic::One(t));
-        }
-        let disc = b.mul(&b)?.sub(&a.mul(&c)?.mul_pow2(2))?;
-        Some(match disc.sign() {
-            -1 => ExactQuadratic::None,
-            0 => {
-                // The vertex −β/(2α), with α > 0: t ≷ m ⇔ −β ≷ 2α m.
-                let nb = b.neg();
-                let t = round_to_f32_at(
-                    |m| {
-                        a.scale(2.0 * m)
-                            .and_then(|am| nb.compare(&am))
-                            .unwrap_or_else(|| {
-                                (-&self.beta).cmp(&(&self.alpha * &dy(m)).mul_pow2(1))
-                            })
-                    },
-                    -fb / (2.0 * fa),
-                );
-                ExactQuadratic::One(t)
-            }
-            _ => {
-                let (g0, g1) = guess_roots(fa, fb, fc, disc.approx());
-                let neg = [b.neg(), c.neg()];
-                let root = |upper: bool, guess: f64| {
-                    round_to_f32_at(
-                        |m| {
-                            root_against_expansions(&a, &b, &neg, m, upper).unwrap_or_else(|| {
-                                let neg = [-&self.beta, -&self.gamma];
-                                self.root_against(&neg, &dy(m), upper)
-                            })
-                        },
-                        guess,
-                    )
-                };
-                ExactQuadratic::Two(root(false, g0), root(true, g1))
-            }
-        })
     }
 
     /// [`Quadratic::solve`] on dyadics alone.
@@ -302,21 +229,275 @@ impl Quadratic {
     }
 }
 
-/// [`Quadratic::root_against`] on expansions, `neg` being `[−β, −γ]`.
+/// The dyadic coefficients for the comparisons an expansion cannot hold:
+/// those of a [`Quadratic`] at hand, or formed from normalised expansions
+/// on first use (most quadratics never need them).
+enum Slow<'a> {
+    Have(&'a Quadratic),
+    Lazy(&'a [Expansion; 3], &'a core::cell::OnceCell<Quadratic>),
+}
+
+impl Slow<'_> {
+    fn get(&self) -> &Quadratic {
+        match self {
+            Slow::Have(q) => q,
+            Slow::Lazy(e, q) => q.get_or_init(|| Quadratic::of_normalised(**e)),
+        }
+    }
+}
+
+/// `α`, `β`, `γ` multiplied by −1 where [`Quadratic::new`] would.
+fn normalised([alpha, beta, gamma]: [Expansion; 3]) -> [Expansion; 3] {
+    let flip = alpha.sign() < 0 || (alpha.sign() == 0 && beta.sign() < 0);
+    if flip {
+        [alpha.neg(), beta.neg(), gamma.neg()]
+    } else {
+        [alpha, beta, gamma]
+    }
+}
+
+/// What [`Quadratic::from_expansions`]`(α, β, γ).solve()` gives, without
+/// forming the dyadic coefficients unless a comparison outgrows the
+/// expansions.
+#[cfg(any(feature = "sphere", feature = "quadric"))]
+pub(crate) fn solve_expansions(
+    alpha: Expansion,
+    beta: Expansion,
+    gamma: Expansion,
+) -> ExactQuadratic {
+    let e = normalised([alpha, beta, gamma]);
+    let cell = core::cell::OnceCell::new();
+    let slow = Slow::Lazy(&e, &cell);
+    if let Some(r) = solve_fast(e.map(Some), &slow) {
+        return r;
+    }
+    slow.get().solve_dyadic()
+}
+
+/// [`Quadratic::solve`] on the expansions `fast`, if each is there,
+/// subnormals work, and the discriminant fits.
+fn solve_fast(fast: [Option<Expansion>; 3], slow: &Slow) -> Option<ExactQuadratic> {
+    #[cfg(test)]
+    let fast = fast.map(|e| e.filter(|_| !super::dyadic::tests::BIG_ONLY.with(|b| b.get())));
+    let compressed = |x: Expansion| match x.components().len() {
+        ..=SHORT => x,
+        _ => x.compress(),
+    };
+    let [Some(a), Some(b), Some(c)] = fast.map(|e| e.map(compressed)) else {
+        return None;
+    };
+    if !super::expansion::subnormals_work() {
+        return None;
+    }
+    // Long expansions (dense mantissas) cost quadratically in the exact
+    // products; dyadics hold those better.
+    let short = [a, b, c].iter().all(|x| x.components().len() <= SHORT);
+    solve_on_expansions([a, b, c], short, slow)
+}
+
+/// [`Quadratic::solve`] on expansions: `None` only if the discriminant
+/// outgrows an expansion (or is not told by the filter, unless `short`); a
+/// comparison that does goes to the dyadics. Every sign is first asked of
+/// the `f64` filter ([`Near`]), and formed on the expansions only where
+/// that cannot tell and they are `short`, on the dyadics otherwise.
+fn solve_on_expansions(
+    [a, b, c]: [Expansion; 3],
+    short: bool,
+    slow: &Slow,
+) -> Option<ExactQuadratic> {
+    let exact = |x: Option<Expansion>| x.filter(|_| short);
+    let dy = Dyadic::from_f64;
+    let [na, nb, nc] = [&a, &b, &c].map(Near::of);
+    let (fa, fb, fc) = (na.v, nb.v, nc.v);
+    if a.sign() == 0 {
+        if b.sign() == 0 {
+            return Some(if c.sign() == 0 {
+                ExactQuadratic::All
+            } else {
+                ExactQuadratic::None
+            });
+        }
+        // β > 0 after normalisation: t ≷ m ⇔ −γ ≷ β m, as 0 ≷ βm + γ.
+        let neg_c = c.neg();
+        let t = round_to_f32_at(
+            |m| {
+                let sum = Near::sum([(nb, m), (nc, 1.0)]);
+                sum.map(Ordering::reverse).unwrap_or_else(|| {
+                    exact(b.scale(m))
+                        .and_then(|bm| neg_c.compare(&bm))
+                        .unwrap_or_else(|| {
+                            let q = slow.get();
+                            (-&q.gamma).cmp(&(&q.beta * &dy(m)))
+                        })
+                })
+            },
+            -fc / fb,
+        );
+        return Some(ExactQuadratic::One(t));
+    }
+    // β² − 4αγ: its sign from the filter where that tells, its value
+    // (for the starting guesses) from the filter's f64 then.
+    let (sure, fd) = Near::discriminant(&[na, nb, nc]);
+    let (sign, fd) = match sure {
+        Some(s) => (s, fd),
+        None => {
+            let disc = exact(b.mul(&b))?.sub(&a.mul(&c)?.mul_pow2(2))?;
+            (disc.sign().cmp(&0), disc.approx())
+        }
+    };
+    Some(match sign {
+        Ordering::Less => ExactQuadratic::None,
+        Ordering::Equal => {
+            // The vertex −β/(2α), with α > 0: t ≷ m ⇔ −β ≷ 2α m, as
+            // 0 ≷ 2αm + β.
+            let neg_b = b.neg();
+            let t = round_to_f32_at(
+                |m| {
+                    let sum = Near::sum([(na, 2.0 * m), (nb, 1.0)]);
+                    sum.map(Ordering::reverse).unwrap_or_else(|| {
+                        exact(a.scale(2.0 * m))
+                            .and_then(|am| neg_b.compare(&am))
+                            .unwrap_or_else(|| {
+                                let q = slow.get();
+                                (-&q.beta).cmp(&(&q.alpha * &dy(m)).mul_pow2(1))
+                            })
+                    })
+                },
+                -fb / (2.0 * fa),
+            );
+            ExactQuadratic::One(t)
+        }
+        Ordering::Greater => {
+            let (g0, g1) = guess_roots(fa, fb, fc, fd);
+            let neg = [b.neg(), c.neg()];
+            let near = [na, nb, nc];
+            let root = |upper: bool, guess: f64| {
+                round_to_f32_at(
+                    |m| {
+                        let exp = short.then_some((&a, &b, &neg));
+                        root_against_expansions(exp, &near, m, upper).unwrap_or_else(|| {
+                            let q = slow.get();
+                            let neg = [-&q.beta, -&q.gamma];
+                            q.root_against(&neg, &dy(m), upper)
+                        })
+                    },
+                    guess,
+                )
+            };
+            ExactQuadratic::Two(root(false, g0), root(true, g1))
+        }
+    })
+}
+
+/// `2⁻⁴⁹`: the filter's error bound per unit of the magnitudes summed
+/// ([`Near`]).
+const FILTER: f64 = 1.0 / (1u64 << 49) as f64;
+/// `2⁻⁹⁰⁰`: the filter's allowance for underflow.
+const TINY: f64 = f64::from_bits((1023 - 900) << 52);
+
+/// An expansion seen in `f64`, for the sign filter: `v`, its components
+/// summed (smallest first), and `mag`, their magnitudes summed.
+///
+/// # Why the filter's signs are exact
+///
+/// With `u = 2⁻⁵³`: the components are nonoverlapping and increasing, so
+/// those below `cₖ` sum in magnitude to less than `|cₖ|`, each partial sum
+/// `sₖ` is below `2|cₖ|` (and a little), and summing them smallest first
+/// errs by at most `u·Σ|sₖ| < 2.01u·mag` from the value `x`, however many
+/// components there are (within `3u·mag`, as used below).
+/// A sum `Σ xᵢ·kᵢ` of two or three coefficients times exact `f64`
+/// factors (`1`, `m`, `2m`, `m²` formed by Horner's rule), evaluated in
+/// `f64` with at most four roundings, is then within
+/// `(γ₄ + γ₃)·Σ magᵢ·|kᵢ| < 7.1u·Σ magᵢ·|kᵢ|` of the exact sum, and the
+/// discriminant `β² − 4αγ` (three roundings, and the coefficient errors
+/// multiplied out) within `9.1u·(mag_β² + 4·mag_α·mag_γ)`. [`FILTER`] is
+/// `16u`, over twice either, which also covers the rounding of the bound
+/// itself. A result that underflows is off by at most `2⁻¹⁰⁷⁵`, which the
+/// factors (`|m| ≤ 2¹²⁸`) magnify to below `2⁻⁹⁴⁰`, under [`TINY`]. No
+/// value overflows: magnitudes are below `2⁴⁸⁰` ([`super::expansion::HIGH`])
+/// and `m²` at most `2²⁵⁶`. So an `f64` result beyond its bound has the
+/// exact sign, as long as subnormals work (the solver asks first).
+#[derive(Clone, Copy)]
+struct Near {
+    v: f64,
+    mag: f64,
+}
+
+impl Near {
+    fn of(e: &Expansion) -> Near {
+        Near {
+            v: e.approx(),
+            mag: e.components().iter().map(|x| x.abs()).sum(),
+        }
+    }
+
+    /// The sign of `p(m) = (αm + β)m + γ`, by Horner's rule, if the filter
+    /// tells it.
+    fn horner(&[a, b, c]: &[Near; 3], m: f64) -> Option<Ordering> {
+        let v = (a.v * m + b.v) * m + c.v;
+        let mag = (a.mag * m.abs() + b.mag) * m.abs() + c.mag;
+        sure_sign(v, FILTER * mag + TINY)
+    }
+
+    /// The sign of `β² − 4αγ`, if the filter tells it, and its `f64` value.
+    fn discriminant(&[a, b, c]: &[Near; 3]) -> (Option<Ordering>, f64) {
+        let v = b.v * b.v - 4.0 * a.v * c.v;
+        (
+            sure_sign(v, FILTER * (b.mag * b.mag + 4.0 * a.mag * c.mag) + TINY),
+            v,
+        )
+    }
+
+    /// The sign of `Σ xᵢ·kᵢ`, if the filter tells it.
+    fn sum<const N: usize>(terms: [(Near, f64); N]) -> Option<Ordering> {
+        let v = terms.iter().fold(0.0, |s, (x, k)| s + x.v * k);
+        let mag = terms.iter().fold(0.0, |s, (x, k)| s + x.mag * k.abs());
+        sure_sign(v, FILTER * mag + TINY)
+    }
+}
+
+/// The sign of a value computed as `v` within `err` of it, when
+/// `|v| > err` (never for NaN).
+fn sure_sign(v: f64, err: f64) -> Option<Ordering> {
+    if v > err {
+        Some(Ordering::Greater)
+    } else if v < -err {
+        Some(Ordering::Less)
+    } else {
+        None
+    }
+}
+
+/// [`Quadratic::root_against`] by the filter, `near` being its view of
+/// `[α, β, γ]`, and where it cannot tell on the expansions `exp`,
+/// `(α, β, [−β, −γ])`, if given.
 fn root_against_expansions(
-    a: &Expansion,
-    b: &Expansion,
-    neg: &[Expansion; 2],
+    exp: Option<(&Expansion, &Expansion, &[Expansion; 2])>,
+    near: &[Near; 3],
     m: f64,
     upper: bool,
 ) -> Option<Ordering> {
-    let am = a.scale(m)?;
-    let side = am.mul_pow2(1).compare(&neg[0])?;
+    let [na, nb, _] = *near;
+    // 2αm against −β: the sign of 2αm + β.
+    let side = match Near::sum([(na, 2.0 * m), (nb, 1.0)]) {
+        Some(s) => s,
+        None => {
+            let (a, _, neg) = exp?;
+            a.scale(m)?.mul_pow2(1).compare(&neg[0])?
+        }
+    };
     Some(match (side, upper) {
         (Ordering::Greater, false) => Ordering::Less,
         (Ordering::Less, true) => Ordering::Greater,
         _ => {
-            let p = am.add(b)?.scale(m)?.compare(&neg[1])?;
+            // (αm + β)m against −γ: the sign of p(m).
+            let p = match Near::horner(near, m) {
+                Some(p) => p,
+                None => {
+                    let (a, b, neg) = exp?;
+                    a.scale(m)?.add(b)?.scale(m)?.compare(&neg[1])?
+                }
+            };
             if upper { p.reverse() } else { p }
         }
     })
@@ -418,6 +599,71 @@ mod tests {
         }
         // Both sides of the vertex, each a shortcut for one root.
         assert!(sides[0] > 500 && sides[2] > 500, "{sides:?}");
+    }
+
+    /// The sign filter's signs are the exact ones: `p(m)`, `2αm + β` and
+    /// the discriminant, over random quadratics at every scale and points
+    /// at, beside and between their roots' floats, and at `f64`s next to
+    /// the roots, where `p(m)` is near the bound (a bound 2⁹ times too
+    /// small fails here); it tells most signs, and declines some near the
+    /// roots.
+    #[test]
+    fn the_filter_tells_only_exact_signs() {
+        let mut r = SmallRng::seed_from_u64(13);
+        let (mut told, mut declined) = (0, 0);
+        let mut check = |got: Option<Ordering>, want: i32| match got {
+            Some(g) => {
+                assert_eq!(g, want.cmp(&0));
+                told += 1;
+            }
+            None => declined += 1,
+        };
+        for _ in 0..3_000 {
+            let q = random_quadratic(&mut r);
+            let e = [&q.alpha, &q.beta, &q.gamma].map(Dyadic::expansion);
+            let [Some(a), Some(b), Some(c)] = e else {
+                continue;
+            };
+            let near = [a, b, c].map(|x| Near::of(&x));
+            let disc = big_only(|| q.discriminant().signum());
+            check(Near::discriminant(&near).0, disc);
+            let mut points = vec![0.0, r.random_range(-4.0..4.0f32) as f64];
+            // f64 roots, where |p(m)| is near the filter's bound.
+            if q.alpha.signum() != 0 && disc > 0 {
+                let (g0, g1) = guess_roots(
+                    near[0].v,
+                    near[1].v,
+                    near[2].v,
+                    near[1].v * near[1].v - 4.0 * near[0].v * near[2].v,
+                );
+                for g in [g0, g1] {
+                    points.extend([g, g.next_up(), g.next_down()]);
+                }
+            }
+            for t in q.solve().roots() {
+                let (lo, hi) = (t.next_down() as f64, t.next_up() as f64);
+                points.extend([
+                    t as f64,
+                    lo,
+                    hi,
+                    (lo + t as f64) / 2.0,
+                    (hi + t as f64) / 2.0,
+                ]);
+            }
+            for m in points.into_iter().filter(|m| m.is_finite()) {
+                let dm = Dyadic::from_f64(m);
+                let (p, side) = big_only(|| {
+                    let am = &q.alpha * &dm;
+                    (
+                        (&(&(&am + &q.beta) * &dm) + &q.gamma).signum(),
+                        (&am.mul_pow2(1) + &q.beta).signum(),
+                    )
+                });
+                check(Near::horner(&near, m), p);
+                check(Near::sum([(near[0], 2.0 * m), (near[1], 1.0)]), side);
+            }
+        }
+        assert!(told > 4 * declined && declined > 1_000, "{told} {declined}");
     }
 
     /// Solving on `i128` mantissas gives bit for bit what solving on big

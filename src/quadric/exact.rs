@@ -12,7 +12,10 @@ use super::{Quadric, QuadricHit};
 use crate::Ray;
 use crate::exact::dyadic::{sum, vec3};
 use crate::exact::expansion::{Expansion, subnormals_work};
+use crate::exact::memo::{Memo, remembered};
+use crate::exact::quadratic::solve_expansions;
 use crate::exact::{Dyadic, ExactQuadratic, NonFinite, Quadratic};
+use core::cell::RefCell;
 
 /// The exact quadratic `α t² + β t + γ` of a ray and a quadric.
 ///
@@ -29,14 +32,23 @@ use crate::exact::{Dyadic, ExactQuadratic, NonFinite, Quadratic};
 /// assert_eq!([q.alpha, q.beta, q.gamma].map(|x| x.to_f64()), [1.0, -10.0, 24.0]);
 /// ```
 pub fn quadratic(ray: &Ray, quadric: &Quadric) -> Result<Quadratic, NonFinite> {
+    match expansions(ray, quadric)? {
+        Some([a, b, c]) => Ok(Quadratic::from_expansions(a, b, c)),
+        None => on_dyadics(ray, quadric),
+    }
+}
+
+/// α, β, γ as [`quadratic`] forms them on expansions (not normalised), or
+/// `None` where it forms them on dyadics.
+pub(crate) fn expansions(
+    ray: &Ray,
+    quadric: &Quadric,
+) -> Result<Option<[Expansion; 3]>, NonFinite> {
     let finite = ray.origin.is_finite() && ray.dir.is_finite();
     if !(finite && quadric.coeffs.iter().all(|c| c.is_finite())) {
         return Err(NonFinite);
     }
-    if let Some([a, b, c]) = on_expansions(ray, quadric).filter(|_| subnormals_work()) {
-        return Ok(Quadratic::from_expansions(a, b, c));
-    }
-    on_dyadics(ray, quadric)
+    Ok(on_expansions(ray, quadric).filter(|_| subnormals_work()))
 }
 
 /// α, β, γ on expansions, unless one outgrows its capacity.
@@ -134,7 +146,8 @@ fn on_dyadics(ray: &Ray, quadric: &Quadric) -> Result<Quadratic, NonFinite> {
     Ok(Quadratic::new(sum(&alpha), sum(&beta), sum(&gamma)))
 }
 
-/// The exact answer, or [`NonFinite`] when an input is NaN or infinite.
+/// The exact answer, or [`NonFinite`] when an input is NaN or infinite
+/// (the last few kept per thread, by the inputs' bits).
 ///
 /// ```
 /// use rayoracle::{Ray, quadric::{Quadric, QuadricHit, exact::intersect}};
@@ -145,7 +158,22 @@ fn on_dyadics(ray: &Ray, quadric: &Quadric) -> Result<Quadratic, NonFinite> {
 /// assert_eq!(intersect(&r, &p), Ok(QuadricHit::One(2.0)));
 /// ```
 pub fn intersect(ray: &Ray, quadric: &Quadric) -> Result<QuadricHit, NonFinite> {
-    Ok(classify(&quadratic(ray, quadric)?))
+    type Key = ([u32; 6], [u32; 10]);
+    thread_local! {
+        static LAST: RefCell<Memo<Key, Result<QuadricHit, NonFinite>>> =
+            const { RefCell::new(Memo::new()) };
+    }
+    let (o, d) = (ray.origin, ray.dir);
+    let key = (
+        [o.x, o.y, o.z, d.x, d.y, d.z].map(f32::to_bits),
+        quadric.coeffs.map(f32::to_bits),
+    );
+    remembered(&LAST, key, || {
+        Ok(match expansions(ray, quadric)? {
+            Some([a, b, c]) => hit(solve_expansions(a, b, c)),
+            None => classify(&on_dyadics(ray, quadric)?),
+        })
+    })
 }
 
 /// The quadric result of an exact [`quadratic`] (so a caller that needs
@@ -159,7 +187,12 @@ pub fn intersect(ray: &Ray, quadric: &Quadric) -> Result<QuadricHit, NonFinite> 
 /// assert_eq!(exact::classify(&q), QuadricHit::Two(4.0, 6.0));
 /// ```
 pub fn classify(q: &Quadratic) -> QuadricHit {
-    match q.solve() {
+    hit(q.solve())
+}
+
+/// The quadric result of a solved quadratic.
+fn hit(q: ExactQuadratic) -> QuadricHit {
+    match q {
         ExactQuadratic::None => QuadricHit::None,
         ExactQuadratic::One(t) => QuadricHit::One(t),
         ExactQuadratic::Two(t0, t1) => QuadricHit::Two(t0, t1),

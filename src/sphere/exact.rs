@@ -13,7 +13,10 @@ use super::{Sphere, SphereHit};
 use crate::Ray;
 use crate::exact::dyadic::{dot, sub3};
 use crate::exact::expansion::{Expansion, subnormals_work};
+use crate::exact::memo::{Memo, remembered};
+use crate::exact::quadratic::solve_expansions;
 use crate::exact::{Dyadic, ExactQuadratic, NonFinite, Quadratic};
+use core::cell::RefCell;
 
 /// The exact quadratic `a t² + 2b t + c` of a ray and a sphere.
 ///
@@ -24,15 +27,21 @@ use crate::exact::{Dyadic, ExactQuadratic, NonFinite, Quadratic};
 /// assert!(q.discriminant().is_zero()); // grazing the top of the sphere
 /// ```
 pub fn quadratic(ray: &Ray, sphere: &Sphere) -> Result<Quadratic, NonFinite> {
+    Ok(match expansions(ray, sphere)? {
+        Some([a, b2, cc]) => Quadratic::from_expansions(a, b2, cc),
+        None => on_dyadics(ray, sphere),
+    })
+}
+
+/// `a`, `2b`, `c` as [`quadratic`] forms them on expansions (not
+/// normalised), or `None` where it forms them on dyadics.
+pub(crate) fn expansions(ray: &Ray, sphere: &Sphere) -> Result<Option<[Expansion; 3]>, NonFinite> {
     let (o, d, c) = (ray.origin, ray.dir, sphere.center);
     let r = sphere.radius;
     if !(o.is_finite() && d.is_finite() && c.is_finite() && r.is_finite()) {
         return Err(NonFinite);
     }
-    match on_expansions(ray, sphere).filter(|_| subnormals_work()) {
-        Some([a, b2, cc]) => Ok(Quadratic::from_expansions(a, b2, cc)),
-        None => Ok(on_dyadics(ray, sphere)),
-    }
+    Ok(on_expansions(ray, sphere).filter(|_| subnormals_work()))
 }
 
 /// `a`, `2b`, `c` on expansions, unless one outgrows its capacity.
@@ -70,7 +79,8 @@ fn on_dyadics(ray: &Ray, sphere: &Sphere) -> Quadratic {
     Quadratic::new(a, b2, cc)
 }
 
-/// The exact answer, or [`NonFinite`] when an input is NaN or infinite.
+/// The exact answer, or [`NonFinite`] when an input is NaN or infinite
+/// (the last few kept per thread, by the inputs' bits).
 ///
 /// ```
 /// use rayoracle::{Ray, sphere::{Sphere, SphereHit, exact::intersect}};
@@ -80,7 +90,19 @@ fn on_dyadics(ray: &Ray, sphere: &Sphere) -> Quadratic {
 /// assert_eq!(intersect(&r, &s), Ok(SphereHit::Tangent(5.0)));
 /// ```
 pub fn intersect(ray: &Ray, sphere: &Sphere) -> Result<SphereHit, NonFinite> {
-    Ok(classify(&quadratic(ray, sphere)?))
+    type Key = [u32; 10];
+    thread_local! {
+        static LAST: RefCell<Memo<Key, Result<SphereHit, NonFinite>>> =
+            const { RefCell::new(Memo::new()) };
+    }
+    let (o, d, c) = (ray.origin, ray.dir, sphere.center);
+    let key = [o.x, o.y, o.z, d.x, d.y, d.z, c.x, c.y, c.z, sphere.radius].map(f32::to_bits);
+    remembered(&LAST, key, || {
+        Ok(match expansions(ray, sphere)? {
+            Some([a, b2, cc]) => hit(solve_expansions(a, b2, cc)),
+            None => classify(&on_dyadics(ray, sphere)),
+        })
+    })
 }
 
 /// The sphere result of an exact [`quadratic`] (so a caller that needs both
@@ -93,7 +115,12 @@ pub fn intersect(ray: &Ray, sphere: &Sphere) -> Result<SphereHit, NonFinite> {
 /// assert_eq!(exact::classify(&q), SphereHit::Two(4.0, 6.0));
 /// ```
 pub fn classify(q: &Quadratic) -> SphereHit {
-    match q.solve() {
+    hit(q.solve())
+}
+
+/// The sphere result of a solved quadratic.
+pub(crate) fn hit(q: ExactQuadratic) -> SphereHit {
+    match q {
         // α = 0 only for d = 0, which is not a line.
         ExactQuadratic::None | ExactQuadratic::All => SphereHit::None,
         ExactQuadratic::One(t) => SphereHit::Tangent(t),
