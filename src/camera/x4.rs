@@ -3,6 +3,7 @@
 //! oracle (correct rounding is unique, so the two agree by construction).
 
 use super::{Camera, filter};
+use crate::num::Real;
 use crate::num::certify::{needs_probe, subnormals_work};
 use crate::num::real::{F64x4, Real4};
 use crate::ray4::Ray4;
@@ -28,66 +29,49 @@ impl Camera {
     /// ```
     #[inline]
     pub fn ray4(&self, pixels: [[u32; 2]; 4]) -> Ray4 {
-        // Baseline lanes: the filter is so short that an AVX2 function
-        // entered through run-time dispatch costs more than it saves
-        // (kernels bench, camera/x4/packed: 129 Mrays/s on SSE2 against
-        // 104 through AVX2 dispatch).
-        self.ray4_in::<F64x4>(pixels)
-    }
-
-    /// [`Camera::ray4`] over any four-lane [`Real4`]: the same bits on
-    /// every one, since each lane is correctly rounded.
-    #[inline(always)]
-    fn ray4_in<L: Real4>(&self, pixels: [[u32; 2]; 4]) -> Ray4 {
         let [w, h] = self.params.res;
-        let nx = L::from_array(pixels.map(|p| filter::numerator(p[0], w)));
-        let ny = L::from_array(pixels.map(|p| filter::numerator(p[1], h)));
+        let nx = F64x4::from(pixels.map(|p| filter::numerator(p[0], w)));
+        let ny = F64x4::from(pixels.map(|p| filter::numerator(p[1], h)));
         let d = self.params.dir.to_array();
-        let tiny = L::splat(f32::MIN_POSITIVE as f64);
-        let mut normal = L::splat(1.0).gt(tiny);
-        let mut dir = [f32x4::ZERO; 3];
-        let mut ok = [normal; 3];
+        let mut out = [[0.0f32; 4]; 3];
+        let mut undecided = [[false; 3]; 4];
+        let tiny = <F64x4 as Real>::splat(f32::MIN_POSITIVE as f64);
+        let mut normal = <F64x4 as Real>::splat(1.0).gt(tiny);
         for i in 0..3 {
-            let (r, k) = filter::component(
-                L::splat(d[i] as f64),
-                L::splat(self.unit[0][i]),
-                L::splat(self.unit[1][i]),
+            let s = |x: f64| <F64x4 as crate::num::Real>::splat(x);
+            let (r, ok) = filter::component(
+                s(d[i] as f64),
+                s(self.unit[0][i]),
+                s(self.unit[1][i]),
                 nx,
                 ny,
                 1.0,
             );
-            (dir[i], ok[i]) = (r.narrow(), k);
+            out[i] = r.to_f32();
             normal = normal & r.abs().gt(tiny);
+            for (lane, ok) in ok.lanes().into_iter().enumerate() {
+                undecided[lane][i] = !ok;
+            }
         }
         // Per packet, as [`filter::flushed`] per pixel: with subnormals
         // flushed, every lane goes to the oracle if any component is below
         // the least normal f32 or `dir` has a subnormal component (rare).
-        let flushed = (!L::all(normal) || needs_probe(&d, &[])) && flushing();
-        if flushed || !L::all(ok[0] & ok[1] & ok[2]) {
-            let ok = ok.map(|m| L::mask_i32(m).to_array().map(|b| b != 0));
-            self.settle4(pixels, &mut dir, ok, flushed);
+        if (!F64x4::all(normal) || needs_probe(&d, &[])) && flushing() {
+            undecided = [[true; 3]; 4];
         }
-        Ray4 {
-            origin: self.params.position.to_array().map(f32x4::splat),
-            dir,
-        }
-    }
-
-    /// The lanes [`Camera::ray4`] leaves undecided (all of them where
-    /// `all`), from the oracle.
-    #[cold]
-    #[inline(never)]
-    fn settle4(&self, pixels: [[u32; 2]; 4], dir: &mut [f32x4; 3], ok: [[bool; 4]; 3], all: bool) {
-        let mut out = dir.map(|v| v.to_array());
         for (lane, [px, py]) in pixels.into_iter().enumerate() {
-            let undecided = [0, 1, 2].map(|i| all || !ok[i][lane]);
-            if undecided.contains(&true) {
-                let mut v = [0, 1, 2].map(|i| out[i][lane]);
-                self.escalate(&mut v, undecided, px, py);
-                (0..3).for_each(|i| out[i][lane] = v[i]);
+            if undecided[lane].contains(&true) {
+                let mut dir = [0, 1, 2].map(|i| out[i][lane]);
+                self.escalate(&mut dir, undecided[lane], px, py);
+                (0..3).for_each(|i| out[i][lane] = dir[i]);
             }
         }
-        *dir = out.map(f32x4::from);
+        let splat = |v: glam::Vec3| v.to_array().map(f32x4::splat);
+        let dir = out.map(f32x4::from);
+        Ray4 {
+            origin: splat(self.params.position),
+            dir,
+        }
     }
 
     /// Four consecutive pixels of row `py`: `(px, py) … (px + 3, py)`.

@@ -182,10 +182,6 @@ impl Real4 for Avx4 {
         Avx4(avx!(_mm256_cvtps_pd(cast::<f32x4, __m128>(x))))
     }
     #[inline(always)]
-    fn from_array(x: [f64; 4]) -> Avx4 {
-        Avx4(avx!(_mm256_set_pd(x[3], x[2], x[1], x[0])))
-    }
-    #[inline(always)]
     fn narrow(self) -> f32x4 {
         cast::<__m128, f32x4>(avx!(_mm256_cvtpd_ps(self.0)))
     }
@@ -247,10 +243,6 @@ mod tests {
                     (va.sqrt(), wa.sqrt()),
                     (va.abs(), wa.abs()),
                     (va.copysign(vb), wa.copysign(wb)),
-                    (
-                        Avx4::from_array([a, b, -a, b]),
-                        <F64x4 as Real4>::from_array([a, b, -a, b]),
-                    ),
                     (
                         Avx4::select(va.gt(vb), va, vb),
                         F64x4::select(wa.gt(wb), wa, wb),

@@ -165,8 +165,6 @@ impl F64x4 {
 pub trait Real4: Real {
     /// Widens four `f32` lanes, exactly.
     fn widen(x: f32x4) -> Self;
-    /// Four `f64` lanes.
-    fn from_array(x: [f64; 4]) -> Self;
     /// Each lane rounded to `f32` (to nearest, ties to even, as `as f32`).
     fn narrow(self) -> f32x4;
     /// The mask as `i32` lanes: −1 where set, 0 where clear.
@@ -297,10 +295,6 @@ mod sse2 {
             F64x4(cast([f(v), f(hi)]))
         }
         #[inline(always)]
-        fn from_array(x: [f64; 4]) -> F64x4 {
-            F64x4::from(x)
-        }
-        #[inline(always)]
         fn narrow(self) -> f32x4 {
             let [lo, hi]: [m128d; 2] = cast(self.0);
             let f = safe_arch::convert_to_m128_from_m128d;
@@ -338,10 +332,6 @@ mod portable {
         #[inline(always)]
         fn widen(x: f32x4) -> F64x4 {
             F64x4::from_f32(x.to_array())
-        }
-        #[inline(always)]
-        fn from_array(x: [f64; 4]) -> F64x4 {
-            F64x4::from(x)
         }
         #[inline(always)]
         fn narrow(self) -> f32x4 {
