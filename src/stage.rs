@@ -8,9 +8,10 @@
 //! lanes it leaves: `plane::stages::filter_direct`,
 //! `sphere::stages::filter_sorted`); the filter's
 //! arithmetic checked to be exact, operation by operation (which settles
-//! the exact zeros of small-integer and dyadic data); for the sphere, a
-//! tight stage whose discriminant's error grows with `R·|f|` rather than
-//! `|f|²`; double-word arithmetic, exact where no low word
+//! the exact zeros of small-integer and dyadic data); a tight stage in a
+//! better-conditioned form (the sphere's discriminant, whose error grows
+//! with `R·|f|` rather than `|f|²`; the plane's `d·n`, summed exactly);
+//! double-word arithmetic, exact where no low word
 //! rounded (which settles most other exact zeros); then exact arithmetic
 //! on integers. The answer is the exact class and correctly
 //! rounded roots whichever stage gives it; the stage only says how much
@@ -47,7 +48,8 @@ pub enum Stage {
     /// ([`crate::num::tracked`]).
     Tracked,
     /// f64 arithmetic in a better-conditioned form with a tighter bound
-    /// (the sphere's discriminant after Ray Tracing Gems ch. 7); scalar.
+    /// (the sphere's discriminant after Ray Tracing Gems ch. 7, the
+    /// plane's `d·n` as an exact sum); scalar.
     Tight,
     /// Double-word arithmetic, exact where no low word rounded, with a
     /// bound otherwise ([`crate::num::dd`]).

@@ -174,7 +174,7 @@ fn every_later_stage_alone_matches_the_oracle() {
                     let (o, d, a, n) = (w(r.origin), w(r.dir), w(p.point), w(p.normal));
                     let ck = |h: Option<_>| h.map(|h| status(check::check_plane(r, p, h)));
                     vec![
-                        (Tracked, ck(plane::stages::tracked(o, d, a, n))),
+                        (Tight, ck(plane::stages::tight(o, d, a, n, 1.0))),
                         (DoubleWord, ck(plane::stages::double_word(o, d, a, n, 1.0))),
                     ]
                 }

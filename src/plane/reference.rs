@@ -70,32 +70,35 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
     } else if f.in_plane {
         (PlaneHit::InPlane, Stage::Filter)
     } else {
-        escalate_shrunk(ray, plane, shrink)
+        // The inputs were probed above.
+        escalate_shrunk(ray, plane, shrink, false)
     }
 }
 
-/// The stages after the filter: f64 arithmetic that proves itself exact
-/// ([`stages::tracked`]), double-word arithmetic
-/// ([`stages::double_word`]), then the exact oracle. The later stages,
+/// The stages after the filter: `d·n` summed exactly
+/// ([`stages::tight`]), double-word arithmetic on exact products, which
+/// settles the exact zeros ([`stages::double_word`]), then the exact
+/// oracle. The later stages,
 /// too, assume subnormals work where an input or a result is subnormal
 /// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
 /// its undecided lanes here, and all of them when FTZ or DAZ is on.
 #[cold]
 #[inline(never)]
 pub(crate) fn escalate(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
-    escalate_shrunk(ray, plane, 1.0)
+    escalate_shrunk(ray, plane, 1.0, true)
 }
 
-/// [`escalate`] with the bounds of its stages multiplied by `shrink`.
+/// [`escalate`] with the bounds of its stages multiplied by `shrink`, and
+/// the inputs probed for subnormals only if `probe`.
 #[cold]
 #[inline(never)]
-fn escalate_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
-    if needs_probe(&inputs(ray, plane), &[]) && !subnormals_work() {
+fn escalate_shrunk(ray: &Ray, plane: &Plane, shrink: f64, probe: bool) -> (PlaneHit, Stage) {
+    if probe && needs_probe(&inputs(ray, plane), &[]) && !subnormals_work() {
         return (exact_stage(ray, plane), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
-    let staged = (stages::tracked(o, d, a, n).map(|h| (h, Stage::Tracked)))
+    let staged = (stages::tight(o, d, a, n, shrink).map(|h| (h, Stage::Tight)))
         .or_else(|| stages::double_word(o, d, a, n, shrink).map(|h| (h, Stage::DoubleWord)));
     match staged {
         Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {

@@ -16,7 +16,7 @@
 //!   `x = E_den/|d̂en|`. The root is certified only where `x < 1/4`, with
 //!   `1/(1 − x)` bounded by `1 + 2x`: `e = (x(1 + 2x) + 6u)|t̂| + (1 +
 //!   2x)E_num/|d̂en|`, split into its relative and absolute parts for
-//!   [`certify`], and every part widened by
+//!   [`certify`](crate::num::certify::certify), and every part widened by
 //!   `1 + 2⁻³⁰` for the roundings of its own evaluation.
 //!
 //! The filter uses `E_num = 8u m_num` and `E_den = 4u m_den`, twice the
@@ -29,8 +29,8 @@
 //! term by term, goes to the next stage.
 
 use super::PlaneHit;
-use crate::num::certify::{SLACK, U, certify, div, quotient_bound};
-use crate::num::dd::{Acc, quotient, two_sum};
+use crate::num::certify::{SLACK, U, quotient_bound};
+use crate::num::dd::{Acc, Approx, quotient, two_sum};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
 
@@ -38,7 +38,7 @@ use crate::num::tracked::Tracked;
 #[derive(Clone, Copy, Debug)]
 pub struct Filtered<L: Real> {
     /// Certified: one hit (`d·n ≠ 0`); `t` still needs
-    /// [`certify`].
+    /// [`certify`](crate::num::certify::certify).
     pub hit: L::Mask,
     /// Certified: parallel and off the plane.
     pub parallel: L::Mask,
@@ -165,54 +165,95 @@ fn sums<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) -> Sum
     }
 }
 
-/// The second stage: the filter's arithmetic tracked for exactness
-/// ([`Tracked`]). Where no operation rounded, `num` and `den` are exact, so
-/// the class follows from their signs, and the root `num/den` rounds once,
-/// within `u|t|` (certified with `2u`). `None` where an operation rounded
-/// or the root sits next to an f32 rounding boundary.
+/// The tight stage: the filter's `num` and bound `E_num`, over `den`
+/// summed exactly. The products `pᵢ = dᵢnᵢ` of f32 values are exact in
+/// f64, and two TwoSums and a third on their errors write `den = Σpᵢ` as
+/// `h + l + r` exactly:
+///
+/// * `(s₁, e₁) = TwoSum(p₀, p₁)`, `(s₂, e₂) = TwoSum(s₁, p₂)`, so `den =
+///   s₂ + e₁ + e₂`;
+/// * `(l, r) = TwoSum(e₁, e₂)` and `(h, l') = TwoSum(s₂, l)`, so `den = h +
+///   l' + r`, and `h` is within `E_den = |l'| + |r|` of it.
+///
+/// A line near parallel to the plane is where the filter's `E_den = 4u
+/// m_den` is too wide for the quotient; here `E_den` is of the order of
+/// `u|den|` however much `Σpᵢ` cancels. `h = 0` with `r = 0` is an exact
+/// zero (where `h` is 0, `s₂ = −l` exactly and `l' = 0`), so the line is
+/// parallel, and off the plane if `|n̂um| > E_num`; in the plane if
+/// `num`, computed again with every operation checked to be exact
+/// ([`Tracked`]), is 0 (the in-plane lines of small-integer and dyadic
+/// data), and off it if that exact `num` is not. A hit, where `|h| >
+/// 2E_den`, has its root `n̂um/h` certified by [`quotient`] with the
+/// filter's `E_num = 8u m_num` and this `E_den`. Every bound is widened by
+/// `1 + 2⁻³⁰` and multiplied by `shrink`. `None` where the class or the
+/// root is undecided: a root that cancels in `num`, a line that may lie in
+/// the plane.
 ///
 /// ```
-/// use rayoracle::plane::{PlaneHit, stages::tracked};
-/// // d·n = 1 − 1 = 0 term by term, and (a − o)·n = 0: in the plane.
-/// let h = tracked([0.0, 0.0, 1.0], [1.0, 1.0, 0.0], [0.0; 3], [1.0, -1.0, 0.0]);
+/// use rayoracle::plane::{PlaneHit, stages::{filter, tight}};
+/// // d·n = (1 + 2⁻²³)(1 − 2⁻²³) − 1 = −2⁻⁴⁶ cancels 47 bits; the root is 2⁴⁶.
+/// let e = 2f64.powi(-23);
+/// let (o, d, a, n) = ([0.0; 3], [1.0 + e, -1.0, 0.0], [1.0, 0.0, 0.0], [1.0 - e, 1.0, 0.0]);
+/// assert_eq!(tight(o, d, a, n, 1.0), Some(PlaneHit::Hit(-(2f32.powi(46) - 2f32.powi(23)))));
+/// // Parallel, 1 off the plane.
+/// let h = tight([0.0; 3], [1.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, -1.0, 1.0], 1.0);
+/// assert_eq!(h, Some(PlaneHit::Parallel));
+/// // In the plane: d·n = 1 − 1 and (a − o)·n = 3 − 3.
+/// let h = tight([0.0, 0.0, 3.0], [1.0, 1.0, 0.0], [3.0, 0.0, 0.0], [1.0, -1.0, 1.0], 1.0);
 /// assert_eq!(h, Some(PlaneHit::InPlane));
-/// // a − o = 1 − 2⁻⁶⁰ rounds: not for this stage.
-/// assert_eq!(tracked([2f64.powi(-60), 0.0, 0.0], [1.0; 3], [1.0, 0.0, 0.0], [1.0; 3]), None);
 /// ```
-pub fn tracked(o: [f64; 3], d: [f64; 3], a: [f64; 3], n: [f64; 3]) -> Option<PlaneHit> {
-    let mut x = Tracked::new();
-    let w = [x.sub(a[0], o[0]), x.sub(a[1], o[1]), x.sub(a[2], o[2])];
-    let num = x.dot(w, n);
-    let den = x.dot(d, n);
-    if !x.exact() {
-        return None;
-    }
-    if den == 0.0 {
-        return Some(if num == 0.0 {
+pub fn tight(o: [f64; 3], d: [f64; 3], a: [f64; 3], n: [f64; 3], shrink: f64) -> Option<PlaneHit> {
+    let (s1, e1) = two_sum(d[0] * n[0], d[1] * n[1]);
+    let (s2, e2) = two_sum(s1, d[2] * n[2]);
+    let (l, r) = two_sum(e1, e2);
+    let (h, l2) = two_sum(s2, l);
+    let e_den = (l2.abs() + r.abs()) * SLACK;
+    let wn = [0, 1, 2].map(|i| (a[i] - o[i]) * n[i]);
+    let num = wn[0] + wn[1] + wn[2];
+    let e_num = 8.0 * U * (wn[0].abs() + wn[1].abs() + wn[2].abs()) * SLACK;
+    if h == 0.0 && r == 0.0 {
+        if num.abs() > e_num * shrink {
+            return Some(PlaneHit::Parallel);
+        }
+        // In the plane or just off it: `num` again, proving itself exact.
+        let mut x = Tracked::new();
+        let w = [0, 1, 2].map(|i| x.sub(a[i], o[i]));
+        let num = x.dot(w, n);
+        return x.exact().then_some(if num == 0.0 {
             PlaneHit::InPlane
         } else {
             PlaneHit::Parallel
         });
     }
-    let t = div(num, den);
-    certify(t, 2.0 * U, 0.0).then_some(PlaneHit::Hit(t as f32))
+    if h.abs() <= 2.0 * e_den * shrink {
+        return None;
+    }
+    let x = |v: f64, e: f64| Approx { v, e };
+    quotient(x(num, e_num), x(h, e_den), shrink).map(PlaneHit::Hit)
 }
 
-/// The double-word stage ([`crate::num::dd`]): `a − o` split exactly into
-/// two words by TwoSum, then `num = Σ(aᵢ − oᵢ)nᵢ` and `den = Σdᵢnᵢ` as
-/// sums of exact products (multiples of `2⁻²⁹⁸`, so TwoProduct is exact).
-/// Where no low word rounded, both are exact, and so are their signs and
-/// zeros; otherwise their bounds decide or nothing does. The root
-/// `num/den` is certified from the leading words with `|lo| + err` as
-/// their bounds ([`quotient`]). Every bound is multiplied by `shrink`.
+/// The double-word stage ([`crate::num::dd`]): `num = Σaᵢnᵢ − Σoᵢnᵢ` and
+/// `den = Σdᵢnᵢ` as sums of products of two f32 values, each exact in f64
+/// and a multiple of `2⁻²⁹⁸` (so no TwoProduct is needed), accumulated in
+/// double words ([`Acc`]). Where no low word rounded, both sums are exact,
+/// and so are their signs and zeros: this settles the in-plane and parallel
+/// lines whatever the data, small integers or not. Otherwise their bounds
+/// decide or nothing does. Splitting `(a − o)·n` into `a·n − o·n` costs
+/// nothing in accuracy here: the bound of a double word is of the order of
+/// `u²` times the magnitudes, so a cancellation of up to about 2⁵⁰ still
+/// leaves the root a relative error far below `u`. The root `num/den` is
+/// certified from the leading words with `|lo| + err` as their bounds
+/// ([`quotient`]). Every bound is multiplied by `shrink`.
 ///
 /// ```
-/// use rayoracle::plane::{PlaneHit, stages::{double_word, tracked}};
+/// use rayoracle::plane::{PlaneHit, stages::double_word};
 /// // d·n = 0.1f32·0.3f32 − 0.3f32·0.1f32 = 0 exactly; a − o rounds in f64.
 /// let (x, y) = (0.1f32 as f64, 0.3f32 as f64);
 /// let (o, a) = ([1e-30f32 as f64, 0.0, 0.0], [1e30f32 as f64, 0.0, 0.0]);
-/// assert_eq!(tracked(o, [x, y, 0.0], a, [y, -x, 0.0]), None);
 /// assert_eq!(double_word(o, [x, y, 0.0], a, [y, -x, 0.0], 1.0), Some(PlaneHit::Parallel));
+/// // d·n = 1 − 1 = 0 term by term, and (a − o)·n = 0: in the plane.
+/// let h = double_word([0.0, 0.0, 1.0], [1.0, 1.0, 0.0], [0.0; 3], [1.0, -1.0, 0.0], 1.0);
+/// assert_eq!(h, Some(PlaneHit::InPlane));
 /// ```
 pub fn double_word(
     o: [f64; 3],
@@ -223,9 +264,8 @@ pub fn double_word(
 ) -> Option<PlaneHit> {
     let (mut num, mut den) = (Acc::new(), Acc::new());
     for i in 0..3 {
-        let (wh, wl) = two_sum(a[i], -o[i]);
-        num.add_prod(wh, n[i]);
-        num.add_prod(wl, n[i]);
+        num.add(a[i] * n[i]);
+        num.add(-(o[i] * n[i]));
         den.add(d[i] * n[i]);
     }
     let (num, den) = (num.finish(shrink), den.finish(shrink));
