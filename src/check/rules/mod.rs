@@ -544,6 +544,7 @@ impl Exact {
 }
 
 /// Whether every input is an integer of magnitude at most 16.
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn small_integers(inputs: &[&[f32]]) -> bool {
     inputs
         .iter()

@@ -206,6 +206,7 @@ impl Declared {
     /// ```
     pub fn prepare(&self, case: Case) -> Result<Case, &'static str> {
         let case = if self.unit_dirs_only {
+            #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
             let n = |r: Ray| Ray::new(r.origin, normalised(r.dir).unwrap_or(r.dir));
             match case {
                 #[cfg(feature = "plane")]
