@@ -200,10 +200,13 @@ fn packets_in<L: Real4>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
 }
 
 /// What the lanes decide, before any conversion: the certified two-root
-/// lanes, the lanes done, and the sorted roots (NaN where none).
+/// lanes, the lanes done, the lanes whose class is two but whose roots are
+/// not certified yet (the only ones the second pass can decide), and the
+/// sorted roots (NaN where none).
 struct Decided<L: Real> {
     two: L::Mask,
     done: L::Mask,
+    open: L::Mask,
     lo: L,
     hi: L,
 }
@@ -215,12 +218,14 @@ impl<L: Real> Decided<Pair<L>> {
             Decided {
                 two: self.two.0,
                 done: self.done.0,
+                open: self.open.0,
                 lo: self.lo.0,
                 hi: self.hi.0,
             },
             Decided {
                 two: self.two.1,
                 done: self.done.1,
+                open: self.open.1,
                 lo: self.lo.1,
                 hi: self.hi.1,
             },
@@ -238,6 +243,7 @@ fn decide_sorted<L: Real>(f: stages::Sorted<L>) -> Decided<L> {
     Decided {
         two,
         done: f.none | two,
+        open: f.two & !two,
         lo: L::select(two, f.lo, nan),
         hi: L::select(two, f.hi, nan),
     }
@@ -256,6 +262,7 @@ fn decide_quotients<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L
     Decided {
         two,
         done: f.none | two,
+        open: f.two & !two,
         lo: L::select(two, L::select(swap, f.t1, f.t0), nan),
         hi: L::select(two, L::select(swap, f.t0, f.t1), nan),
     }
@@ -263,7 +270,8 @@ fn decide_quotients<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L
 
 /// The results of one packet; `env` says whether the floating-point
 /// environment keeps subnormals (read only where every lane is done).
-/// Lanes the first pass leaves go to the second, then to the scalar
+/// Lanes the first pass leaves with the class two go to the second; what
+/// is left (an undecided class, an undecided root) goes to the scalar
 /// stages.
 #[inline(always)]
 fn finish<L: Real4>(
@@ -272,7 +280,7 @@ fn finish<L: Real4>(
     ray: &Ray4,
     s: &Sphere4,
 ) -> SphereHit4 {
-    let x = if L::all(x.done) {
+    let x = if L::all(!x.open) {
         x
     } else {
         let (o, d, c, r) = widened::<L>(ray, s);
@@ -280,6 +288,7 @@ fn finish<L: Real4>(
         Decided {
             two: x.two | (y.two & !x.done),
             done: x.done | y.done,
+            open: y.open,
             lo: L::select(x.done, x.lo, y.lo),
             hi: L::select(x.done, x.hi, y.hi),
         }
