@@ -134,15 +134,27 @@ fn later(
     k: &stages::Classes<f64>,
     shrink: f64,
 ) -> (SphereHit, Stage) {
-    // Cheapest and likeliest first: a cancelling c where the class is
+    // Cheapest and likeliest first: exact data on a narrow grid where Δ̂ =
+    // 0 (as at an exact tangent; elsewhere the grid is rarely narrow
+    // enough to pay for its test), a cancelling c where the class is
     // certified, exact data, then far spheres.
+    let (o32, d32, c32) = (
+        ray.origin.to_array(),
+        ray.dir.to_array(),
+        sphere.center.to_array(),
+    );
+    let grid = || stages::grid_from(k, o32, d32, c32, sphere.radius);
     let cancels = stages::c_cancels(k);
     let comp = || stages::compensated_from(k, o, c, r, shrink).map(|h| (h, Stage::Tight));
-    let staged = (if cancels { comp() } else { None })
-        .or_else(|| stages::tracked(o, d, c, r).map(|h| (h, Stage::Tracked)))
-        .or_else(|| stages::tight(o, d, c, r, shrink).map(|h| (h, Stage::Tight)))
-        .or_else(|| if cancels || !k.two { None } else { comp() })
-        .or_else(|| stages::double_word(o, d, c, r, shrink).map(|h| (h, Stage::DoubleWord)));
+    let staged = ((k.disc == 0.0)
+        .then(grid)
+        .flatten()
+        .map(|h| (h, Stage::Tracked)))
+    .or_else(|| if cancels { comp() } else { None })
+    .or_else(|| stages::tracked(o, d, c, r).map(|h| (h, Stage::Tracked)))
+    .or_else(|| stages::tight(o, d, c, r, shrink).map(|h| (h, Stage::Tight)))
+    .or_else(|| if cancels || !k.two { None } else { comp() })
+    .or_else(|| stages::double_word(o, d, c, r, shrink).map(|h| (h, Stage::DoubleWord)));
     match staged {
         Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
             (exact_stage(ray, sphere), Stage::Exact)

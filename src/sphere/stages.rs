@@ -140,7 +140,8 @@ pub(crate) struct Classes<L: Real> {
     mb: L,
     mc: L,
     cq: L,
-    disc: L,
+    /// `Δ̂`.
+    pub(crate) disc: L,
     ed: L,
     /// Certified: no root.
     pub(crate) none: L::Mask,
@@ -552,13 +553,106 @@ pub(crate) fn compensated_from(
     Some(SphereHit::Two(t0, t1))
 }
 
+/// The tracked stage's answer without its checks, where the data alone
+/// prove the filter's f64 arithmetic exact: small integers and dyadics of
+/// a narrow range, as exact tangents in the wild are.
+///
+/// # The proof
+///
+/// With `Eₚ` a bound on the span of the position data (`o`, `C`, `R`) and
+/// `E_d` one on that of `d` ([`span_bound`]), every position is an integer multiple of some `2ᴸᵖ` below
+/// `2ᴴᵖ` (`Hₚ − Lₚ = Eₚ`), every `dᵢ` one of `2ᴸᵈ` below `2ᴴᵈ`. An f64
+/// operation whose exact result is a multiple of `2ᵏ` below `2ᵏ⁺⁵³` in
+/// magnitude is exact. Each value of the filter ([`filter`]), and each partial sum, is
+/// on the grid of its products and below the sum of their magnitudes:
+///
+/// * `fᵢ`: grid `2ᴸᵖ`, below `2ᴴᵖ⁺¹`;
+/// * `a`: grid `2²ᴸᵈ`, below `3·2²ᴴᵈ`; `b`: grid `2ᴸᵖ⁺ᴸᵈ`, below
+///   `3·2ᴴᵖ⁺ᴴᵈ⁺¹`;
+/// * `f·f`: grid `2²ᴸᵖ`, below `3·2²ᴴᵖ⁺²`; `R²` below `2²ᴴᵖ`; so `c` is
+///   below `2²ᴴᵖ⁺⁴`;
+/// * `b²` and `ac` below `2²ᴴᵖ⁺²ᴴᵈ⁺⁶`, and `Δ` below `2²ᴴᵖ⁺²ᴴᵈ⁺⁷`, all
+///   on the grid `2²ᴸᵖ⁺²ᴸᵈ`.
+///
+/// The widest ratio is `Δ`'s, `2^(2(Eₚ + E_d) + 7)`, so `Eₚ + E_d ≤ 23`
+/// makes every operation exact, and the bounds the stage asks it of carry
+/// a bit of slack each. Nonzero
+/// values are at least `2⁻⁵⁹⁶`, so none is subnormal. Then, as in
+/// [`tracked`], the roots follow as in `exact_roots`: the class from the signs, a tangent's root `−b/a` rounded once (certified with `2u`), two roots `q/a` and `c/q` within `4u` (certified with `8u`). `None` where the span is wider or
+/// a root sits next to an f32 rounding boundary.
+///
+/// ```
+/// use rayoracle::sphere::{SphereHit, stages::{grid_exact, tracked}};
+/// // Grazing R = 3 at (0, 3, 0) from z = −5: span bounds 5 and 1.
+/// assert_eq!(grid_exact([0.0, 3.0, -5.0], [0.0, 0.0, 1.0], [0.0; 3], 3.0), Some(SphereHit::Tangent(5.0)));
+/// // 0.1f32 has 24 bits: the span is too wide, as tracked finds.
+/// let (o, d) = ([0.0, 3.0, 0.1f32], [0.0, 0.0, 0.1f32]);
+/// assert_eq!(grid_exact(o, d, [0.0; 3], 3.0), None);
+/// ```
+///
+/// [`span_bound`]: super::exactness::span_bound
+pub fn grid_exact(o: [f32; 3], d: [f32; 3], c: [f32; 3], r: f32) -> Option<SphereHit> {
+    let w = |v: [f32; 3]| v.map(f64::from);
+    let k = classes(w(o), w(d), w(c), f64::from(r), 1.0);
+    grid_from(&k, o, d, c, r)
+}
+
+/// [`grid_exact`] from the [`classes`] already computed.
+#[inline(always)]
+pub(crate) fn grid_from(
+    k: &Classes<f64>,
+    o: [f32; 3],
+    d: [f32; 3],
+    c: [f32; 3],
+    r: f32,
+) -> Option<SphereHit> {
+    grid_within(k, o, d, c, r, 23)
+}
+
+/// [`grid_from`] with the bound on the spans' sum given: for the test that
+/// shows a wider one gives wrong answers.
+#[inline(always)]
+fn grid_within(
+    k: &Classes<f64>,
+    o: [f32; 3],
+    d: [f32; 3],
+    c: [f32; 3],
+    r: f32,
+    limit: u32,
+) -> Option<SphereHit> {
+    use super::exactness::span_bound;
+    let ed = span_bound(&d);
+    if ed > limit || ed + span_bound(&[o[0], o[1], o[2], c[0], c[1], c[2], r]) > limit {
+        return None;
+    }
+    exact_roots(k.a, k.b, k.cq, k.disc)
+}
+
+/// The answer from `a`, `b`, `c` and `Δ = b² − ac` known to be exact: the
+/// class from the signs (none where `a = 0`), a tangent's root `−b/a`
+/// rounded once (certified with `2u`), two roots `q/a` and `c/q` from `s =
+/// √Δ`, within `2u|q|` for `q` and so `4u` for each root (certified with
+/// `8u`). `None` where a root sits next to an f32 rounding boundary.
+#[inline(always)]
+fn exact_roots(a: f64, b: f64, cq: f64, disc: f64) -> Option<SphereHit> {
+    if a == 0.0 || disc < 0.0 {
+        return Some(SphereHit::None);
+    }
+    if disc == 0.0 {
+        let t = div(-b, a);
+        return certify(t, 2.0 * U, 0.0).then_some(SphereHit::Tangent(t as f32));
+    }
+    let q = -(b + disc.sqrt().copysign(b));
+    let (t0, t1) = (q / a, div(cq, q));
+    let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
+    let ok = certify(t0, 8.0 * U, 0.0) && certify(t1, 8.0 * U, 0.0);
+    ok.then_some(SphereHit::Two(t0 as f32, t1 as f32))
+}
+
 /// The second stage: the textbook quadratic tracked for exactness
 /// ([`super::exactness`]). Where no operation rounded, `a`, `b`, `c` and
-/// `Δ` are exact, so the class follows from signs: a tangent's root `−b/a`
-/// rounds once (certified with `2u`); two roots are `q/a` and `c/q` from
-/// `s = √Δ`, within `2u|q|` for `q` and so `4u` for each root (certified
-/// with `8u`). `None` where an operation rounded or a root sits next to an
-/// f32 rounding boundary.
+/// `Δ` are exact, and the roots follow as in `exact_roots`: the class from the signs, a tangent's root `−b/a` rounded once (certified with `2u`), two roots `q/a` and `c/q` within `4u` (certified with `8u`). `None` where an operation
+/// rounded or a root sits next to an f32 rounding boundary.
 ///
 /// The values are the filter's, computed in the same order; each is proven
 /// exact on its own: the squares `dᵢ²` and `R²` of f32 values always are
@@ -576,56 +670,33 @@ pub(crate) fn compensated_from(
 ///
 /// [`mul_exact`]: super::exactness::mul_exact
 pub fn tracked(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Option<SphereHit> {
-    let Dots {
-        f, a, b, ff, rr, ..
-    } = dots(o, d, c, r);
-    let cq = ff - rr;
-    let disc = b * b - a * cq;
-    if !tracked_exact(
-        o,
-        d,
-        c,
-        &Dots {
-            f,
-            a,
-            b,
-            mb: 0.0,
-            ff,
-            rr,
-        },
-    ) {
+    let x = dots(o, d, c, r);
+    if !tracked_exact(o, d, c, &x) {
         return None;
     }
-    if a == 0.0 || disc < 0.0 {
-        return Some(SphereHit::None);
-    }
-    if disc == 0.0 {
-        let t = div(-b, a);
-        return certify(t, 2.0 * U, 0.0).then_some(SphereHit::Tangent(t as f32));
-    }
-    let q = -(b + disc.sqrt().copysign(b));
-    let (t0, t1) = (q / a, div(cq, q));
-    let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
-    let ok = certify(t0, 8.0 * U, 0.0) && certify(t1, 8.0 * U, 0.0);
-    ok.then_some(SphereHit::Two(t0 as f32, t1 as f32))
+    let cq = x.ff - x.rr;
+    exact_roots(x.a, x.b, cq, x.b * x.b - x.a * cq)
 }
 
 /// Whether every operation of [`dots`], `c = f·f − R²` and `Δ = b² − ac`
 /// was exact (see [`tracked`]).
 #[inline(always)]
 fn tracked_exact(o: [f64; 3], d: [f64; 3], c: [f64; 3], x: &Dots<f64>) -> bool {
-    use super::exactness::{add_exact, mul_exact};
+    use super::exactness::{add_exact, at_most_26_bits, mul_exact};
     let Dots {
         f, a, b, ff, rr, ..
     } = *x;
     let sq = d.map(|x| x * x);
     let fd = [0, 1, 2].map(|i| f[i] * d[i]);
     let f2 = f.map(|x| x * x);
-    let mut ok = true;
-    for i in 0..3 {
-        ok &= add_exact(o[i], -c[i]) & mul_exact(f[i], d[i]) & mul_exact(f[i], f[i]);
-    }
-    ok & add_exact(sq[0], sq[1])
+    // With every fᵢ of at most 26 bits, fᵢdᵢ (dᵢ has 24) and fᵢ² are exact.
+    let products =
+        at_most_26_bits(f) || (0..3).all(|i| mul_exact(f[i], d[i]) & mul_exact(f[i], f[i]));
+    products
+        & add_exact(o[0], -c[0])
+        & add_exact(o[1], -c[1])
+        & add_exact(o[2], -c[2])
+        & add_exact(sq[0], sq[1])
         & add_exact(sq[0] + sq[1], sq[2])
         & add_exact(fd[0], fd[1])
         & add_exact(fd[0] + fd[1], fd[2])
@@ -763,5 +834,59 @@ mod tests {
             }
         }
         assert!(huge >= 64, "{huge}");
+    }
+
+    /// The grid stage agrees with the oracle on integer and dyadic lines
+    /// and spheres of every class, and answers the exact tangents of the
+    /// catalogue; allowed twice the spans of its proof (a limit of 46
+    /// rather than 23), it answers some of these cases wrongly.
+    #[test]
+    fn grid_stage_is_right_and_its_limit_matters() {
+        use super::{classes, grid_exact, grid_within};
+        use crate::Ray;
+        use crate::sphere::Sphere;
+        let (answered, wrong_wide) = (std::cell::Cell::new(0), std::cell::Cell::new(0));
+        let check = |o: [f32; 3], d: [f32; 3], c: [f32; 3], r: f32| {
+            let ray = Ray::new(o.into(), d.into());
+            let Ok(want) = exact::intersect(&ray, &Sphere::new(c.into(), r)) else {
+                return;
+            };
+            if let Some(h) = grid_exact(o, d, c, r) {
+                assert!(same_bits(&h, &want), "{o:?} {d:?} {c:?} {r}");
+                answered.set(answered.get() + 1);
+            }
+            let w = |v: [f32; 3]| v.map(f64::from);
+            let k = classes(w(o), w(d), w(c), f64::from(r), 1.0);
+            if let Some(h) = grid_within(&k, o, d, c, r, 46) {
+                wrong_wide.set(wrong_wide.get() + usize::from(!same_bits(&h, &want)));
+            }
+        };
+        for family in &Catalogue::builtin().unwrap().families {
+            for case in &family.cases {
+                if let Case::Sphere(r, s) = case {
+                    let a = |v: glam::Vec3| v.to_array();
+                    check(a(r.origin), a(r.dir), a(s.center), s.radius);
+                }
+            }
+        }
+        let catalogue = answered.get();
+        // Grazing R = 3 at (0, 3, 0) along steps of 2⁻ᵏ·(1 + 2⁻ʲ) from
+        // an origin on the tangent line: Δ = 0, exact in f64 only while
+        // the steps have few bits.
+        for k in 0..8 {
+            for j in [0, 3, 9, 13, 17, 22] {
+                let s = (1.0 + 2f32.powi(-j)) * 2f32.powi(-k);
+                check([0.0, 3.0, s], [0.0, 0.0, s], [0.0; 3], 3.0);
+                check([1.0, 3.0, -5.0 * s], [0.0, 0.0, s], [1.0, 0.0, 0.0], 3.0);
+                for i in [1, 5, 8, 11, 14] {
+                    let z = -(1.0 + 2f32.powi(-i)) * 2f32.powi(k - j);
+                    check([0.0, 3.0, z], [0.0, 0.0, s], [0.0; 3], 3.0);
+                    check([0.0, 2.5, z], [0.0, s, s], [0.0; 3], 3.0);
+                }
+            }
+        }
+        assert!(catalogue >= 200, "{catalogue}");
+        assert!(answered.get() > catalogue);
+        assert!(wrong_wide.get() > 0);
     }
 }
