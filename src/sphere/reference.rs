@@ -98,10 +98,13 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
 /// too, assume subnormals work where an input or a result is subnormal
 /// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
 /// its undecided lanes here, and all of them when FTZ or DAZ is on.
+///
+/// `env` is what x4 read from [`subnormals_work`] for the packet: where it
+/// is true, no input needs the probe.
 #[cold]
 #[inline(never)]
-pub(crate) fn escalate(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
-    if needs_probe(&inputs(ray, sphere), &[]) && !subnormals_work() {
+pub(crate) fn escalate(ray: &Ray, sphere: &Sphere, env: bool) -> (SphereHit, Stage) {
+    if !env && needs_probe(&inputs(ray, sphere), &[]) && !subnormals_work() {
         return (exact_stage(ray, sphere), Stage::Exact);
     }
     let (o, d, c, r) = widen(ray, sphere);
@@ -137,7 +140,9 @@ fn later(
     // Cheapest and likeliest first: exact data on a narrow grid where Δ̂ =
     // 0 (as at an exact tangent; elsewhere the grid is rarely narrow
     // enough to pay for its test), a cancelling c where the class is
-    // certified, exact data, then far spheres.
+    // certified, exact data (where Δ̂ = 0 or the class is certified: an
+    // exact nonzero Δ inside the filter's bound is rare), then far
+    // spheres.
     let (o32, d32, c32) = (
         ray.origin.to_array(),
         ray.dir.to_array(),

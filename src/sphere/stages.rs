@@ -691,21 +691,19 @@ fn tracked_exact(o: [f64; 3], d: [f64; 3], c: [f64; 3], x: &Dots<f64>) -> bool {
     let f2 = f.map(|x| x * x);
     // With every fᵢ of at most 26 bits, fᵢdᵢ (dᵢ has 24) and fᵢ² are exact.
     let products =
-        at_most_26_bits(f) || (0..3).all(|i| mul_exact(f[i], d[i]) & mul_exact(f[i], f[i]));
-    products
-        & add_exact(o[0], -c[0])
-        & add_exact(o[1], -c[1])
-        & add_exact(o[2], -c[2])
-        & add_exact(sq[0], sq[1])
-        & add_exact(sq[0] + sq[1], sq[2])
-        & add_exact(fd[0], fd[1])
-        & add_exact(fd[0] + fd[1], fd[2])
-        & add_exact(f2[0], f2[1])
-        & add_exact(f2[0] + f2[1], f2[2])
-        & add_exact(ff, -rr)
-        & mul_exact(b, b)
-        & mul_exact(a, ff - rr)
-        & add_exact(b * b, -(a * (ff - rr)))
+        || at_most_26_bits(f) || (0..3).all(|i| mul_exact(f[i], d[i]) & mul_exact(f[i], f[i]));
+    // In groups, so that a near tangent, which fails early, stops early.
+    (add_exact(sq[0], sq[1]) & add_exact(sq[0] + sq[1], sq[2]))
+        && (add_exact(o[0], -c[0]) & add_exact(o[1], -c[1]) & add_exact(o[2], -c[2]))
+        && products()
+        && add_exact(fd[0], fd[1])
+            & add_exact(fd[0] + fd[1], fd[2])
+            & add_exact(f2[0], f2[1])
+            & add_exact(f2[0] + f2[1], f2[2])
+            & add_exact(ff, -rr)
+            & mul_exact(b, b)
+            & mul_exact(a, ff - rr)
+            & add_exact(b * b, -(a * (ff - rr)))
 }
 
 /// The double-word stage ([`crate::num::dd`]): `f = o − C` split exactly

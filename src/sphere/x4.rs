@@ -345,9 +345,10 @@ impl SphereHit4 {
         let rays = ray.to_rays();
         let (c, r) = (scatter3(s.center), s.radius.to_array());
         let (mut class, mut t0, mut t1) = (class.to_array(), t0.to_array(), t1.to_array());
-        let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
+        let env = subnormals_work();
+        let done = (done & i32x4::splat(-i32::from(env))).to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
-            let (k, a, b) = match reference::escalate(&rays[i], &Sphere::new(c[i], r[i])).0 {
+            let (k, a, b) = match reference::escalate(&rays[i], &Sphere::new(c[i], r[i]), env).0 {
                 SphereHit::None => (NONE, f32::NAN, f32::NAN),
                 SphereHit::Tangent(t) => (ONE, t, t),
                 SphereHit::Two(a, b) => (TWO, a, b),
