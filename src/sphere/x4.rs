@@ -3,12 +3,13 @@
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
 use super::{Sphere, SphereHit, reference, stages};
+use crate::Ray;
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
 use crate::num::real::{F64x4, Pair, Real, Real4};
 use crate::ray4::class::{NONE, ONE, TWO};
-use crate::ray4::{Ray4, gather3, scatter3};
+use crate::ray4::{Ray4, gather3};
 use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
 
@@ -312,6 +313,18 @@ fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl Fn() -> bool) -> Sp
     if L::all(k.none) && env() {
         return SphereHit4::MISS;
     }
+    // Nor does one without a lane certified to have two (exact tangents).
+    if L::all(!k.two) {
+        let (no, nan) = (k.two, L::splat(f64::NAN));
+        let x = Decided {
+            two: no,
+            done: k.none,
+            open: no,
+            lo: nan,
+            hi: nan,
+        };
+        return finish(x, env, ray, s);
+    }
     finish(decide_sorted(stages::sorted(k, 1.0)), env, ray, s)
 }
 
@@ -342,13 +355,18 @@ impl SphereHit4 {
     fn settle(h: [i32x4; 3], done: i32x4, ray: &Ray4, s: &Sphere4) -> Self {
         let [class, t0, t1] = h;
         let (t0, t1): (f32x4, f32x4) = (cast(t0), cast(t1));
-        let rays = ray.to_rays();
-        let (c, r) = (scatter3(s.center), s.radius.to_array());
+        let [o, d, c] = [ray.origin, ray.dir, s.center].map(|v| v.map(f32x4::to_array));
+        let r = s.radius.to_array();
+        let lane = |v: [[f32; 4]; 3], i: usize| glam::Vec3::new(v[0][i], v[1][i], v[2][i]);
         let (mut class, mut t0, mut t1) = (class.to_array(), t0.to_array(), t1.to_array());
         let env = subnormals_work();
         let done = (done & i32x4::splat(-i32::from(env))).to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
-            let (k, a, b) = match reference::escalate(&rays[i], &Sphere::new(c[i], r[i]), env).0 {
+            let (ray, sphere) = (
+                Ray::new(lane(o, i), lane(d, i)),
+                Sphere::new(lane(c, i), r[i]),
+            );
+            let (k, a, b) = match reference::escalate(&ray, &sphere, env).0 {
                 SphereHit::None => (NONE, f32::NAN, f32::NAN),
                 SphereHit::Tangent(t) => (ONE, t, t),
                 SphereHit::Two(a, b) => (TWO, a, b),
@@ -489,6 +507,35 @@ mod tests {
         }
         assert!(matches!(out[2].lanes()[2], SphereHit::Two(..)));
         assert_eq!(out[0].lanes(), [SphereHit::None; 4]);
+    }
+
+    /// A packet in which no lane's class is certified (four exact
+    /// tangents) skips the roots and settles every lane in the scalar
+    /// stages: the reference's bits, one packet or in pairs.
+    #[test]
+    fn packets_without_a_certain_hit_settle_every_lane() {
+        let s = Sphere::new(glam::Vec3::ZERO, 3.0);
+        let s4 = Sphere4::splat(&s);
+        let ray = |z: f32, y: f32| crate::Ray::new(glam::Vec3::new(0.0, y, z), glam::Vec3::Z);
+        let r4 = Ray4::from_rays([
+            ray(-5.0, 3.0),
+            ray(0.5, 3.0),
+            ray(7.0, -3.0),
+            ray(-1.0, 3.0),
+        ]);
+        let (o, d, c, r) = widened::<F64x4>(&r4, &s4);
+        let k = stages::classes(o, d, c, r, 1.0);
+        assert!(F64x4::all(!k.two) && !F64x4::all(k.none));
+        let want = r4.to_rays().map(|r| reference::intersect(&r, &s));
+        assert_eq!(want[0], SphereHit::Tangent(5.0));
+        let mut out = vec![intersect(&r4, &s4); 3];
+        packets_in::<F64x4>(&[r4; 3], &s4, &mut out);
+        for h in out
+            .iter()
+            .chain([&intersect(&r4, &s4), &intersect_baseline(&r4, &s4)])
+        {
+            assert!(h.lanes().iter().zip(&want).all(|(x, y)| same_bits(x, y)));
+        }
     }
 
     /// Origins a few ulps off the sphere make the textbook root near 0
