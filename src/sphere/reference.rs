@@ -140,9 +140,7 @@ fn later(
     // Cheapest and likeliest first: exact data on a narrow grid where Δ̂ =
     // 0 (as at an exact tangent; elsewhere the grid is rarely narrow
     // enough to pay for its test), a cancelling c where the class is
-    // certified, exact data (where Δ̂ = 0 or the class is certified: an
-    // exact nonzero Δ inside the filter's bound is rare), then far
-    // spheres.
+    // certified, exact data, then far spheres.
     let (o32, d32, c32) = (
         ray.origin.to_array(),
         ray.dir.to_array(),
