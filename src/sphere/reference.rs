@@ -140,7 +140,7 @@ fn later(
     // Cheapest and likeliest first: exact data on a narrow grid where Δ̂ =
     // 0 (as at an exact tangent; elsewhere the grid is rarely narrow
     // enough to pay for its test), a cancelling c where the class is
-    // certified, exact data, then far spheres.
+    // certified, exact data, then far spheres (but see `flat`).
     let (o32, d32, c32) = (
         ray.origin.to_array(),
         ray.dir.to_array(),
@@ -148,6 +148,10 @@ fn later(
     );
     let grid = || stages::grid_from(k, o32, d32, c32, sphere.radius);
     let cancels = stages::c_cancels(k);
+    // Where Δ̂ = 0 and the class is open (a near tangent), the tight form
+    // rarely decides and the double-word stage is tried first.
+    let flat = k.disc == 0.0 && !k.two;
+    let tight = || stages::tight(o, d, c, r, shrink).map(|h| (h, Stage::Tight));
     let comp = || stages::compensated_from(k, o, c, r, shrink).map(|h| (h, Stage::Tight));
     let staged = ((k.disc == 0.0)
         .then(grid)
@@ -155,9 +159,10 @@ fn later(
         .map(|h| (h, Stage::Tracked)))
     .or_else(|| if cancels { comp() } else { None })
     .or_else(|| stages::tracked(o, d, c, r).map(|h| (h, Stage::Tracked)))
-    .or_else(|| stages::tight(o, d, c, r, shrink).map(|h| (h, Stage::Tight)))
+    .or_else(|| if flat { None } else { tight() })
     .or_else(|| if cancels || !k.two { None } else { comp() })
-    .or_else(|| stages::double_word(o, d, c, r, shrink).map(|h| (h, Stage::DoubleWord)));
+    .or_else(|| stages::double_word(o, d, c, r, shrink).map(|h| (h, Stage::DoubleWord)))
+    .or_else(|| if flat { tight() } else { None });
     match staged {
         Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
             (exact_stage(ray, sphere), Stage::Exact)
