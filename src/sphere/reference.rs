@@ -91,9 +91,10 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
     later(ray, sphere, (o, d, c, r), &k, shrink)
 }
 
-/// The stages after the filter: f64 arithmetic that proves itself exact
+/// The stages after the filter: f64 arithmetic proven exact by the data's
+/// span ([`stages::grid_exact`]) or operation by operation
 /// ([`stages::tracked`]), f64 arithmetic with a tighter bound
-/// ([`stages::tight`]), double-word arithmetic
+/// ([`stages::compensated`], [`stages::tight`]), double-word arithmetic
 /// ([`stages::double_word`]), then the exact oracle. The later stages,
 /// too, assume subnormals work where an input or a result is subnormal
 /// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends

@@ -576,10 +576,11 @@ pub(crate) fn compensated_from(
 ///
 /// The widest ratio is `Δ`'s, `2^(2(Eₚ + E_d) + 7)`, so `Eₚ + E_d ≤ 23`
 /// makes every operation exact, and the bounds the stage asks it of carry
-/// a bit of slack each. Nonzero
-/// values are at least `2⁻⁵⁹⁶`, so none is subnormal. Then, as in
-/// [`tracked`], the roots follow as in `exact_roots`: the class from the signs, a tangent's root `−b/a` rounded once (certified with `2u`), two roots `q/a` and `c/q` within `4u` (certified with `8u`). `None` where the span is wider or
-/// a root sits next to an f32 rounding boundary.
+/// a bit of slack each. Nonzero values are at least `2⁻⁵⁹⁶`, so none is
+/// subnormal. Then, as in [`tracked`], the class is the sign of `Δ̂`, a
+/// tangent's root `−b/a` rounds once (certified with `2u`) and two roots
+/// `q/a` and `c/q` are within `4u` (certified with `8u`). `None` where
+/// the span is wider or a root sits next to an f32 rounding boundary.
 ///
 /// ```
 /// use rayoracle::sphere::{SphereHit, stages::{grid_exact, tracked}};
@@ -651,8 +652,11 @@ fn exact_roots(a: f64, b: f64, cq: f64, disc: f64) -> Option<SphereHit> {
 
 /// The second stage: the textbook quadratic tracked for exactness
 /// ([`super::exactness`]). Where no operation rounded, `a`, `b`, `c` and
-/// `Δ` are exact, and the roots follow as in `exact_roots`: the class from the signs, a tangent's root `−b/a` rounded once (certified with `2u`), two roots `q/a` and `c/q` within `4u` (certified with `8u`). `None` where an operation
-/// rounded or a root sits next to an f32 rounding boundary.
+/// `Δ` are exact, so the class follows from signs: a tangent's root `−b/a`
+/// rounds once (certified with `2u`); two roots are `q/a` and `c/q` from
+/// `s = √Δ`, within `2u|q|` for `q` and so `4u` for each root (certified
+/// with `8u`). `None` where an operation rounded or a root sits next to an
+/// f32 rounding boundary.
 ///
 /// The values are the filter's, computed in the same order; each is proven
 /// exact on its own: the squares `dᵢ²` and `R²` of f32 values always are
@@ -713,9 +717,10 @@ fn tracked_exact(o: [f64; 3], d: [f64; 3], c: [f64; 3], x: &Dots<f64>) -> bool {
 /// (products of two f32 values and their sums), every product one of
 /// `2⁻⁵⁹⁶`, so TwoProduct is exact ([`crate::num::dd`]); a product with
 /// a zero factor is left out, and one whose factors' significant bits sum
-/// to at most 53 is added as one word (by [`super::exactness::sig_bits`]). Where no low word
-/// rounded, `Δ` is exact, and so is its sign and its zero; otherwise its
-/// bound (the low words' and, as in [`Acc::add_dd_prod`], those of `a`,
+/// to at most 53 ([`super::exactness::sig_bits`]) is added as one word.
+/// Where no low word rounded, `Δ` is exact, and so is its sign and its
+/// zero; otherwise its bound (the low words' and, as in
+/// [`Acc::add_dd_prod`], those of `a`,
 /// `b`, `c`) decides the sign or nothing. A tangent's root `−b/a`, and two
 /// roots ([`two_roots`]), are then certified from the words' leading
 /// values with `|lo| + err` as their bounds. Every bound is multiplied by
