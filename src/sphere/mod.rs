@@ -42,6 +42,7 @@
 //! which the gate uses to judge outside kernels and the reports show.
 
 pub mod exact;
+pub mod exactness;
 pub mod plain;
 pub mod reference;
 pub mod stages;

@@ -57,74 +57,113 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
     if needs_probe(&inputs, &[]) && !subnormals_work() {
         return (exact_stage(ray, sphere), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let (o, d, c, r) = (
-        w(ray.origin),
-        w(ray.dir),
-        w(sphere.center),
-        f64::from(sphere.radius),
-    );
+    let (o, d, c, r) = widen(ray, sphere);
     let k = stages::classes(o, d, c, r, shrink);
     if k.none {
         return (SphereHit::None, Stage::Filter);
     }
-    // The sorted roots first, as x4 does (two divisions rather than
-    // three); the quotient form where the root near 0 cancels.
-    let g = stages::sorted(k, shrink);
-    if g.two && certify(g.lo, g.r, g.a) && certify(g.hi, g.r, g.a) {
-        if needs_probe(&[], &[g.lo, g.hi]) && !subnormals_work() {
-            return (exact_stage(ray, sphere), Stage::Exact);
+    // An undecided class (a near or exact tangent) has no roots to try.
+    if k.two {
+        // The sorted roots first, as x4 does (two divisions rather than
+        // three); the quotient form where the root near 0 cancels.
+        let g = stages::sorted(k, shrink);
+        if certify(g.lo, g.r, g.a) && certify(g.hi, g.r, g.a) {
+            if needs_probe(&[], &[g.lo, g.hi]) && !subnormals_work() {
+                return (exact_stage(ray, sphere), Stage::Exact);
+            }
+            return (SphereHit::Two(g.lo as f32, g.hi as f32), Stage::Filter);
         }
-        return (SphereHit::Two(g.lo as f32, g.hi as f32), Stage::Filter);
-    }
-    let f = stages::filter(o, d, c, r, shrink);
-    if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
-        if needs_probe(&[], &[f.t0, f.t1]) && !subnormals_work() {
-            return (exact_stage(ray, sphere), Stage::Exact);
+        let f = stages::filter_from(k, shrink);
+        if certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
+            if needs_probe(&[], &[f.t0, f.t1]) && !subnormals_work() {
+                return (exact_stage(ray, sphere), Stage::Exact);
+            }
+            // Disjoint enclosures are in the exact order; overlapping ones
+            // round to the same f32.
+            let (t0, t1) = if f.t0 <= f.t1 {
+                (f.t0, f.t1)
+            } else {
+                (f.t1, f.t0)
+            };
+            return (SphereHit::Two(t0 as f32, t1 as f32), Stage::Filter);
         }
-        // Disjoint enclosures are in the exact order; overlapping ones
-        // round to the same f32.
-        let (t0, t1) = if f.t0 <= f.t1 {
-            (f.t0, f.t1)
-        } else {
-            (f.t1, f.t0)
-        };
-        return (SphereHit::Two(t0 as f32, t1 as f32), Stage::Filter);
     }
-    escalate_shrunk(ray, sphere, shrink)
+    later(ray, sphere, (o, d, c, r), &k, shrink)
 }
 
-/// The stages after the filter: f64 arithmetic that proves itself exact
+/// The stages after the filter: f64 arithmetic proven exact by the data's
+/// span ([`stages::grid_exact`]) or operation by operation
 /// ([`stages::tracked`]), f64 arithmetic with a tighter bound
-/// ([`stages::tight`]), double-word arithmetic
+/// ([`stages::compensated`], [`stages::tight`]), double-word arithmetic
 /// ([`stages::double_word`]), then the exact oracle. The later stages,
 /// too, assume subnormals work where an input or a result is subnormal
 /// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
 /// its undecided lanes here, and all of them when FTZ or DAZ is on.
+///
+/// `env` is what x4 read from [`subnormals_work`] for the packet: where it
+/// is true, no input needs the probe.
 #[cold]
 #[inline(never)]
-pub(crate) fn escalate(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
-    escalate_shrunk(ray, sphere, 1.0)
-}
-
-/// [`escalate`] with the bounds of its stages multiplied by `shrink`.
-#[cold]
-#[inline(never)]
-fn escalate_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage) {
-    if needs_probe(&inputs(ray, sphere), &[]) && !subnormals_work() {
+pub(crate) fn escalate(ray: &Ray, sphere: &Sphere, env: bool) -> (SphereHit, Stage) {
+    if !env && needs_probe(&inputs(ray, sphere), &[]) && !subnormals_work() {
         return (exact_stage(ray, sphere), Stage::Exact);
     }
+    let (o, d, c, r) = widen(ray, sphere);
+    let k = stages::classes(o, d, c, r, 1.0);
+    later(ray, sphere, (o, d, c, r), &k, 1.0)
+}
+
+/// The line and the sphere in f64: `o`, `d`, `C` and `R`.
+type Wide = ([f64; 3], [f64; 3], [f64; 3], f64);
+
+#[inline(always)]
+fn widen(ray: &Ray, sphere: &Sphere) -> Wide {
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let (o, d, c, r) = (
+    (
         w(ray.origin),
         w(ray.dir),
         w(sphere.center),
         f64::from(sphere.radius),
+    )
+}
+
+/// [`escalate`] on inputs already widened and probed, with the filter's
+/// classes `k` and the bounds of its stages multiplied by `shrink`.
+#[cold]
+#[inline(never)]
+fn later(
+    ray: &Ray,
+    sphere: &Sphere,
+    (o, d, c, r): Wide,
+    k: &stages::Classes<f64>,
+    shrink: f64,
+) -> (SphereHit, Stage) {
+    // Cheapest and likeliest first: exact data on a narrow grid where Δ̂ =
+    // 0 (as at an exact tangent; elsewhere the grid is rarely narrow
+    // enough to pay for its test), a cancelling c where the class is
+    // certified, exact data, then far spheres (but see `flat`).
+    let (o32, d32, c32) = (
+        ray.origin.to_array(),
+        ray.dir.to_array(),
+        sphere.center.to_array(),
     );
-    // Cheapest and likeliest first: exact data, then far spheres.
-    let staged = (stages::tracked(o, d, c, r).map(|h| (h, Stage::Tracked)))
-        .or_else(|| stages::tight(o, d, c, r, shrink).map(|h| (h, Stage::Tight)))
-        .or_else(|| stages::double_word(o, d, c, r, shrink).map(|h| (h, Stage::DoubleWord)));
+    let grid = || stages::grid_from(k, o32, d32, c32, sphere.radius);
+    let cancels = stages::c_cancels(k);
+    // Where Δ̂ = 0 and the class is open (a near tangent), the tight form
+    // rarely decides and the double-word stage is tried first.
+    let flat = k.disc == 0.0 && !k.two;
+    let tight = || stages::tight(o, d, c, r, shrink).map(|h| (h, Stage::Tight));
+    let comp = || stages::compensated_from(k, o, c, r, shrink).map(|h| (h, Stage::Tight));
+    let staged = ((k.disc == 0.0)
+        .then(grid)
+        .flatten()
+        .map(|h| (h, Stage::Tracked)))
+    .or_else(|| if cancels { comp() } else { None })
+    .or_else(|| stages::tracked(o, d, c, r).map(|h| (h, Stage::Tracked)))
+    .or_else(|| if flat { None } else { tight() })
+    .or_else(|| if cancels || !k.two { None } else { comp() })
+    .or_else(|| stages::double_word(o, d, c, r, shrink).map(|h| (h, Stage::DoubleWord)))
+    .or_else(|| if flat { tight() } else { None });
     match staged {
         Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
             (exact_stage(ray, sphere), Stage::Exact)

@@ -3,12 +3,13 @@
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
 use super::{Sphere, SphereHit, reference, stages};
+use crate::Ray;
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
 use crate::num::real::{F64x4, Pair, Real, Real4};
 use crate::ray4::class::{NONE, ONE, TWO};
-use crate::ray4::{Ray4, gather3, scatter3};
+use crate::ray4::{Ray4, gather3};
 use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
 
@@ -200,10 +201,13 @@ fn packets_in<L: Real4>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
 }
 
 /// What the lanes decide, before any conversion: the certified two-root
-/// lanes, the lanes done, and the sorted roots (NaN where none).
+/// lanes, the lanes done, the lanes whose class is two but whose roots are
+/// not certified yet (the only ones the second pass can decide), and the
+/// sorted roots (NaN where none).
 struct Decided<L: Real> {
     two: L::Mask,
     done: L::Mask,
+    open: L::Mask,
     lo: L,
     hi: L,
 }
@@ -215,12 +219,14 @@ impl<L: Real> Decided<Pair<L>> {
             Decided {
                 two: self.two.0,
                 done: self.done.0,
+                open: self.open.0,
                 lo: self.lo.0,
                 hi: self.hi.0,
             },
             Decided {
                 two: self.two.1,
                 done: self.done.1,
+                open: self.open.1,
                 lo: self.lo.1,
                 hi: self.hi.1,
             },
@@ -238,6 +244,7 @@ fn decide_sorted<L: Real>(f: stages::Sorted<L>) -> Decided<L> {
     Decided {
         two,
         done: f.none | two,
+        open: f.two & !two,
         lo: L::select(two, f.lo, nan),
         hi: L::select(two, f.hi, nan),
     }
@@ -256,6 +263,7 @@ fn decide_quotients<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L
     Decided {
         two,
         done: f.none | two,
+        open: f.two & !two,
         lo: L::select(two, L::select(swap, f.t1, f.t0), nan),
         hi: L::select(two, L::select(swap, f.t0, f.t1), nan),
     }
@@ -263,7 +271,8 @@ fn decide_quotients<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L
 
 /// The results of one packet; `env` says whether the floating-point
 /// environment keeps subnormals (read only where every lane is done).
-/// Lanes the first pass leaves go to the second, then to the scalar
+/// Lanes the first pass leaves with the class two go to the second; what
+/// is left (an undecided class, an undecided root) goes to the scalar
 /// stages.
 #[inline(always)]
 fn finish<L: Real4>(
@@ -272,7 +281,7 @@ fn finish<L: Real4>(
     ray: &Ray4,
     s: &Sphere4,
 ) -> SphereHit4 {
-    let x = if L::all(x.done) {
+    let x = if L::all(!x.open) {
         x
     } else {
         let (o, d, c, r) = widened::<L>(ray, s);
@@ -280,6 +289,7 @@ fn finish<L: Real4>(
         Decided {
             two: x.two | (y.two & !x.done),
             done: x.done | y.done,
+            open: y.open,
             lo: L::select(x.done, x.lo, y.lo),
             hi: L::select(x.done, x.hi, y.hi),
         }
@@ -302,6 +312,18 @@ fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl Fn() -> bool) -> Sp
     // rays, such as a camera's, often come so.
     if L::all(k.none) && env() {
         return SphereHit4::MISS;
+    }
+    // Nor does one without a lane certified to have two (exact tangents).
+    if L::all(!k.two) {
+        let (no, nan) = (k.two, L::splat(f64::NAN));
+        let x = Decided {
+            two: no,
+            done: k.none,
+            open: no,
+            lo: nan,
+            hi: nan,
+        };
+        return finish(x, env, ray, s);
     }
     finish(decide_sorted(stages::sorted(k, 1.0)), env, ray, s)
 }
@@ -333,12 +355,18 @@ impl SphereHit4 {
     fn settle(h: [i32x4; 3], done: i32x4, ray: &Ray4, s: &Sphere4) -> Self {
         let [class, t0, t1] = h;
         let (t0, t1): (f32x4, f32x4) = (cast(t0), cast(t1));
-        let rays = ray.to_rays();
-        let (c, r) = (scatter3(s.center), s.radius.to_array());
+        let [o, d, c] = [ray.origin, ray.dir, s.center].map(|v| v.map(f32x4::to_array));
+        let r = s.radius.to_array();
+        let lane = |v: [[f32; 4]; 3], i: usize| glam::Vec3::new(v[0][i], v[1][i], v[2][i]);
         let (mut class, mut t0, mut t1) = (class.to_array(), t0.to_array(), t1.to_array());
-        let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
+        let env = subnormals_work();
+        let done = (done & i32x4::splat(-i32::from(env))).to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
-            let (k, a, b) = match reference::escalate(&rays[i], &Sphere::new(c[i], r[i])).0 {
+            let (ray, sphere) = (
+                Ray::new(lane(o, i), lane(d, i)),
+                Sphere::new(lane(c, i), r[i]),
+            );
+            let (k, a, b) = match reference::escalate(&ray, &sphere, env).0 {
                 SphereHit::None => (NONE, f32::NAN, f32::NAN),
                 SphereHit::Tangent(t) => (ONE, t, t),
                 SphereHit::Two(a, b) => (TWO, a, b),
@@ -479,6 +507,35 @@ mod tests {
         }
         assert!(matches!(out[2].lanes()[2], SphereHit::Two(..)));
         assert_eq!(out[0].lanes(), [SphereHit::None; 4]);
+    }
+
+    /// A packet in which no lane's class is certified (four exact
+    /// tangents) skips the roots and settles every lane in the scalar
+    /// stages: the reference's bits, one packet or in pairs.
+    #[test]
+    fn packets_without_a_certain_hit_settle_every_lane() {
+        let s = Sphere::new(glam::Vec3::ZERO, 3.0);
+        let s4 = Sphere4::splat(&s);
+        let ray = |z: f32, y: f32| crate::Ray::new(glam::Vec3::new(0.0, y, z), glam::Vec3::Z);
+        let r4 = Ray4::from_rays([
+            ray(-5.0, 3.0),
+            ray(0.5, 3.0),
+            ray(7.0, -3.0),
+            ray(-1.0, 3.0),
+        ]);
+        let (o, d, c, r) = widened::<F64x4>(&r4, &s4);
+        let k = stages::classes(o, d, c, r, 1.0);
+        assert!(F64x4::all(!k.two) && !F64x4::all(k.none));
+        let want = r4.to_rays().map(|r| reference::intersect(&r, &s));
+        assert_eq!(want[0], SphereHit::Tangent(5.0));
+        let mut out = vec![intersect(&r4, &s4); 3];
+        packets_in::<F64x4>(&[r4; 3], &s4, &mut out);
+        for h in out
+            .iter()
+            .chain([&intersect(&r4, &s4), &intersect_baseline(&r4, &s4)])
+        {
+            assert!(h.lanes().iter().zip(&want).all(|(x, y)| same_bits(x, y)));
+        }
     }
 
     /// Origins a few ulps off the sphere make the textbook root near 0
