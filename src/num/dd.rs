@@ -99,6 +99,87 @@ pub fn two_prod(a: f64, b: f64) -> (f64, f64) {
     (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
 }
 
+/// How a [`two_prod`] is computed: the result is the same exact pair
+/// either way, so the choice changes only the speed.
+pub trait Product: Copy {
+    /// `ab` and its rounding error, exactly under the conditions of the
+    /// [module](self).
+    fn two_prod(a: f64, b: f64) -> (f64, f64);
+}
+
+/// [`two_prod`] by Dekker's algorithm: plain arithmetic, on any build.
+///
+/// ```
+/// use rayoracle::num::dd::{Dekker, Product, two_prod};
+/// assert_eq!(Dekker::two_prod(0.1, 0.3), two_prod(0.1, 0.3));
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct Dekker;
+
+impl Product for Dekker {
+    #[inline(always)]
+    fn two_prod(a: f64, b: f64) -> (f64, f64) {
+        two_prod(a, b)
+    }
+}
+
+/// [`two_prod`] as `p = ab`, `e = fma(a, b, −p)`: the fused multiply-add
+/// rounds `ab − p` once, and that difference is representable under the
+/// [module](self)'s conditions (it is a multiple of `2⁻¹⁰⁷⁴` below
+/// `ulp(p)`), so `e` is the exact error, the same bits as Dekker's.
+/// Dekker's split also fails for `|a|` or `|b| ≥ 2⁹⁹⁵`, where the fused
+/// form still finds the error; the callers' products stay far below that.
+/// One instruction where the CPU has FMA; only run inside a function
+/// compiled with the `fma` target feature ([`Fma`]), since elsewhere
+/// `mul_add` is a call to libm's `fma`, correct but slow.
+///
+/// ```
+/// use rayoracle::num::dd::{Fused, Product, two_prod};
+/// for (a, b) in [(0.1, 0.3), (1.0 + f64::EPSILON, 3.0), (1e300, 1e300)] {
+///     let (p, e) = Fused::two_prod(a, b);
+///     let (q, f) = two_prod(a, b);
+///     assert!(p == q && (e == f || !(e.is_finite() || f.is_finite())));
+/// }
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct Fused;
+
+impl Product for Fused {
+    #[inline(always)]
+    fn two_prod(a: f64, b: f64) -> (f64, f64) {
+        let p = a * b;
+        (p, a.mul_add(b, -p))
+    }
+}
+
+/// Proof that the running CPU has the FMA instructions: only
+/// [`Fma::detect`] makes one. The later stages of the quadric kernels take
+/// a copy of themselves compiled with the `fma` target feature, over
+/// [`Fused`], when it does.
+///
+/// ```
+/// use rayoracle::num::dd::Fma;
+/// # #[cfg(target_arch = "x86_64")]
+/// assert_eq!(Fma::detect().is_some(), is_x86_feature_detected!("fma"));
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct Fma(());
+
+impl Fma {
+    /// The token, where the CPU has FMA (cached by the standard library: a
+    /// load and a test per call); always on a build whose target has it.
+    #[inline(always)]
+    pub fn detect() -> Option<Fma> {
+        #[cfg(target_feature = "fma")]
+        let on = true;
+        #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
+        let on = is_x86_feature_detected!("fma");
+        #[cfg(not(any(target_arch = "x86_64", target_feature = "fma")))]
+        let on = false;
+        on.then_some(Fma(()))
+    }
+}
+
 /// A double-word value `hi + lo` (`|lo| ≤ u|hi|`) within `err` of the
 /// exact one; `err = 0` where it is exact.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -174,7 +255,7 @@ pub struct Acc {
     lo2: f64,
     wide: bool,
     mag: f64,
-    n: f64,
+    n: u32,
     exact: bool,
     extra: f64,
 }
@@ -194,7 +275,7 @@ impl Acc {
             lo2: 0.0,
             wide: false,
             mag: 0.0,
-            n: 0.0,
+            n: 0,
             exact: true,
             extra: 0.0,
         }
@@ -224,7 +305,41 @@ impl Acc {
             self.mag += e.abs();
         }
         self.lo = s;
-        self.n += 1.0;
+        self.n += 1;
+    }
+    /// Adds the sum `other` exactly: its two words (in [`Acc::wide`],
+    /// its third word too, into the third), and its bookkeeping. The low
+    /// word is then a sum in some other order of the same values plus
+    /// `other`'s partial sums, whose error is still within `γₘ Σ|eᵢ|` for
+    /// `m` the number of additions (any summation tree's depth is at most
+    /// its count of additions), and `Σ|eᵢ|` counts each partial sum
+    /// again as a value, which only widens the bound. Two sums built side
+    /// by side and merged have half the dependency chain of one.
+    ///
+    /// ```
+    /// use rayoracle::num::dd::Acc;
+    /// let (mut x, mut y) = (Acc::new(), Acc::new());
+    /// x.add_prod(0.1, 0.1);
+    /// y.add(-0.01);
+    /// x.merge(y);
+    /// let v = x.finish(1.0);
+    /// assert!(v.err == 0.0 && v.hi != 0.0 && v.sign_known());
+    /// ```
+    #[inline(always)]
+    pub fn merge(&mut self, other: Acc) {
+        self.add(other.hi);
+        self.low(other.lo);
+        if self.wide {
+            let (s2, r2) = two_sum(self.lo2, other.lo2);
+            self.exact &= r2 == 0.0;
+            self.lo2 = s2;
+            self.mag += other.lo2.abs();
+            self.n += 1;
+        }
+        self.exact &= other.exact;
+        self.mag += other.mag;
+        self.n += other.n;
+        self.extra += other.extra;
     }
     /// Adds `x` exactly.
     #[inline(always)]
@@ -251,10 +366,15 @@ impl Acc {
     /// that, for the `1 + u` and its own roundings.
     #[inline(always)]
     pub fn add_dd_prod(&mut self, x: Dd, y: Dd) {
-        self.add_prod(x.hi, y.hi);
-        self.add_prod(x.hi, y.lo);
-        self.add_prod(x.lo, y.hi);
-        self.add_prod(x.lo, y.lo);
+        self.add_dd_prod_by::<Dekker>(x, y);
+    }
+    /// [`Acc::add_dd_prod`] with the products' errors found by `P`.
+    #[inline(always)]
+    pub fn add_dd_prod_by<P: Product>(&mut self, x: Dd, y: Dd) {
+        self.add_pair(P::two_prod(x.hi, y.hi));
+        self.add_pair(P::two_prod(x.hi, y.lo));
+        self.add_pair(P::two_prod(x.lo, y.hi));
+        self.add_pair(P::two_prod(x.lo, y.lo));
         self.extra += 2.0 * (x.hi.abs() * y.err + x.err * (y.hi.abs() + y.err));
     }
     /// The sum, with its bound multiplied by `shrink` (1 in the kernels;
@@ -269,15 +389,22 @@ impl Acc {
     /// errors of the inputs of [`Acc::add_dd_prod`].
     #[inline(always)]
     pub fn finish(self, shrink: f64) -> Dd {
-        // hi + lo + lo2 = h + c + b = h + l + d = hi' + lo' + d, exactly.
-        let (a, b) = two_sum(self.lo, self.lo2);
-        let (h, c) = two_sum(self.hi, a);
-        let (l, d) = two_sum(c, b);
-        let (hi, lo) = two_sum(h, l);
+        let (hi, lo, d) = if self.wide {
+            // hi + lo + lo2 = h + c + b = h + l + d = hi' + lo' + d, exactly.
+            let (a, b) = two_sum(self.lo, self.lo2);
+            let (h, c) = two_sum(self.hi, a);
+            let (l, d) = two_sum(c, b);
+            let (hi, lo) = two_sum(h, l);
+            (hi, lo, d)
+        } else {
+            // The same with lo2 = 0: b = d = 0 and l = c, so one TwoSum.
+            let (hi, lo) = two_sum(self.hi, self.lo);
+            (hi, lo, 0.0)
+        };
         let chain = if self.exact {
             0.0
         } else {
-            2.0 * self.n * U * self.mag
+            2.0 * f64::from(self.n) * U * self.mag
         };
         Dd {
             hi,

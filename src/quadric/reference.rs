@@ -84,7 +84,8 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
 
 /// The stages after the filter: f64 arithmetic that proves itself exact
 /// ([`stages::tracked`]), double-word arithmetic
-/// ([`stages::double_word`]), then the exact oracle. The later stages,
+/// ([`stages::double_word`]), both by [`stages::later`], then the exact
+/// oracle. The later stages,
 /// too, assume subnormals work where an input or a result is subnormal
 /// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
 /// its undecided lanes here, and all of them when FTZ or DAZ is on.
@@ -103,9 +104,7 @@ fn escalate_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, St
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
-    let staged = (stages::tracked(&k, o, d).map(|h| (h, Stage::Tracked)))
-        .or_else(|| stages::double_word(&k, o, d, shrink).map(|h| (h, Stage::DoubleWord)));
-    match staged {
+    match stages::later(&k, o, d, shrink) {
         Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
             (exact_stage(ray, quadric), Stage::Exact)
         }

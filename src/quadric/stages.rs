@@ -58,9 +58,10 @@
 
 use super::QuadricHit;
 use crate::num::certify::{SLACK, U, certify, div, quotient_bound};
-use crate::num::dd::{Acc, quotient, two_prod, two_roots};
+use crate::num::dd::{Acc, Approx, Dekker, Fma, Fused, Product, quotient, two_roots};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
+use crate::stage::Stage;
 
 /// The filter's result: the certified classes and the roots with their
 /// bounds.
@@ -241,6 +242,25 @@ pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filter
     }
 }
 
+/// The terms of α, β and γ, each exactly as two words ([`Pair`]): `k·x`
+/// is exact (two f32 values), its product with `y` is split by
+/// TwoProduct (`P`), exact since every such product is a multiple of
+/// `2⁻⁴⁴⁷` below `2³⁸⁴`. Computed once for both later stages.
+#[derive(Clone, Copy)]
+struct ExactTerms([Pair; 6], [Pair; 12], [Pair; 10]);
+
+impl ExactTerms {
+    #[inline(always)]
+    fn new<P: Product>(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> ExactTerms {
+        let (kp, op, dp) = (pairs(k), pairs(&o), pairs(&d));
+        let (a, b, g) = terms(&kp, op, dp, Pair(1.0, 0.0), |c, x, y| {
+            let (h, l) = P::two_prod(c.0 * x.0, y.0);
+            Pair(h, l)
+        });
+        ExactTerms(a, b, g)
+    }
+}
+
 /// The second stage: α, β, γ and `β² − 4αγ` tracked for exactness
 /// ([`Tracked`]), each term `k·x·y` as `k·x` (a product of two f32
 /// values, exact in f64) times `y`, checked. Where no
@@ -260,17 +280,29 @@ pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filter
 /// assert_eq!(tracked(&cyl, [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]), Some(QuadricHit::All));
 /// ```
 pub fn tracked(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> Option<QuadricHit> {
-    let mut x = Tracked::new();
-    // `c·p` is a product of two f32 values: exact in f64, unchecked.
-    let (alpha, beta, gamma) = terms(k, o, d, 1.0, |c, p, q| x.mul(c * p, q));
+    tracked_of::<Dekker>(&ExactTerms::new::<Dekker>(k, o, d))
+}
+
+/// [`tracked`] on the exact terms: a term rounded in f64 exactly where its
+/// low word is nonzero (a nonzero exact product of three f32 values is at
+/// least `2⁻⁴⁴⁷`, far above [`Tracked::mul`]'s `2⁻⁹⁰⁰`; a non-finite
+/// input makes a low word NaN).
+#[inline(always)]
+fn tracked_of<P: Product>(t: &ExactTerms) -> Option<QuadricHit> {
     // Most data that is not small integers or dyadic rounds here already.
-    if !x.exact() {
+    let mut rounded = false;
+    let mut any = |v: &[Pair]| v.iter().for_each(|p| rounded |= p.1 != 0.0);
+    any(&t.0);
+    any(&t.1);
+    any(&t.2);
+    if rounded {
         return None;
     }
-    let mut sum = |v: &[f64]| v.iter().fold(0.0, |s, &y| x.add(s, y));
-    let (alpha, beta, gamma) = (sum(&alpha), sum(&beta), sum(&gamma));
-    let b2 = x.mul(beta, beta);
-    let ag = x.mul(4.0 * alpha, gamma);
+    let mut x = Tracked::new();
+    let mut sum = |v: &[Pair]| v.iter().fold(0.0, |s, y| x.add(s, y.0));
+    let (alpha, beta, gamma) = (sum(&t.0), sum(&t.1), sum(&t.2));
+    let b2 = x.mul_by::<P>(beta, beta);
+    let ag = x.mul_by::<P>(4.0 * alpha, gamma);
     let disc = x.sub(b2, ag);
     // The doubled β terms and 4α are exact unless they overflow, which the
     // checks below see as a non-finite value.
@@ -346,17 +378,26 @@ fn pairs<const N: usize>(x: &[f64; N]) -> [Pair; N] {
 /// assert!(matches!(h, Some(QuadricHit::One(t)) if t < 0.0));
 /// ```
 pub fn double_word(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<QuadricHit> {
-    let (kp, op, dp) = (pairs(k), pairs(&o), pairs(&d));
-    let (alpha, beta, gamma) = terms(&kp, op, dp, Pair(1.0, 0.0), |c, x, y| {
-        let (h, l) = two_prod(c.0 * x.0, y.0);
-        Pair(h, l)
-    });
-    let sum = |v: &[Pair]| {
-        let mut acc = Acc::new();
-        v.iter().for_each(|t| acc.add_pair((t.0, t.1)));
-        acc.finish(shrink)
-    };
-    let (alpha, beta, gamma) = (sum(&alpha), sum(&beta), sum(&gamma));
+    double_word_of::<Dekker>(&ExactTerms::new::<Dekker>(k, o, d), shrink)
+}
+
+/// [`double_word`] on the exact terms.
+#[inline(always)]
+fn double_word_of<P: Product>(t: &ExactTerms, shrink: f64) -> Option<QuadricHit> {
+    // The sums term by term side by side (β's halves apart, then merged),
+    // so that their dependency chains overlap.
+    let (mut a, mut b, mut b2, mut g) = (Acc::new(), Acc::new(), Acc::new(), Acc::new());
+    for i in 0..6 {
+        a.add_pair((t.0[i].0, t.0[i].1));
+        b.add_pair((t.1[i].0, t.1[i].1));
+        b2.add_pair((t.1[i + 6].0, t.1[i + 6].1));
+        g.add_pair((t.2[i].0, t.2[i].1));
+    }
+    for p in &t.2[6..] {
+        g.add_pair((p.0, p.1));
+    }
+    b.merge(b2);
+    let (alpha, beta, gamma) = (a.finish(shrink), b.finish(shrink), g.finish(shrink));
     if alpha.is_zero() {
         return if beta.is_zero() {
             if gamma.is_zero() {
@@ -375,9 +416,21 @@ pub fn double_word(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Opti
         return None;
     }
     let b = beta.scale(0.5);
+    let (a, bb, c) = (alpha.approx(), b.approx(), gamma.approx());
+    // Most Δ are far from 0 once α, β and γ are this close: decided from
+    // the leading words; the exact sum below only where that fails.
+    let near = disc_near(a, bb, c, shrink);
+    if near.v.abs() > 2.0 * near.e {
+        if near.v < 0.0 {
+            return Some(QuadricHit::None);
+        }
+        if let Some((t0, t1)) = two_roots(a, bb, c, near, shrink) {
+            return Some(QuadricHit::Two(t0, t1));
+        }
+    }
     let mut disc = Acc::wide();
-    disc.add_dd_prod(b, b);
-    disc.add_dd_prod(alpha.scale(-1.0), gamma);
+    disc.add_dd_prod_by::<P>(b, b);
+    disc.add_dd_prod_by::<P>(alpha.scale(-1.0), gamma);
     let disc = disc.finish(shrink);
     if disc.is_zero() {
         let t = quotient(-b.approx(), alpha.approx(), shrink)?;
@@ -389,12 +442,91 @@ pub fn double_word(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Opti
     if disc.hi < 0.0 {
         return Some(QuadricHit::None);
     }
-    let (t0, t1) = two_roots(
-        alpha.approx(),
-        b.approx(),
-        gamma.approx(),
-        disc.approx(),
-        shrink,
-    )?;
+    let (t0, t1) = two_roots(a, bb, c, disc.approx(), shrink)?;
     Some(QuadricHit::Two(t0, t1))
+}
+
+/// `Δ/4 = b² − ac` in f64 from approximations with bounds, and a bound on
+/// its error (multiplied by `shrink`). With `|b − b̂| ≤ e_b` and so on,
+/// `|b² − b̂²| ≤ e_b(2|b̂| + e_b)` and `|ac − âĉ| ≤ |â|e_c + e_a(|ĉ| +
+/// e_c)`; the two products and the difference round three times, within
+/// `(2u + u²)(b̂² + |âĉ|)`, counted `3u`. The bound's own roundings (a
+/// dozen operations) are covered by [`SLACK`]. The products are of degree
+/// six in f32 data, so neither overflows nor leaves the normal range
+/// (see Range above), and a value certain of its sign (`|Δ̂| > 2E`, with
+/// `E ≥ 3u b̂²`) is normal too.
+///
+/// ```
+/// use rayoracle::num::dd::Approx;
+/// # use rayoracle::quadric::stages::disc_near;
+/// let x = |v: f64| Approx { v, e: 1e-20 };
+/// // t² − 10t + 24: b = −5, Δ/4 = 25 − 24 = 1.
+/// let d = disc_near(x(1.0), x(-5.0), x(24.0), 1.0);
+/// assert!(d.v == 1.0 && d.e > 1e-19 && d.e < 1e-13);
+/// ```
+#[doc(hidden)]
+#[inline(always)]
+pub fn disc_near(a: Approx, b: Approx, c: Approx, shrink: f64) -> Approx {
+    let (b2, ac) = (b.v * b.v, a.v * c.v);
+    let v = b2 - ac;
+    let data = b.e * (2.0 * b.v.abs() + b.e) + a.v.abs() * c.e + a.e * (c.v.abs() + c.e);
+    let e = (data + 3.0 * U * (b2 + ac.abs())) * SLACK * shrink;
+    Approx { v, e }
+}
+
+/// The stages after the filter, [`tracked`] then [`double_word`], on one
+/// computation of the exact terms, with the products' errors found by `P`;
+/// and the stage that answered.
+#[inline(always)]
+fn later_by<P: Product>(
+    k: &[f64; 10],
+    o: [f64; 3],
+    d: [f64; 3],
+    shrink: f64,
+) -> Option<(QuadricHit, Stage)> {
+    let t = ExactTerms::new::<P>(k, o, d);
+    match tracked_of::<P>(&t) {
+        Some(h) => Some((h, Stage::Tracked)),
+        None => double_word_of::<P>(&t, shrink).map(|h| (h, Stage::DoubleWord)),
+    }
+}
+
+/// [`tracked`], then [`double_word`] where it gives `None`, with the
+/// stage that answered: the same answers as the two called in turn, from
+/// one computation of the terms, and on a CPU with FMA ([`Fma`]) from a
+/// copy compiled for it, whose TwoProduct is one fused multiply-add
+/// ([`Fused`]; the same exact pairs, so the same bits).
+///
+/// ```
+/// use rayoracle::{quadric::{QuadricHit, stages::later}, stage::Stage};
+/// let cone = [1.0, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+/// let h = later(&cone, [-1.0, 0.0, -2.0], [1.0, 0.0, 2.0], 1.0);
+/// assert_eq!(h, Some((QuadricHit::One(1.0), Stage::Tracked)));
+/// let k = [1.0, 0.0, 1.0, 0.0, -2.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+/// let (o, d) = ([0.1f32 as f64, 0.0, 0.0], [0.3f32 as f64, 0.0, 0.1f32 as f64]);
+/// assert!(matches!(later(&k, o, d, 1.0), Some((QuadricHit::One(_), Stage::DoubleWord))));
+/// ```
+pub fn later(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<(QuadricHit, Stage)> {
+    #[cfg(target_feature = "fma")]
+    return later_by::<Fused>(k, o, d, shrink);
+    #[cfg(not(target_feature = "fma"))]
+    {
+        #[cfg(target_arch = "x86_64")]
+        if let Some(fma) = Fma::detect() {
+            #[target_feature(enable = "fma")]
+            fn run(
+                _: Fma,
+                k: &[f64; 10],
+                o: [f64; 3],
+                d: [f64; 3],
+                shrink: f64,
+            ) -> Option<(QuadricHit, Stage)> {
+                later_by::<Fused>(k, o, d, shrink)
+            }
+            // SAFETY: the token exists only where the CPU has FMA, the one
+            // feature `run` is compiled for. BENCH-FIGURE
+            return unsafe { run(fma, k, o, d, shrink) };
+        }
+        later_by::<Dekker>(k, o, d, shrink)
+    }
 }
