@@ -307,40 +307,6 @@ impl Acc {
         self.lo = s;
         self.n += 1;
     }
-    /// Adds the sum `other` exactly: its two words (in [`Acc::wide`],
-    /// its third word too, into the third), and its bookkeeping. The low
-    /// word is then a sum in some other order of the same values plus
-    /// `other`'s partial sums, whose error is still within `γₘ Σ|eᵢ|` for
-    /// `m` the number of additions (any summation tree's depth is at most
-    /// its count of additions), and `Σ|eᵢ|` counts each partial sum
-    /// again as a value, which only widens the bound. Two sums built side
-    /// by side and merged have half the dependency chain of one.
-    ///
-    /// ```
-    /// use rayoracle::num::dd::Acc;
-    /// let (mut x, mut y) = (Acc::new(), Acc::new());
-    /// x.add_prod(0.1, 0.1);
-    /// y.add(-0.01);
-    /// x.merge(y);
-    /// let v = x.finish(1.0);
-    /// assert!(v.err == 0.0 && v.hi != 0.0 && v.sign_known());
-    /// ```
-    #[inline(always)]
-    pub fn merge(&mut self, other: Acc) {
-        self.add(other.hi);
-        self.low(other.lo);
-        if self.wide {
-            let (s2, r2) = two_sum(self.lo2, other.lo2);
-            self.exact &= r2 == 0.0;
-            self.lo2 = s2;
-            self.mag += other.lo2.abs();
-            self.n += 1;
-        }
-        self.exact &= other.exact;
-        self.mag += other.mag;
-        self.n += other.n;
-        self.extra += other.extra;
-    }
     /// Adds `x` exactly.
     #[inline(always)]
     pub fn add(&mut self, x: f64) {
@@ -366,15 +332,10 @@ impl Acc {
     /// that, for the `1 + u` and its own roundings.
     #[inline(always)]
     pub fn add_dd_prod(&mut self, x: Dd, y: Dd) {
-        self.add_dd_prod_by::<Dekker>(x, y);
-    }
-    /// [`Acc::add_dd_prod`] with the products' errors found by `P`.
-    #[inline(always)]
-    pub fn add_dd_prod_by<P: Product>(&mut self, x: Dd, y: Dd) {
-        self.add_pair(P::two_prod(x.hi, y.hi));
-        self.add_pair(P::two_prod(x.hi, y.lo));
-        self.add_pair(P::two_prod(x.lo, y.hi));
-        self.add_pair(P::two_prod(x.lo, y.lo));
+        self.add_prod(x.hi, y.hi);
+        self.add_prod(x.hi, y.lo);
+        self.add_prod(x.lo, y.hi);
+        self.add_prod(x.lo, y.lo);
         self.extra += 2.0 * (x.hi.abs() * y.err + x.err * (y.hi.abs() + y.err));
     }
     /// The sum, with its bound multiplied by `shrink` (1 in the kernels;
@@ -411,6 +372,90 @@ impl Acc {
             lo,
             err: (d.abs() + chain + self.extra) * SLACK * shrink,
         }
+    }
+}
+
+/// A sum of exact pairs `p + e` whose values all lie on one grid, the
+/// integer multiples of a power of two `g` given to [`GridAcc::finish`]:
+/// the high parts through TwoSum, every error into a low word by plain
+/// additions. TwoSum errors and roundings of multiples of `g` are
+/// multiples of `g` (a rounding lands on a grid coarser than `g` or does
+/// nothing), so every value entering the low word is one; where the sum
+/// of their magnitudes `m` stays below `2⁵²g`, every partial sum, in any
+/// order, is a multiple of `g` below `2⁵³g`, representable, and the low
+/// word is exact. That one comparison replaces [`Acc`]'s TwoSum check of
+/// each low addition, and the pairs' two errors go in as one addition,
+/// which halves the low word's dependency chain. Otherwise the bound is
+/// [`Acc`]'s, `2nu m` for `n` values.
+///
+/// ```
+/// use rayoracle::num::dd::{GridAcc, two_prod};
+/// // (1 + 2⁻⁵²)² − 1 = 2⁻⁵¹ + 2⁻¹⁰⁴, on the grid 2⁻¹⁰⁴: exact.
+/// let a = 1.0 + f64::EPSILON;
+/// let mut x = GridAcc::new();
+/// x.add_pair(two_prod(a, a));
+/// x.add_pair((-1.0, 0.0));
+/// let v = x.finish(2f64.powi(-104), 1.0);
+/// assert_eq!((v.hi, v.lo, v.err), (2f64.powi(-51), 2f64.powi(-104), 0.0));
+/// // Told of a finer grid, the test fails: a bound, no certain value.
+/// assert!(x.finish(2f64.powi(-200), 1.0).err > 0.0);
+/// ```
+///
+/// [`GridAcc::wide`] keeps a third word, as [`Acc::wide`] does: the low
+/// word's additions are TwoSums whose errors go to it by plain additions,
+/// and the grid test is on the magnitudes of those errors.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct GridAcc(Acc);
+
+impl GridAcc {
+    /// The empty sum: exactly 0.
+    pub fn new() -> GridAcc {
+        GridAcc(Acc::new())
+    }
+    /// The empty sum with a third word.
+    pub fn wide() -> GridAcc {
+        GridAcc(Acc::wide())
+    }
+    /// Adds `p + e`, both multiples of the grid.
+    #[inline(always)]
+    pub fn add_pair(&mut self, (p, e): (f64, f64)) {
+        let x = &mut self.0;
+        let (s, e1) = two_sum(x.hi, p);
+        x.hi = s;
+        if x.wide {
+            let (f, r0) = two_sum(e, e1);
+            let (l, r1) = two_sum(x.lo, f);
+            x.lo = l;
+            x.lo2 += r0 + r1;
+            x.mag += r0.abs() + r1.abs();
+        } else {
+            x.lo += e + e1;
+            x.mag += e.abs() + e1.abs();
+        }
+        x.n += 2;
+    }
+    /// Adds the product of two double-word values as [`Acc::add_dd_prod`]
+    /// does, its products' errors found by `P`; the words must be
+    /// multiples of grids whose product is the sum's.
+    #[inline(always)]
+    pub fn add_dd_prod_by<P: Product>(&mut self, x: Dd, y: Dd) {
+        self.add_pair(P::two_prod(x.hi, y.hi));
+        self.add_pair(P::two_prod(x.hi, y.lo));
+        self.add_pair(P::two_prod(x.lo, y.hi));
+        self.add_pair(P::two_prod(x.lo, y.lo));
+        self.0.extra += 2.0 * (x.hi.abs() * y.err + x.err * (y.hi.abs() + y.err));
+    }
+    /// The sum, exact (`err = 0`) where the last word's values sum below
+    /// `2⁵²·grid` in magnitude (the computed `m`, within `2nu` of the
+    /// true one, is widened by [`SLACK`] for the test), else with the
+    /// bound `2nu m`; renormalised and bounded as by [`Acc::finish`],
+    /// the bound multiplied by `shrink`. `grid` must be a power of two that divides every
+    /// value added.
+    #[inline(always)]
+    pub fn finish(self, grid: f64, shrink: f64) -> Dd {
+        let mut acc = self.0;
+        acc.exact = acc.mag * SLACK < grid * 4_503_599_627_370_496.0;
+        acc.finish(shrink)
     }
 }
 

@@ -58,7 +58,7 @@
 
 use super::QuadricHit;
 use crate::num::certify::{SLACK, U, certify, div, quotient_bound};
-use crate::num::dd::{Acc, Approx, Dekker, Fma, Fused, Product, quotient, two_roots};
+use crate::num::dd::{Approx, Dekker, Fma, Fused, GridAcc, Product, quotient, two_roots};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
 use crate::stage::Stage;
@@ -246,8 +246,9 @@ pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filter
 /// is exact (two f32 values), its product with `y` is split by
 /// TwoProduct (`P`), exact since every such product is a multiple of
 /// `2⁻⁴⁴⁷` below `2³⁸⁴`. Computed once for both later stages.
+/// With them, a grid every term lies on ([`grid`]).
 #[derive(Clone, Copy)]
-struct ExactTerms([Pair; 6], [Pair; 12], [Pair; 10]);
+struct ExactTerms([Pair; 6], [Pair; 12], [Pair; 10], f64);
 
 impl ExactTerms {
     #[inline(always)]
@@ -257,8 +258,55 @@ impl ExactTerms {
             let (h, l) = P::two_prod(c.0 * x.0, y.0);
             Pair(h, l)
         });
-        ExactTerms(a, b, g)
+        ExactTerms(a, b, g, grid(k, o, d))
     }
+}
+
+/// The exponent of the lowest set bit of a nonzero finite `x`
+/// (`x = m·2ᵉ` with `m` odd), and a large number for 0 (which lies on every
+/// grid); meaningless, but harmless, for a non-finite `x`, whose terms
+/// make every sum NaN.
+#[inline(always)]
+fn low_bit(x: f64) -> i32 {
+    let b = x.to_bits();
+    let m = (b & ((1 << 52) - 1)) | (1 << 52);
+    let e = ((b >> 52) & 0x7ff) as i32;
+    if x == 0.0 {
+        2000
+    } else {
+        e - 1075 + m.trailing_zeros() as i32
+    }
+}
+
+/// A power of two `g` that divides every term `k·x·y` of α, β and γ: with
+/// `2^κ` the least lowest set bit of the coefficients and `2^ν` that of
+/// the origin, the direction and 1, every term is a multiple of `2^(κ +
+/// 2ν)` (`ν ≤ 0`, and a term has at most two factors besides its
+/// coefficient; a zero factor makes the term 0, on every grid). The
+/// exponent is at least `−149·3` for f32 data; it is capped at 400, which
+/// only applies where every coefficient is 0 (then every term is, and any
+/// grid holds them) or not finite (then every sum is NaN), so that `g²`
+/// is a normal f64 too.
+///
+/// ```
+/// # use rayoracle::quadric::stages::grid;
+/// // Coefficients 3 and 0.5 (2⁻¹), data 0.75 (lowest bit 2⁻²): 2⁻⁵.
+/// let k = [3.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+/// assert_eq!(grid(&k, [0.75, 2.0, 0.0], [1.0, 0.0, 0.0]), 2f64.powi(-5));
+/// ```
+#[doc(hidden)]
+#[inline(always)]
+pub fn grid(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> f64 {
+    let mut kappa = 2000;
+    for &c in k {
+        kappa = kappa.min(low_bit(c));
+    }
+    let mut nu = 0;
+    for &x in o.iter().chain(&d) {
+        nu = nu.min(low_bit(x));
+    }
+    let e = (kappa + 2 * nu).clamp(-1000, 400);
+    f64::from_bits(((1023 + e) as u64) << 52)
 }
 
 /// The second stage: α, β, γ and `β² − 4αγ` tracked for exactness
@@ -384,20 +432,23 @@ pub fn double_word(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Opti
 /// [`double_word`] on the exact terms.
 #[inline(always)]
 fn double_word_of<P: Product>(t: &ExactTerms, shrink: f64) -> Option<QuadricHit> {
-    // The sums term by term side by side (β's halves apart, then merged),
-    // so that their dependency chains overlap.
-    let (mut a, mut b, mut b2, mut g) = (Acc::new(), Acc::new(), Acc::new(), Acc::new());
-    for i in 0..6 {
-        a.add_pair((t.0[i].0, t.0[i].1));
+    // The sums term by term side by side, so that their dependency chains
+    // overlap.
+    let (mut a, mut b, mut g) = (GridAcc::new(), GridAcc::new(), GridAcc::new());
+    for i in 0..12 {
+        if i < 6 {
+            a.add_pair((t.0[i].0, t.0[i].1));
+        }
         b.add_pair((t.1[i].0, t.1[i].1));
-        b2.add_pair((t.1[i + 6].0, t.1[i + 6].1));
-        g.add_pair((t.2[i].0, t.2[i].1));
+        if i < 10 {
+            g.add_pair((t.2[i].0, t.2[i].1));
+        }
     }
-    for p in &t.2[6..] {
-        g.add_pair((p.0, p.1));
-    }
-    b.merge(b2);
-    let (alpha, beta, gamma) = (a.finish(shrink), b.finish(shrink), g.finish(shrink));
+    let (alpha, beta, gamma) = (
+        a.finish(t.3, shrink),
+        b.finish(t.3, shrink),
+        g.finish(t.3, shrink),
+    );
     if alpha.is_zero() {
         return if beta.is_zero() {
             if gamma.is_zero() {
@@ -428,10 +479,12 @@ fn double_word_of<P: Product>(t: &ExactTerms, shrink: f64) -> Option<QuadricHit>
             return Some(QuadricHit::Two(t0, t1));
         }
     }
-    let mut disc = Acc::wide();
+    // β/2's words are multiples of g/2, α's and γ's of g: the products,
+    // of g²/4 (at least 2⁻⁸⁹⁶, a normal f64).
+    let mut disc = GridAcc::wide();
     disc.add_dd_prod_by::<P>(b, b);
     disc.add_dd_prod_by::<P>(alpha.scale(-1.0), gamma);
-    let disc = disc.finish(shrink);
+    let disc = disc.finish(t.3 * t.3 * 0.25, shrink);
     if disc.is_zero() {
         let t = quotient(-b.approx(), alpha.approx(), shrink)?;
         return Some(QuadricHit::One(t));
