@@ -570,6 +570,49 @@ mod tests {
                 prop_assert_eq!(two(d.hi) + two(d.lo), exact);
             }
         }
+
+        /// The same for [`GridAcc`], narrow and wide, told the grid of
+        /// the products, `2⁻⁸⁰`: where it claims exactness (its grid
+        /// test), the words are the exact sum.
+        #[test]
+        fn grid_acc_sign(v in prop::collection::vec((grid(), grid()), 1..8), wide: bool) {
+            let mut acc = if wide { GridAcc::wide() } else { GridAcc::new() };
+            let mut exact = 0i128;
+            for &(a, b) in &v {
+                acc.add_pair(two_prod(a as f64, b as f64));
+                exact += scaled(a) * scaled(b);
+            }
+            let d = acc.finish(2f64.powi(-80), 1.0);
+            if d.is_zero() {
+                prop_assert_eq!(exact, 0);
+            }
+            if d.sign_known() {
+                prop_assert_eq!(d.hi.signum() as i128, exact.signum());
+            }
+            let two = |x: f64| (x * 2f64.powi(80)) as i128;
+            if d.err == 0.0 {
+                prop_assert_eq!(two(d.hi) + two(d.lo), exact);
+            } else {
+                let miss = (exact - two(d.hi) - two(d.lo)).unsigned_abs() as f64;
+                prop_assert!(miss <= d.err * 2f64.powi(80));
+            }
+        }
+    }
+
+    /// [`GridAcc`] on a cancelling sum whose low word needs more than 53
+    /// bits above the grid: the narrow one gives a bound that covers the
+    /// truth, the wide one is exact.
+    #[test]
+    fn grid_acc_wide_keeps_a_third_word() {
+        let terms = [1.0, 2f64.powi(-60), 2f64.powi(-120)];
+        let run = |mut acc: GridAcc| {
+            terms.iter().for_each(|&x| acc.add_pair((x, 0.0)));
+            terms.iter().for_each(|&x| acc.add_pair((-x, 0.0)));
+            acc.finish(2f64.powi(-120), 1.0)
+        };
+        let (narrow, wide) = (run(GridAcc::new()), run(GridAcc::wide()));
+        assert!(!narrow.is_zero() && (narrow.hi + narrow.lo).abs() <= narrow.err);
+        assert!(wide.is_zero(), "{wide:?}");
     }
 
     /// A cancelling sum whose low word rounds: not exact, and its bound

@@ -58,7 +58,7 @@
 
 use super::QuadricHit;
 use crate::num::certify::{SLACK, U, certify, div, quotient_bound};
-use crate::num::dd::{Approx, Dekker, Fma, Fused, GridAcc, Product, quotient, two_roots};
+use crate::num::dd::{Acc, Approx, Dekker, Fma, Fused, GridAcc, Product, quotient, two_roots};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
 use crate::stage::Stage;
@@ -347,8 +347,21 @@ fn tracked_of<P: Product>(t: &ExactTerms) -> Option<QuadricHit> {
         return None;
     }
     let mut x = Tracked::new();
-    let mut sum = |v: &[Pair]| v.iter().fold(0.0, |s, y| x.add(s, y.0));
-    let (alpha, beta, gamma) = (sum(&t.0), sum(&t.1), sum(&t.2));
+    // The terms are multiples of the grid g: where their magnitudes sum
+    // below 2⁵²g, every partial sum is a multiple of g below 2⁵³g, exact,
+    // and plain sums need no check (the sum of magnitudes is within 28u
+    // of its computed value, covered by SLACK).
+    let plain = |v: &[Pair]| {
+        v.iter()
+            .fold((0.0, 0.0), |(s, m), y| (s + y.0, m + y.0.abs()))
+    };
+    let ((a, ma), (b, mb), (g, mg)) = (plain(&t.0), plain(&t.1), plain(&t.2));
+    let (alpha, beta, gamma) = if (ma + mb + mg) * SLACK < t.3 * 4_503_599_627_370_496.0 {
+        (a, b, g)
+    } else {
+        let mut sum = |v: &[Pair]| v.iter().fold(0.0, |s, y| x.add(s, y.0));
+        (sum(&t.0), sum(&t.1), sum(&t.2))
+    };
     let b2 = x.mul_by::<P>(beta, beta);
     let ag = x.mul_by::<P>(4.0 * alpha, gamma);
     let disc = x.sub(b2, ag);
@@ -407,6 +420,11 @@ fn pairs<const N: usize>(x: &[f64; N]) -> [Pair; N] {
 /// and γ exactly as two words (a multiple of `2⁻⁴⁴⁷`), each coefficient
 /// their sum in two words, and `Δ/4 = (β/2)² − αγ` as the sum of the exact
 /// products of their words (multiples of `2⁻⁸⁹⁶`, so TwoProduct is exact).
+/// The sums are [`GridAcc`]s on the grid of the data ([`grid`]), and
+/// [`Acc`]s, which check each low addition, where that grid is too fine
+/// to prove them exact. `Δ` is first taken from the leading words
+/// ([`disc_near`]) and summed exactly only where that leaves its sign or
+/// the roots undecided.
 /// Where no low word rounded, α, β, γ and `Δ` are exact, and so are their
 /// signs and zeros: α = 0 (the linear root `−γ/β`, or the whole line, or
 /// nothing), a double root `−β/2α` (pbrt-v4's `Quadratic` branches);
@@ -449,6 +467,18 @@ fn double_word_of<P: Product>(t: &ExactTerms, shrink: f64) -> Option<QuadricHit>
         b.finish(t.3, shrink),
         g.finish(t.3, shrink),
     );
+    // Where the grid test fails (data of widely spread exponents), the
+    // sums again with every low addition checked.
+    let (alpha, beta, gamma) = if alpha.err == 0.0 && beta.err == 0.0 && gamma.err == 0.0 {
+        (alpha, beta, gamma)
+    } else {
+        let sum = |v: &[Pair]| {
+            let mut acc = Acc::new();
+            v.iter().for_each(|p| acc.add_pair((p.0, p.1)));
+            acc.finish(shrink)
+        };
+        (sum(&t.0), sum(&t.1), sum(&t.2))
+    };
     if alpha.is_zero() {
         return if beta.is_zero() {
             if gamma.is_zero() {
@@ -484,7 +514,15 @@ fn double_word_of<P: Product>(t: &ExactTerms, shrink: f64) -> Option<QuadricHit>
     let mut disc = GridAcc::wide();
     disc.add_dd_prod_by::<P>(b, b);
     disc.add_dd_prod_by::<P>(alpha.scale(-1.0), gamma);
-    let disc = disc.finish(t.3 * t.3 * 0.25, shrink);
+    let mut disc = disc.finish(t.3 * t.3 * 0.25, shrink);
+    // As for the coefficients: where exact data fails the grid test, the
+    // sum with every low addition checked.
+    if disc.err != 0.0 && alpha.err == 0.0 && beta.err == 0.0 && gamma.err == 0.0 {
+        let mut acc = Acc::wide();
+        acc.add_dd_prod(b, b);
+        acc.add_dd_prod(alpha.scale(-1.0), gamma);
+        disc = acc.finish(shrink);
+    }
     if disc.is_zero() {
         let t = quotient(-b.approx(), alpha.approx(), shrink)?;
         return Some(QuadricHit::One(t));
