@@ -25,6 +25,14 @@
 //!   way, for the discriminants, whose exact zeros can span more than two
 //!   words; [`Acc::finish`] renormalises the three words exactly into two
 //!   and a remainder, which joins the bound.
+//! * [`GridAcc`] is [`Acc`] for values known to lie on one grid (integer
+//!   multiples of a power of two `g`, which the caller derives from the
+//!   data): one comparison, `Σ|eᵢ| < 2⁵²g`, proves its low word exact in
+//!   place of a TwoSum per addition.
+//! * [`Product`] chooses how TwoProduct runs: [`Dekker`] (plain
+//!   arithmetic, any build) or [`Fused`] (one fused multiply-add, for code
+//!   compiled with the `fma` target feature, entered with an [`Fma`]
+//!   token). Both return the same exact pair.
 //!
 //! The kernels feed it polynomials in f32 data: the sphere's and plane's
 //! values are multiples of `2⁻²⁹⁸`, the quadric's of `2⁻⁴⁴⁷`, and sums,
