@@ -311,7 +311,9 @@ pub fn grid(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> f64 {
 
 /// The second stage: α, β, γ and `β² − 4αγ` tracked for exactness
 /// ([`Tracked`]), each term `k·x·y` as `k·x` (a product of two f32
-/// values, exact in f64) times `y`, checked. Where no
+/// values, exact in f64) times `y`, checked. The sums of the terms need no
+/// check where the sum of their magnitudes is below `2⁵²g`, `g` the data's
+/// [`grid`]. Where no
 /// operation rounded, the class follows from signs, as in pbrt-v4's
 /// `Quadratic` with its α = 0 branch: a linear root `−γ/β` or a double
 /// root `−β/2α` rounds once (certified with `2u`); two roots `q/α` and
