@@ -58,7 +58,11 @@
 
 use super::QuadricHit;
 use crate::num::certify::{SLACK, U, certify, div, quotient_bound};
-use crate::num::dd::{Acc, Approx, Dekker, Fma, Fused, GridAcc, Product, quotient, two_roots};
+#[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
+use crate::num::dd::Fma;
+#[cfg(any(target_arch = "x86_64", target_feature = "fma"))]
+use crate::num::dd::Fused;
+use crate::num::dd::{Acc, Approx, Dekker, GridAcc, Product, quotient, two_roots};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
 use crate::stage::Stage;
@@ -600,30 +604,50 @@ fn later_by<P: Product>(
 /// assert!(matches!(later(&k, o, d, 1.0), Some((QuadricHit::One(_), Stage::DoubleWord))));
 /// ```
 pub fn later(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<(QuadricHit, Stage)> {
-    #[cfg(target_feature = "fma")]
-    return later_by::<Fused>(k, o, d, shrink);
-    #[cfg(not(target_feature = "fma"))]
-    {
-        #[cfg(target_arch = "x86_64")]
-        if let Some(fma) = Fma::detect() {
-            #[target_feature(enable = "fma")]
-            fn run(
-                _: Fma,
-                k: &[f64; 10],
-                o: [f64; 3],
-                d: [f64; 3],
-                shrink: f64,
-            ) -> Option<(QuadricHit, Stage)> {
-                later_by::<Fused>(k, o, d, shrink)
-            }
-            // SAFETY: the token exists only where the CPU has FMA, the one
-            // feature `run` is compiled for. In `rayoracle report` (default
-            // build, AMD EPYC, one run each with and without this copy),
-            // the reference took 228.7 against 257.0 ns/ray on
-            // quadric/double-plane, 200.2 against 219.2 on
-            // alpha-near-zero-rotated and 122.6 against 144.1 on cone-apex.
-            return unsafe { run(fma, k, o, d, shrink) };
+    later_fastest(k, o, d, shrink)
+}
+
+/// [`later`] where the build targets FMA: always the fused copy.
+#[cfg(target_feature = "fma")]
+#[inline(always)]
+fn later_fastest(
+    k: &[f64; 10],
+    o: [f64; 3],
+    d: [f64; 3],
+    shrink: f64,
+) -> Option<(QuadricHit, Stage)> {
+    later_by::<Fused>(k, o, d, shrink)
+}
+
+/// [`later`] where the build does not target FMA: the fused copy where
+/// the CPU has it, Dekker's elsewhere.
+#[cfg(not(target_feature = "fma"))]
+#[inline(always)]
+fn later_fastest(
+    k: &[f64; 10],
+    o: [f64; 3],
+    d: [f64; 3],
+    shrink: f64,
+) -> Option<(QuadricHit, Stage)> {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(fma) = Fma::detect() {
+        #[target_feature(enable = "fma")]
+        fn run(
+            _: Fma,
+            k: &[f64; 10],
+            o: [f64; 3],
+            d: [f64; 3],
+            shrink: f64,
+        ) -> Option<(QuadricHit, Stage)> {
+            later_by::<Fused>(k, o, d, shrink)
         }
-        later_by::<Dekker>(k, o, d, shrink)
+        // SAFETY: the token exists only where the CPU has FMA, the one
+        // feature `run` is compiled for. In `rayoracle report` (default
+        // build, AMD EPYC, one run each with and without this copy), the
+        // reference took 228.7 against 257.0 ns/ray on
+        // quadric/double-plane, 200.2 against 219.2 on
+        // alpha-near-zero-rotated and 122.6 against 144.1 on cone-apex.
+        return unsafe { run(fma, k, o, d, shrink) };
     }
+    later_by::<Dekker>(k, o, d, shrink)
 }
