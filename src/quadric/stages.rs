@@ -604,32 +604,7 @@ fn later_by<P: Product>(
 /// assert!(matches!(later(&k, o, d, 1.0), Some((QuadricHit::One(_), Stage::DoubleWord))));
 /// ```
 pub fn later(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<(QuadricHit, Stage)> {
-    later_fastest(k, o, d, shrink)
-}
-
-/// [`later`] where the build targets FMA: always the fused copy.
-#[cfg(target_feature = "fma")]
-#[inline(always)]
-fn later_fastest(
-    k: &[f64; 10],
-    o: [f64; 3],
-    d: [f64; 3],
-    shrink: f64,
-) -> Option<(QuadricHit, Stage)> {
-    later_by::<Fused>(k, o, d, shrink)
-}
-
-/// [`later`] where the build does not target FMA: the fused copy where
-/// the CPU has it, Dekker's elsewhere.
-#[cfg(not(target_feature = "fma"))]
-#[inline(always)]
-fn later_fastest(
-    k: &[f64; 10],
-    o: [f64; 3],
-    d: [f64; 3],
-    shrink: f64,
-) -> Option<(QuadricHit, Stage)> {
-    #[cfg(target_arch = "x86_64")]
+    #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
     if let Some(fma) = Fma::detect() {
         #[target_feature(enable = "fma")]
         fn run(
@@ -649,5 +624,12 @@ fn later_fastest(
         // alpha-near-zero-rotated and 122.6 against 144.1 on cone-apex.
         return unsafe { run(fma, k, o, d, shrink) };
     }
-    later_by::<Dekker>(k, o, d, shrink)
+    later_by::<BuildProduct>(k, o, d, shrink)
 }
+
+/// TwoProduct as the build's target features allow: fused where they
+/// include FMA, Dekker's otherwise.
+#[cfg(target_feature = "fma")]
+type BuildProduct = Fused;
+#[cfg(not(target_feature = "fma"))]
+type BuildProduct = Dekker;
