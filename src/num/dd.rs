@@ -453,6 +453,26 @@ impl GridAcc {
         self.add_pair(P::two_prod(x.lo, y.lo));
         self.0.extra += 2.0 * (x.hi.abs() * y.err + x.err * (y.hi.abs() + y.err));
     }
+    /// Adds `x²` as [`GridAcc::add_dd_prod_by`] adds `x·x`, with the two
+    /// cross products as one, `(2x.hi)·x.lo` (the doubling is exact).
+    ///
+    /// ```
+    /// use rayoracle::num::dd::{Dd, Dekker, GridAcc};
+    /// // (3 + 2⁻⁶⁰)² − 9 = 6·2⁻⁶⁰ + 2⁻¹²⁰, on the grid 2⁻¹²⁰: exact.
+    /// let x = Dd { hi: 3.0, lo: 2f64.powi(-60), err: 0.0 };
+    /// let mut s = GridAcc::wide();
+    /// s.add_square_by::<Dekker>(x);
+    /// s.add_pair((-9.0, 0.0));
+    /// let v = s.finish(2f64.powi(-120), 1.0);
+    /// assert_eq!((v.hi, v.lo, v.err), (6.0 * 2f64.powi(-60), 2f64.powi(-120), 0.0));
+    /// ```
+    #[inline(always)]
+    pub fn add_square_by<P: Product>(&mut self, x: Dd) {
+        self.add_pair(P::two_prod(x.hi, x.hi));
+        self.add_pair(P::two_prod(x.hi + x.hi, x.lo));
+        self.add_pair(P::two_prod(x.lo, x.lo));
+        self.0.extra += 2.0 * (x.hi.abs() * x.err + x.err * (x.hi.abs() + x.err));
+    }
     /// The sum, exact (`err = 0`) where the last word's values sum below
     /// `2⁵²·grid` in magnitude (the computed `m`, within `2nu` of the
     /// true one, is widened by [`SLACK`] for the test), else with the

@@ -518,7 +518,7 @@ fn double_word_of<P: Product>(t: &ExactTerms, shrink: f64) -> Option<QuadricHit>
     // β/2's words are multiples of g/2, α's and γ's of g: the products,
     // of g²/4 (at least 2⁻⁸⁹⁶, a normal f64).
     let mut disc = GridAcc::wide();
-    disc.add_dd_prod_by::<P>(b, b);
+    disc.add_square_by::<P>(b);
     disc.add_dd_prod_by::<P>(alpha.scale(-1.0), gamma);
     let mut disc = disc.finish(t.3 * t.3 * 0.25, shrink);
     // As for the coefficients: where exact data fails the grid test, the
