@@ -456,18 +456,10 @@ pub fn double_word(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Opti
 /// [`double_word`] on the exact terms.
 #[inline(always)]
 fn double_word_of<P: Product>(t: &ExactTerms, shrink: f64) -> Option<QuadricHit> {
-    // The sums term by term side by side, so that their dependency chains
-    // overlap.
     let (mut a, mut b, mut g) = (GridAcc::new(), GridAcc::new(), GridAcc::new());
-    for i in 0..12 {
-        if i < 6 {
-            a.add_pair((t.0[i].0, t.0[i].1));
-        }
-        b.add_pair((t.1[i].0, t.1[i].1));
-        if i < 10 {
-            g.add_pair((t.2[i].0, t.2[i].1));
-        }
-    }
+    t.0.iter().for_each(|p| a.add_pair((p.0, p.1)));
+    t.1.iter().for_each(|p| b.add_pair((p.0, p.1)));
+    t.2.iter().for_each(|p| g.add_pair((p.0, p.1)));
     let (alpha, beta, gamma) = (
         a.finish(t.3, shrink),
         b.finish(t.3, shrink),
