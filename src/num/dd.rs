@@ -25,6 +25,14 @@
 //!   way, for the discriminants, whose exact zeros can span more than two
 //!   words; [`Acc::finish`] renormalises the three words exactly into two
 //!   and a remainder, which joins the bound.
+//! * [`GridAcc`] is [`Acc`] for values known to lie on one grid (integer
+//!   multiples of a power of two `g`, which the caller derives from the
+//!   data): one comparison, `Σ|eᵢ| < 2⁵²g`, proves its low word exact in
+//!   place of a TwoSum per addition.
+//! * [`Product`] chooses how TwoProduct runs: [`Dekker`] (plain
+//!   arithmetic, any build) or [`Fused`] (one fused multiply-add, for code
+//!   compiled with the `fma` target feature, entered with an [`Fma`]
+//!   token). Both return the same exact pair.
 //!
 //! The kernels feed it polynomials in f32 data: the sphere's and plane's
 //! values are multiples of `2⁻²⁹⁸`, the quadric's of `2⁻⁴⁴⁷`, and sums,
@@ -97,6 +105,87 @@ pub fn two_prod(a: f64, b: f64) -> (f64, f64) {
     let (ah, al) = split(a);
     let (bh, bl) = split(b);
     (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
+}
+
+/// How a [`two_prod`] is computed: the result is the same exact pair
+/// either way, so the choice changes only the speed.
+pub trait Product: Copy {
+    /// `ab` and its rounding error, exactly under the conditions of the
+    /// [module](self).
+    fn two_prod(a: f64, b: f64) -> (f64, f64);
+}
+
+/// [`two_prod`] by Dekker's algorithm: plain arithmetic, on any build.
+///
+/// ```
+/// use rayoracle::num::dd::{Dekker, Product, two_prod};
+/// assert_eq!(Dekker::two_prod(0.1, 0.3), two_prod(0.1, 0.3));
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct Dekker;
+
+impl Product for Dekker {
+    #[inline(always)]
+    fn two_prod(a: f64, b: f64) -> (f64, f64) {
+        two_prod(a, b)
+    }
+}
+
+/// [`two_prod`] as `p = ab`, `e = fma(a, b, −p)`: the fused multiply-add
+/// rounds `ab − p` once, and that difference is representable under the
+/// [module](self)'s conditions (it is a multiple of `2⁻¹⁰⁷⁴` below
+/// `ulp(p)`), so `e` is the exact error, the same bits as Dekker's.
+/// Dekker's split also fails for `|a|` or `|b| ≥ 2⁹⁹⁵`, where the fused
+/// form still finds the error; the callers' products stay far below that.
+/// One instruction where the CPU has FMA; only run inside a function
+/// compiled with the `fma` target feature ([`Fma`]), since elsewhere
+/// `mul_add` is a call to libm's `fma`, correct but slow.
+///
+/// ```
+/// use rayoracle::num::dd::{Fused, Product, two_prod};
+/// for (a, b) in [(0.1, 0.3), (1.0 + f64::EPSILON, 3.0), (1e300, 1e300)] {
+///     let (p, e) = Fused::two_prod(a, b);
+///     let (q, f) = two_prod(a, b);
+///     assert!(p == q && (e == f || !(e.is_finite() || f.is_finite())));
+/// }
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct Fused;
+
+impl Product for Fused {
+    #[inline(always)]
+    fn two_prod(a: f64, b: f64) -> (f64, f64) {
+        let p = a * b;
+        (p, a.mul_add(b, -p))
+    }
+}
+
+/// Proof that the running CPU has the FMA instructions: only
+/// [`Fma::detect`] makes one. The later stages of the quadric kernels take
+/// a copy of themselves compiled with the `fma` target feature, over
+/// [`Fused`], when it does.
+///
+/// ```
+/// use rayoracle::num::dd::Fma;
+/// # #[cfg(target_arch = "x86_64")]
+/// assert_eq!(Fma::detect().is_some(), is_x86_feature_detected!("fma"));
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct Fma(());
+
+impl Fma {
+    /// The token, where the CPU has FMA (cached by the standard library: a
+    /// load and a test per call); always on a build whose target has it.
+    #[inline(always)]
+    pub fn detect() -> Option<Fma> {
+        #[cfg(target_feature = "fma")]
+        let on = true;
+        #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
+        let on = is_x86_feature_detected!("fma");
+        #[cfg(not(any(target_arch = "x86_64", target_feature = "fma")))]
+        let on = false;
+        on.then_some(Fma(()))
+    }
 }
 
 /// A double-word value `hi + lo` (`|lo| ≤ u|hi|`) within `err` of the
@@ -174,7 +263,7 @@ pub struct Acc {
     lo2: f64,
     wide: bool,
     mag: f64,
-    n: f64,
+    n: u32,
     exact: bool,
     extra: f64,
 }
@@ -194,7 +283,7 @@ impl Acc {
             lo2: 0.0,
             wide: false,
             mag: 0.0,
-            n: 0.0,
+            n: 0,
             exact: true,
             extra: 0.0,
         }
@@ -224,7 +313,7 @@ impl Acc {
             self.mag += e.abs();
         }
         self.lo = s;
-        self.n += 1.0;
+        self.n += 1;
     }
     /// Adds `x` exactly.
     #[inline(always)]
@@ -269,21 +358,132 @@ impl Acc {
     /// errors of the inputs of [`Acc::add_dd_prod`].
     #[inline(always)]
     pub fn finish(self, shrink: f64) -> Dd {
-        // hi + lo + lo2 = h + c + b = h + l + d = hi' + lo' + d, exactly.
-        let (a, b) = two_sum(self.lo, self.lo2);
-        let (h, c) = two_sum(self.hi, a);
-        let (l, d) = two_sum(c, b);
-        let (hi, lo) = two_sum(h, l);
+        let (hi, lo, d) = if self.wide {
+            // hi + lo + lo2 = h + c + b = h + l + d = hi' + lo' + d, exactly.
+            let (a, b) = two_sum(self.lo, self.lo2);
+            let (h, c) = two_sum(self.hi, a);
+            let (l, d) = two_sum(c, b);
+            let (hi, lo) = two_sum(h, l);
+            (hi, lo, d)
+        } else {
+            // The same with lo2 = 0: b = d = 0 and l = c, so one TwoSum.
+            let (hi, lo) = two_sum(self.hi, self.lo);
+            (hi, lo, 0.0)
+        };
         let chain = if self.exact {
             0.0
         } else {
-            2.0 * self.n * U * self.mag
+            2.0 * f64::from(self.n) * U * self.mag
         };
         Dd {
             hi,
             lo,
             err: (d.abs() + chain + self.extra) * SLACK * shrink,
         }
+    }
+}
+
+/// A sum of exact pairs `p + e` whose values all lie on one grid, the
+/// integer multiples of a power of two `g` given to [`GridAcc::finish`]:
+/// the high parts through TwoSum, every error into a low word by plain
+/// additions. TwoSum errors and roundings of multiples of `g` are
+/// multiples of `g` (a rounding lands on a grid coarser than `g` or does
+/// nothing), so every value entering the low word is one; where the sum
+/// of their magnitudes `m` stays below `2⁵²g`, every partial sum, in any
+/// order, is a multiple of `g` below `2⁵³g`, representable, and the low
+/// word is exact. That one comparison replaces [`Acc`]'s TwoSum check of
+/// each low addition, and the pairs' two errors go in as one addition,
+/// which halves the low word's dependency chain. Otherwise the bound is
+/// [`Acc`]'s, `2nu m` for `n` values.
+///
+/// ```
+/// use rayoracle::num::dd::{GridAcc, two_prod};
+/// // (1 + 2⁻⁵²)² − 1 = 2⁻⁵¹ + 2⁻¹⁰⁴, on the grid 2⁻¹⁰⁴: exact.
+/// let a = 1.0 + f64::EPSILON;
+/// let mut x = GridAcc::new();
+/// x.add_pair(two_prod(a, a));
+/// x.add_pair((-1.0, 0.0));
+/// let v = x.finish(2f64.powi(-104), 1.0);
+/// assert_eq!((v.hi, v.lo, v.err), (2f64.powi(-51), 2f64.powi(-104), 0.0));
+/// // Told of a finer grid, the test fails: a bound, no certain value.
+/// assert!(x.finish(2f64.powi(-200), 1.0).err > 0.0);
+/// ```
+///
+/// [`GridAcc::wide`] keeps a third word, as [`Acc::wide`] does: the low
+/// word's additions are TwoSums whose errors go to it by plain additions,
+/// and the grid test is on the magnitudes of those errors.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct GridAcc(Acc);
+
+impl GridAcc {
+    /// The empty sum: exactly 0.
+    pub fn new() -> GridAcc {
+        GridAcc(Acc::new())
+    }
+    /// The empty sum with a third word.
+    pub fn wide() -> GridAcc {
+        GridAcc(Acc::wide())
+    }
+    /// Adds `p + e`, both multiples of the grid.
+    #[inline(always)]
+    pub fn add_pair(&mut self, (p, e): (f64, f64)) {
+        let x = &mut self.0;
+        let (s, e1) = two_sum(x.hi, p);
+        x.hi = s;
+        if x.wide {
+            let (f, r0) = two_sum(e, e1);
+            let (l, r1) = two_sum(x.lo, f);
+            x.lo = l;
+            x.lo2 += r0 + r1;
+            x.mag += r0.abs() + r1.abs();
+        } else {
+            x.lo += e + e1;
+            x.mag += e.abs() + e1.abs();
+        }
+        x.n += 2;
+    }
+    /// Adds the product of two double-word values as [`Acc::add_dd_prod`]
+    /// does, its products' errors found by `P`; the words must be
+    /// multiples of grids whose product is the sum's.
+    #[inline(always)]
+    pub fn add_dd_prod_by<P: Product>(&mut self, x: Dd, y: Dd) {
+        self.add_pair(P::two_prod(x.hi, y.hi));
+        self.add_pair(P::two_prod(x.hi, y.lo));
+        self.add_pair(P::two_prod(x.lo, y.hi));
+        self.add_pair(P::two_prod(x.lo, y.lo));
+        self.0.extra += 2.0 * (x.hi.abs() * y.err + x.err * (y.hi.abs() + y.err));
+    }
+    /// Adds `x²` as [`GridAcc::add_dd_prod_by`] adds `x·x`, with the two
+    /// cross products as one, `(2x.hi)·x.lo` (the doubling is exact).
+    ///
+    /// ```
+    /// use rayoracle::num::dd::{Dd, Dekker, GridAcc};
+    /// // (3 + 2⁻⁶⁰)² − 9 = 6·2⁻⁶⁰ + 2⁻¹²⁰, on the grid 2⁻¹²⁰: exact.
+    /// let x = Dd { hi: 3.0, lo: 2f64.powi(-60), err: 0.0 };
+    /// let mut s = GridAcc::wide();
+    /// s.add_square_by::<Dekker>(x);
+    /// s.add_pair((-9.0, 0.0));
+    /// let v = s.finish(2f64.powi(-120), 1.0);
+    /// assert_eq!((v.hi, v.lo, v.err), (6.0 * 2f64.powi(-60), 2f64.powi(-120), 0.0));
+    /// ```
+    #[inline(always)]
+    pub fn add_square_by<P: Product>(&mut self, x: Dd) {
+        self.add_pair(P::two_prod(x.hi, x.hi));
+        self.add_pair(P::two_prod(x.hi + x.hi, x.lo));
+        self.add_pair(P::two_prod(x.lo, x.lo));
+        self.0.extra += 2.0 * (x.hi.abs() * x.err + x.err * (x.hi.abs() + x.err));
+    }
+    /// The sum, exact (`err = 0`) where the last word's values sum below
+    /// `2⁵²·grid` in magnitude (the computed `m`, within `2nu` of the
+    /// true one, is widened by [`SLACK`] for the test), else with the
+    /// bound `2nu m`; renormalised and bounded as by [`Acc::finish`],
+    /// the bound multiplied by `shrink`. `grid` must be a power of two that divides every
+    /// value added.
+    #[inline(always)]
+    pub fn finish(self, grid: f64, shrink: f64) -> Dd {
+        let mut acc = self.0;
+        acc.exact = acc.mag * SLACK < grid * 4_503_599_627_370_496.0;
+        acc.finish(shrink)
     }
 }
 
@@ -398,6 +598,49 @@ mod tests {
                 prop_assert_eq!(two(d.hi) + two(d.lo), exact);
             }
         }
+
+        /// The same for [`GridAcc`], narrow and wide, told the grid of
+        /// the products, `2⁻⁸⁰`: where it claims exactness (its grid
+        /// test), the words are the exact sum.
+        #[test]
+        fn grid_acc_sign(v in prop::collection::vec((grid(), grid()), 1..8), wide: bool) {
+            let mut acc = if wide { GridAcc::wide() } else { GridAcc::new() };
+            let mut exact = 0i128;
+            for &(a, b) in &v {
+                acc.add_pair(two_prod(a as f64, b as f64));
+                exact += scaled(a) * scaled(b);
+            }
+            let d = acc.finish(2f64.powi(-80), 1.0);
+            if d.is_zero() {
+                prop_assert_eq!(exact, 0);
+            }
+            if d.sign_known() {
+                prop_assert_eq!(d.hi.signum() as i128, exact.signum());
+            }
+            let two = |x: f64| (x * 2f64.powi(80)) as i128;
+            if d.err == 0.0 {
+                prop_assert_eq!(two(d.hi) + two(d.lo), exact);
+            } else {
+                let miss = (exact - two(d.hi) - two(d.lo)).unsigned_abs() as f64;
+                prop_assert!(miss <= d.err * 2f64.powi(80));
+            }
+        }
+    }
+
+    /// [`GridAcc`] on a cancelling sum whose low word needs more than 53
+    /// bits above the grid: the narrow one gives a bound that covers the
+    /// truth, the wide one is exact.
+    #[test]
+    fn grid_acc_wide_keeps_a_third_word() {
+        let terms = [1.0, 2f64.powi(-60), 2f64.powi(-120)];
+        let run = |mut acc: GridAcc| {
+            terms.iter().for_each(|&x| acc.add_pair((x, 0.0)));
+            terms.iter().for_each(|&x| acc.add_pair((-x, 0.0)));
+            acc.finish(2f64.powi(-120), 1.0)
+        };
+        let (narrow, wide) = (run(GridAcc::new()), run(GridAcc::wide()));
+        assert!(!narrow.is_zero() && (narrow.hi + narrow.lo).abs() <= narrow.err);
+        assert!(wide.is_zero(), "{wide:?}");
     }
 
     /// A cancelling sum whose low word rounds: not exact, and its bound

@@ -6,11 +6,13 @@
 //! expression on one lane (`f64`) or four ([`real::F64x4`]; on x86-64 also
 //! one AVX register, chosen at run time, see `avx`), and every
 //! operation is one correctly rounded IEEE-754 operation (`+`, `−`, `×`,
-//! `÷`, `√`). Nothing here calls `mul_add` (fused on one build, unfused on
-//! another), `recip` or `recip_sqrt` (approximations), and rustc never
-//! contracts `a * b + c` into an FMA, so every build computes the same
-//! bits; and since what a kernel returns is correctly rounded, scalar and
-//! SIMD agree by construction.
+//! `÷`, `√`). Nothing here calls `recip` or `recip_sqrt` (approximations),
+//! and rustc never contracts `a * b + c` into an FMA, so every build
+//! computes the same bits; and since what a kernel returns is correctly
+//! rounded, scalar and SIMD agree by construction. The one `mul_add`,
+//! [`dd::Fused`], computes a TwoProduct error that is exact (so the same
+//! bits as [`dd::Dekker`]'s plain arithmetic), and runs only in code
+//! compiled for FMA.
 //!
 //! The render normals are plain `f32` (and `wide::f32x4`), written once
 //! over [`Lane`]:

@@ -8,7 +8,7 @@
 //! * a sum rounds exactly when Knuth's TwoSum error `(a − (s − b')) + (b −
 //!   b')`, `b' = s − a`, is nonzero;
 //! * a product rounds exactly when Dekker's TwoProduct error
-//!   ([`two_prod`]) is nonzero, or the product is below `2⁻⁹⁰⁰` without a
+//!   ([`two_prod`](super::dd::two_prod)) is nonzero, or the product is below `2⁻⁹⁰⁰` without a
 //!   zero factor. Above that, every partial product of Dekker's algorithm
 //!   is a multiple of `ulp(a)·ulp(b) ≥ 2⁻¹⁰⁶|ab| > 2⁻¹⁰⁷⁴`, so
 //!   representable, and the error is exact; an overflow (or a split that
@@ -26,7 +26,7 @@
 //! assert!(!x.exact());
 //! ```
 
-use super::dd::two_prod;
+use super::dd::{Dekker, Product};
 
 /// The least product magnitude [`Tracked::mul`] vouches for, `2⁻⁹⁰⁰`.
 const TINY: f64 = f64::from_bits((1023 - 900) << 52);
@@ -86,7 +86,21 @@ impl Tracked {
     /// ```
     #[inline(always)]
     pub fn mul(&mut self, a: f64, b: f64) -> f64 {
-        let (p, e) = two_prod(a, b);
+        self.mul_by::<Dekker>(a, b)
+    }
+    /// [`Tracked::mul`] with the product's error found by `P`.
+    ///
+    /// ```
+    /// use rayoracle::num::{dd::Fused, tracked::Tracked};
+    /// let mut x = Tracked::new();
+    /// assert_eq!(x.mul_by::<Fused>(3.0, 0.5), 1.5);
+    /// assert!(x.exact());
+    /// x.mul_by::<Fused>(3.0, 0.1);
+    /// assert!(!x.exact());
+    /// ```
+    #[inline(always)]
+    pub fn mul_by<P: Product>(&mut self, a: f64, b: f64) -> f64 {
+        let (p, e) = P::two_prod(a, b);
         self.exact &= e == 0.0 && (p.abs() >= TINY || a == 0.0 || b == 0.0);
         p
     }

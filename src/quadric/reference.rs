@@ -55,7 +55,8 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
         return (exact_stage(ray, quadric), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let f = stages::filter(&widen(&quadric.coeffs), w(ray.origin), w(ray.dir), shrink);
+    let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
+    let f = stages::filter(&k, o, d, shrink);
     if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
         if needs_probe(&[], &[f.t0, f.t1]) && !subnormals_work() {
             return (exact_stage(ray, quadric), Stage::Exact);
@@ -78,13 +79,14 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
     } else if f.all {
         (QuadricHit::All, Stage::Filter)
     } else {
-        escalate_shrunk(ray, quadric, shrink)
+        later(ray, quadric, &k, o, d, shrink)
     }
 }
 
 /// The stages after the filter: f64 arithmetic that proves itself exact
 /// ([`stages::tracked`]), double-word arithmetic
-/// ([`stages::double_word`]), then the exact oracle. The later stages,
+/// ([`stages::double_word`]), both by [`stages::later`], then the exact
+/// oracle. The later stages,
 /// too, assume subnormals work where an input or a result is subnormal
 /// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
 /// its undecided lanes here, and all of them when FTZ or DAZ is on.
@@ -102,10 +104,30 @@ fn escalate_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, St
         return (exact_stage(ray, quadric), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
-    let staged = (stages::tracked(&k, o, d).map(|h| (h, Stage::Tracked)))
-        .or_else(|| stages::double_word(&k, o, d, shrink).map(|h| (h, Stage::DoubleWord)));
-    match staged {
+    later(
+        ray,
+        quadric,
+        &widen(&quadric.coeffs),
+        w(ray.origin),
+        w(ray.dir),
+        shrink,
+    )
+}
+
+/// [`stages::later`] on inputs already checked by [`needs_probe`] and
+/// widened, then the exact oracle where it gives nothing or a result that
+/// FTZ could have flushed.
+#[cold]
+#[inline(never)]
+fn later(
+    ray: &Ray,
+    quadric: &Quadric,
+    k: &[f64; 10],
+    o: [f64; 3],
+    d: [f64; 3],
+    shrink: f64,
+) -> (QuadricHit, Stage) {
+    match stages::later(k, o, d, shrink) {
         Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
             (exact_stage(ray, quadric), Stage::Exact)
         }
