@@ -183,7 +183,17 @@ fn every_later_stage_alone_matches_the_oracle() {
                     let ck = |h: Option<_>| h.map(|h| status(check::check_sphere(r, s, h)));
                     vec![
                         (Tight, ck(sphere::stages::tight(o, d, m, rr, 1.0))),
+                        (Tight, ck(sphere::stages::compensated(o, d, m, rr, 1.0))),
                         (Tracked, ck(sphere::stages::tracked(o, d, m, rr))),
+                        (
+                            Tracked,
+                            ck(sphere::stages::grid_exact(
+                                r.origin.to_array(),
+                                r.dir.to_array(),
+                                s.center.to_array(),
+                                s.radius,
+                            )),
+                        ),
                         (
                             DoubleWord,
                             ck(sphere::stages::double_word(o, d, m, rr, 1.0)),

@@ -58,11 +58,21 @@ impl Avx2 {
 
 /// Four `f64` lanes in one `__m256d`. Crate-private: see the module
 /// documentation for the rule that makes its `unsafe` blocks sound.
+/// (Only the primitive kinds' x4 kernels use it: a camera-only build has
+/// none.)
 #[derive(Clone, Copy, Debug)]
+#[cfg_attr(
+    not(any(feature = "plane", feature = "sphere", feature = "quadric")),
+    allow(dead_code)
+)]
 pub(crate) struct Avx4(__m256d);
 
 /// Four lane masks of `Avx4`, all ones or all zeros per lane.
 #[derive(Clone, Copy, Debug)]
+#[cfg_attr(
+    not(any(feature = "plane", feature = "sphere", feature = "quadric")),
+    allow(dead_code)
+)]
 pub(crate) struct AvxMask(__m256d);
 
 /// Runs AVX intrinsics from a method of `Avx4`.

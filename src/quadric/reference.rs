@@ -56,7 +56,17 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
-    let f = stages::filter(&k, o, d, shrink);
+    let c = stages::classes(&k, o, d, shrink);
+    if !(c.two || c.linear) {
+        return if c.none {
+            (QuadricHit::None, Stage::Filter)
+        } else if c.all {
+            (QuadricHit::All, Stage::Filter)
+        } else {
+            later(ray, quadric, &k, o, d, shrink)
+        };
+    }
+    let f = stages::roots(c, shrink);
     if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
         if needs_probe(&[], &[f.t0, f.t1]) && !subnormals_work() {
             return (exact_stage(ray, quadric), Stage::Exact);

@@ -191,8 +191,37 @@ pub fn coefficients<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3]) -> [(L, L); 3] {
 /// ```
 #[inline(always)]
 pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filtered<L> {
+    roots(classes(k, o, d, shrink), shrink)
+}
+
+/// The filter's first half: α, β, γ, `Δ` and their bounds, and the
+/// classes they certify. The reference computes the roots ([`roots`])
+/// only where the class is two or linear, so that a case left to the
+/// later stages costs no division.
+pub(crate) struct Classes<L: Real> {
+    alpha: L,
+    beta: L,
+    gamma: L,
+    disc: L,
+    ea: L,
+    eb: L,
+    eg: L,
+    ed: L,
+    lin: L::Mask,
+    /// Certified: two roots (which still need [`certify`]).
+    pub(crate) two: L::Mask,
+    /// Certified: α = 0 and β ≠ 0, one root.
+    pub(crate) linear: L::Mask,
+    /// Certified: no root.
+    pub(crate) none: L::Mask,
+    /// Certified: every `t`.
+    pub(crate) all: L::Mask,
+}
+
+#[inline(always)]
+pub(crate) fn classes<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Classes<L> {
     let c = |x: f64| L::splat(x * U * shrink);
-    let (zero, half, inf) = (L::splat(0.0), L::splat(0.5), L::splat(f64::INFINITY));
+    let zero = L::splat(0.0);
     let [(alpha, ma), (beta, mb), (gamma, mg)] = coefficients(k, o, d);
     let (ea, eb, eg) = (c(12.0) * ma, c(24.0) * mb, c(20.0) * mg);
     let four = L::splat(4.0);
@@ -203,11 +232,44 @@ pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filter
     let lin = ma.eq(zero);
     let beta_clear = beta.abs().gt(eb);
     let beta_zero = mb.eq(zero);
-    let two = quad & disc.gt(ed);
-    let linear = lin & beta_clear;
-    let none = (quad & (-ed).gt(disc)) | (lin & beta_zero & gamma.abs().gt(eg));
-    let all = lin & beta_zero & mg.eq(zero);
+    Classes {
+        alpha,
+        beta,
+        gamma,
+        disc,
+        ea,
+        eb,
+        eg,
+        ed,
+        lin,
+        two: quad & disc.gt(ed),
+        linear: lin & beta_clear,
+        none: (quad & (-ed).gt(disc)) | (lin & beta_zero & gamma.abs().gt(eg)),
+        all: lin & beta_zero & mg.eq(zero),
+    }
+}
 
+/// The filter's second half: the roots and their bounds from the
+/// [`classes`].
+#[inline(always)]
+pub(crate) fn roots<L: Real>(k: Classes<L>, shrink: f64) -> Filtered<L> {
+    let c = |x: f64| L::splat(x * U * shrink);
+    let (zero, half, inf) = (L::splat(0.0), L::splat(0.5), L::splat(f64::INFINITY));
+    let Classes {
+        alpha,
+        beta,
+        gamma,
+        disc,
+        ea,
+        eb,
+        eg,
+        ed,
+        lin,
+        two,
+        linear,
+        none,
+        all,
+    } = k;
     let one = L::splat(1.0);
     let alpha = L::select(lin, one, alpha);
     let s = disc.sqrt();
