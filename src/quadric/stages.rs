@@ -255,23 +255,10 @@ pub(crate) fn classes<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -
 pub(crate) fn roots<L: Real>(k: Classes<L>, shrink: f64) -> Filtered<L> {
     let c = |x: f64| L::splat(x * U * shrink);
     let (zero, half, inf) = (L::splat(0.0), L::splat(0.5), L::splat(f64::INFINITY));
-    let Classes {
-        alpha,
-        beta,
-        gamma,
-        disc,
-        ea,
-        eb,
-        eg,
-        ed,
-        lin,
-        two,
-        linear,
-        none,
-        all,
-    } = k;
+    let (beta, gamma, disc, lin) = (k.beta, k.gamma, k.disc, k.lin);
+    let (ea, eb, eg, ed) = (k.ea, k.eb, k.eg, k.ed);
     let one = L::splat(1.0);
-    let alpha = L::select(lin, one, alpha);
+    let alpha = L::select(lin, one, k.alpha);
     let s = disc.sqrt();
     let q = -(beta + s.copysign(beta)) * half;
     let (ia, iq, is, in_range) = if L::FEW_DIVISIONS {
@@ -295,10 +282,10 @@ pub(crate) fn roots<L: Real>(k: Classes<L>, shrink: f64) -> Filtered<L> {
     let t1 = gamma * iq + zero;
     let (r1, a1) = bound(eq, eg, iq);
     Filtered {
-        two,
-        linear,
-        none,
-        all,
+        two: k.two,
+        linear: k.linear,
+        none: k.none,
+        all: k.all,
         t0,
         r0,
         a0,
