@@ -26,6 +26,7 @@ mod props_sphere_quadric;
 mod render_snapshots;
 mod scene_errors;
 mod semantics;
+mod stage_bounds;
 mod stiff_catalogue;
 mod stiff_report;
 mod support;

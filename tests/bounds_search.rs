@@ -54,9 +54,10 @@ impl Quantity {
 }
 
 /// A class and root bits.
-type Answer = (&'static str, Vec<u32>);
+pub type Answer = (&'static str, Vec<u32>);
 
-fn answer(h: &impl Intersection) -> Answer {
+/// The class and root bits of `h`.
+pub fn answer(h: &impl Intersection) -> Answer {
     let r = h.roots();
     (
         h.class().as_str(),
@@ -173,7 +174,7 @@ pub fn to_line(case: &Case, family: &str) -> String {
 }
 
 /// An f32 with a random 24-bit significand in `[2^e, 2^(e+1))`.
-fn mant(rng: &mut SmallRng, e: i32) -> f32 {
+pub fn mant(rng: &mut SmallRng, e: i32) -> f32 {
     (1.0 + rng.random_range(0..1u32 << 23) as f32 / 8388608.0) * 2f32.powi(e)
 }
 
@@ -183,6 +184,18 @@ fn mant_in(rng: &mut SmallRng, lo: i32, hi: i32) -> f32 {
     mant(rng, e)
 }
 
+/// An f32 `x` of a random exponent `e` in `−20..20`, half its ulp,
+/// `2^(e − k)·m` with `k` in `ks` and `m ∈ [1, 2)`, and a random sign:
+/// the makings of a value `x + ulp(x)/2 ± ε` next to a rounding midpoint.
+pub fn near_midpoint(rng: &mut SmallRng, ks: std::ops::Range<i32>) -> (f32, f32, f32, f32) {
+    let e = rng.random_range(-20..20);
+    let x = mant(rng, e);
+    let k = rng.random_range(ks);
+    let eps = mant(rng, e - k);
+    let sign = if rng.random() { 1.0 } else { -1.0 };
+    (x, 2f32.powi(e - 24), eps, sign)
+}
+
 /// Planes whose root is an f32 rounding midpoint plus a tiny offset: `d =
 /// x̂`, `n = (1, ulp/2, ε)`, `a = (x, 1, ±1)`, so `t = x + ulp(x)/2 ± ε`;
 /// and near-parallel planes, `d·n` a few roundings of its terms from 0.
@@ -190,12 +203,7 @@ pub fn plane_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
     (0..n)
         .map(|i| {
             if i % 2 == 0 {
-                let e = rng.random_range(-20..20);
-                let x = mant(rng, e);
-                let half_ulp = 2f32.powi(e - 24);
-                let k = rng.random_range(40..56);
-                let eps = mant(rng, e - k);
-                let sign = if rng.random() { 1.0 } else { -1.0 };
+                let (x, half_ulp, eps, sign) = near_midpoint(rng, 40..56);
                 let o = Vec3::new(rng.random_range(-4.0..4.0), 0.0, 0.0);
                 let ray = Ray::new(o, Vec3::X);
                 let p = Plane::new(Vec3::new(x + o.x, 1.0, sign), Vec3::new(1.0, half_ulp, eps));
@@ -371,17 +379,33 @@ pub struct Found {
 /// Hill-climbs from `start` for `steps` moves, maximising the critical
 /// factor of `q`; returns every improvement (the last is the best).
 pub fn climb(rng: &mut SmallRng, start: &Case, q: Quantity, steps: usize) -> Vec<Found> {
-    let kind = start.kind();
     let score = |c: &Case| exact(c).and_then(|e| critical_log2(c, &e, q));
-    let Some(mut best) = score(start) else {
+    let Some(best) = score(start) else {
         return Vec::new();
     };
-    let mut cur = fields(start);
-    let mut out = vec![Found {
-        case: start.clone(),
-        quantity: q,
-        log2: best,
-    }];
+    climb_by(rng, (best, start.clone()), steps, score)
+        .into_iter()
+        .map(|(log2, case)| Found {
+            case,
+            quantity: q,
+            log2,
+        })
+        .collect()
+}
+
+/// The climb of [`climb`] for any score (a critical factor's `log₂`,
+/// `None` where there is none), from a case and its score: moves that do
+/// not lower the score are kept; returns the start and every
+/// improvement, the best last.
+pub fn climb_by(
+    rng: &mut SmallRng,
+    start: (f64, Case),
+    steps: usize,
+    score: impl Fn(&Case) -> Option<f64>,
+) -> Vec<(f64, Case)> {
+    let kind = start.1.kind();
+    let (mut best, mut cur) = (start.0, fields(&start.1));
+    let mut out = vec![start];
     for _ in 0..steps {
         let mut next = cur.clone();
         for _ in 0..rng.random_range(1..=2) {
@@ -393,11 +417,7 @@ pub fn climb(rng: &mut SmallRng, start: &Case, q: Quantity, steps: usize) -> Vec
         let c = from_fields(kind.as_str(), &next);
         if let Some(s) = score(&c).filter(|&s| s >= best) {
             if s > best {
-                out.push(Found {
-                    case: c,
-                    quantity: q,
-                    log2: s,
-                });
+                out.push((s, c));
             }
             best = s;
             cur = next;
