@@ -75,6 +75,30 @@ pub(crate) struct Avx4(__m256d);
 )]
 pub(crate) struct AvxMask(__m256d);
 
+impl Avx4 {
+    /// The register, for the AVX-512 lanes' halves.
+    #[inline(always)]
+    #[cfg_attr(not(feature = "quadric"), allow(dead_code))]
+    pub(super) fn raw(self) -> __m256d {
+        self.0
+    }
+    /// Four lanes from a register.
+    #[inline(always)]
+    #[cfg_attr(not(feature = "quadric"), allow(dead_code))]
+    pub(super) fn from_raw(x: __m256d) -> Avx4 {
+        Avx4(x)
+    }
+}
+
+impl AvxMask {
+    /// Four masks from a register of all-ones or all-zeros lanes.
+    #[inline(always)]
+    #[cfg_attr(not(feature = "quadric"), allow(dead_code))]
+    pub(super) fn from_raw(x: __m256d) -> AvxMask {
+        AvxMask(x)
+    }
+}
+
 /// Runs AVX intrinsics from a method of `Avx4`.
 ///
 /// `unsafe` is needed because trait methods cannot carry

@@ -27,6 +27,8 @@ pub use lane::Lane;
 pub use real::Real;
 #[cfg(target_arch = "x86_64")]
 pub mod avx;
+#[cfg(all(target_arch = "x86_64", feature = "quadric"))]
+pub mod avx512;
 pub mod certify;
 pub mod dd;
 pub mod real;

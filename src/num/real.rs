@@ -259,20 +259,56 @@ impl<L: Real> Real for Pair<L> {
     }
 }
 
-impl<L: Real4> Pair<L> {
+/// Eight `f64` lanes that split into two [`Real4`] halves: the x4
+/// kernels' batch paths run two packets at a time on one `Real8` and
+/// finish each packet on its half. Implemented by [`Pair`] of any
+/// [`Real4`] and, on x86-64, by the AVX-512 lanes of [`super::avx512`].
+///
+/// ```
+/// use rayoracle::num::real::{F64x4, Pair, Real8};
+/// use wide::f32x4;
+/// let [o, ..] = Pair::<F64x4>::widen3(&[f32x4::splat(1.0); 3], &[f32x4::splat(2.0); 3]);
+/// let [a, b] = o.halves();
+/// assert_eq!((a.to_array(), b.to_array()), ([1.0; 4], [2.0; 4]));
+/// ```
+pub trait Real8: Real {
+    /// The four-lane half.
+    type Half: Real4;
     /// Two packets of three `f32x4` (a point or a direction of two
-    /// [`crate::ray4::Ray4`]) widened side by side.
-    ///
-    /// ```
-    /// use rayoracle::num::real::{F64x4, Pair};
-    /// use wide::f32x4;
-    /// let p = Pair::<F64x4>::widen3(&[f32x4::splat(1.0); 3], &[f32x4::splat(2.0); 3]);
-    /// assert_eq!((p[2].0.to_array(), p[2].1.to_array()), ([1.0; 4], [2.0; 4]));
-    /// ```
+    /// [`crate::ray4::Ray4`]) widened side by side, `a` in the low half.
+    fn widen3(a: &[f32x4; 3], b: &[f32x4; 3]) -> [Self; 3];
+    /// The same four lanes in both halves.
+    fn twice(x: Self::Half) -> Self;
+    /// The low and the high half.
+    fn halves(self) -> [Self::Half; 2];
+    /// The low and the high half of a mask.
+    fn mask_halves(m: Self::Mask) -> [<Self::Half as Real>::Mask; 2];
+    /// Whether every lane of `m` is set.
+    fn all(m: Self::Mask) -> bool;
+}
+
+impl<L: Real4> Real8 for Pair<L> {
+    type Half = L;
     #[inline(always)]
-    pub fn widen3(a: &[f32x4; 3], b: &[f32x4; 3]) -> [Pair<L>; 3] {
+    fn widen3(a: &[f32x4; 3], b: &[f32x4; 3]) -> [Pair<L>; 3] {
         let w = |x, y| Pair(L::widen(x), L::widen(y));
         [w(a[0], b[0]), w(a[1], b[1]), w(a[2], b[2])]
+    }
+    #[inline(always)]
+    fn twice(x: L) -> Pair<L> {
+        Pair(x, x)
+    }
+    #[inline(always)]
+    fn halves(self) -> [L; 2] {
+        [self.0, self.1]
+    }
+    #[inline(always)]
+    fn mask_halves(m: Pair<L::Mask>) -> [L::Mask; 2] {
+        [m.0, m.1]
+    }
+    #[inline(always)]
+    fn all(m: Pair<L::Mask>) -> bool {
+        L::all(m.0) && L::all(m.1)
     }
 }
 

@@ -6,7 +6,7 @@ use super::{Plane, PlaneHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
-use crate::num::real::{F64x4, Pair, Real, Real4};
+use crate::num::real::{F64x4, Pair, Real, Real4, Real8};
 use crate::ray4::class::{ALL, NONE, ONE};
 use crate::ray4::{Ray4, gather3, scatter3};
 use wide::bytemuck::cast;
@@ -156,35 +156,35 @@ pub fn intersect_packets(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
     if let Some(avx2) = Avx2::detect() {
         #[target_feature(enable = "avx2,fma")]
         fn run(_: Avx2, rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
-            packets_in::<Avx4>(rays, p, out)
+            packets_in::<Pair<Avx4>>(rays, p, out)
         }
         // SAFETY: the token exists only where AVX2 and FMA were detected.
         // Justified by the kernels bench figures in `crate::num::avx`.
         return unsafe { run(avx2, rays, p, out) };
     }
-    packets_in::<F64x4>(rays, p, out)
+    packets_in::<Pair<F64x4>>(rays, p, out)
 }
 
-/// [`intersect_packets`] over any four-lane [`Real4`].
+/// [`intersect_packets`] over any eight-lane [`Real8`].
 #[inline(always)]
-fn packets_in<L: Real4>(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
+fn packets_in<W: Real8>(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
     let env = subnormals_work();
-    let (a, n) = (p.point.map(L::widen), p.normal.map(L::widen));
-    let (a2, n2) = (a.map(|x| Pair(x, x)), n.map(|x| Pair(x, x)));
+    let (a, n) = (p.point.map(W::Half::widen), p.normal.map(W::Half::widen));
+    let (a2, n2) = (a.map(W::twice), n.map(W::twice));
     let len = rays.len().min(out.len());
     let mut pairs = rays[..len].chunks_exact(2);
     let mut outs = out[..len].chunks_exact_mut(2);
     for (pk, o) in (&mut pairs).zip(&mut outs) {
         let (o2, d2) = (
-            Pair::widen3(&pk[0].origin, &pk[1].origin),
-            Pair::widen3(&pk[0].dir, &pk[1].dir),
+            W::widen3(&pk[0].origin, &pk[1].origin),
+            W::widen3(&pk[0].dir, &pk[1].dir),
         );
         let [x, y] = decide(o2, d2, a2, n2).halves();
         o[0] = finish(x, || env, &pk[0], p);
         o[1] = finish(y, || env, &pk[1], p);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
-        let (o1, d1) = (one.origin.map(L::widen), one.dir.map(L::widen));
+        let (o1, d1) = (one.origin.map(W::Half::widen), one.dir.map(W::Half::widen));
         *o = finish(decide(o1, d1, a, n), || env, one, p);
     }
 }
@@ -198,21 +198,23 @@ struct Decided<L: Real> {
     t: L,
 }
 
-impl<L: Real> Decided<Pair<L>> {
+impl<W: Real8> Decided<W> {
     #[inline(always)]
-    fn halves(self) -> [Decided<L>; 2] {
+    fn halves(self) -> [Decided<W::Half>; 2] {
+        let ([h0, h1], [p0, p1]) = (W::mask_halves(self.hit), W::mask_halves(self.parallel));
+        let ([d0, d1], [t0, t1]) = (W::mask_halves(self.done), self.t.halves());
         [
             Decided {
-                hit: self.hit.0,
-                parallel: self.parallel.0,
-                done: self.done.0,
-                t: self.t.0,
+                hit: h0,
+                parallel: p0,
+                done: d0,
+                t: t0,
             },
             Decided {
-                hit: self.hit.1,
-                parallel: self.parallel.1,
-                done: self.done.1,
-                t: self.t.1,
+                hit: h1,
+                parallel: p1,
+                done: d1,
+                t: t1,
             },
         ]
     }
@@ -330,11 +332,11 @@ mod tests {
     use super::*;
     use crate::hit::same_bits;
 
-    /// The baseline copy of the batch (pairs of [`F64x4`]) gives what the
-    /// baseline one-packet kernel gives, odd tails included: where the CPU
-    /// has AVX2, [`intersect_packets`] never takes this copy.
+    /// Both copies of the batch (pairs of [`F64x4`], and where the CPU
+    /// has AVX2 pairs of AVX registers, which [`intersect_packets`] takes)
+    /// give what the baseline one-packet kernel gives, odd tails included.
     #[test]
-    fn baseline_packets_equal_one_packet_at_a_time() {
+    fn every_batch_copy_equals_one_packet_at_a_time() {
         let p = Plane4::from_planes(
             [
                 glam::Vec3::Y,
@@ -352,10 +354,23 @@ mod tests {
                 Ray4::from_rays(d.map(|d| crate::Ray::new(glam::Vec3::new(0.1, -3.0, 0.0), d)))
             })
             .collect();
-        let mut out = vec![intersect_baseline(&rays[0], &p); rays.len()];
-        packets_in::<F64x4>(&rays, &p, &mut out);
+        let mut outs = vec![vec![intersect_baseline(&rays[0], &p); rays.len()]];
+        packets_in::<Pair<F64x4>>(&rays, &p, &mut outs[0]);
+        #[cfg(target_arch = "x86_64")]
+        {
+            #[target_feature(enable = "avx2,fma")]
+            fn pairs(_: Avx2, r: &[Ray4], x: &Plane4, o: &mut [PlaneHit4]) {
+                packets_in::<Pair<Avx4>>(r, x, o)
+            }
+            if let Some(t) = Avx2::detect() {
+                let mut o = outs[0].clone();
+                // SAFETY: the token proves the features `pairs` needs.
+                unsafe { pairs(t, &rays, &p, &mut o) };
+                outs.push(o);
+            }
+        }
         let mut classes = std::collections::BTreeSet::new();
-        for (r, h) in rays.iter().zip(&out) {
+        for (r, h) in outs.iter().flat_map(|out| rays.iter().zip(out)) {
             let want = intersect_baseline(r, &p).lanes();
             assert!(
                 h.lanes().iter().zip(&want).all(|(x, y)| same_bits(x, y)),

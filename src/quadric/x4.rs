@@ -5,8 +5,10 @@
 use super::{Quadric, QuadricHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
+#[cfg(target_arch = "x86_64")]
+use crate::num::avx512::{Avx8, Avx512};
 use crate::num::certify::{certify, subnormals_work};
-use crate::num::real::{F64x4, Pair, Real, Real4};
+use crate::num::real::{F64x4, Pair, Real, Real4, Real8};
 use crate::ray4::Ray4;
 use crate::ray4::class::{ALL, NONE, ONE, TWO};
 use wide::bytemuck::cast;
@@ -155,16 +157,27 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
 /// ```
 pub fn intersect_packets(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
     #[cfg(target_arch = "x86_64")]
+    if let Some(avx512) = Avx512::detect() {
+        #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+        fn run(_: Avx512, rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
+            packets_in::<Avx8>(rays, q, out)
+        }
+        // SAFETY: the token exists only where AVX-512 F, DQ and VL, AVX2
+        // and FMA were detected. Justified by the kernels bench figures in
+        // `crate::num::avx512`.
+        return unsafe { run(avx512, rays, q, out) };
+    }
+    #[cfg(target_arch = "x86_64")]
     if let Some(avx2) = Avx2::detect() {
         #[target_feature(enable = "avx2,fma")]
         fn run(_: Avx2, rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
-            packets_in::<Avx4>(rays, q, out)
+            packets_in::<Pair<Avx4>>(rays, q, out)
         }
         // SAFETY: the token exists only where AVX2 and FMA were detected.
         // Justified by the kernels bench figures in `crate::num::avx`.
         return unsafe { run(avx2, rays, q, out) };
     }
-    packets_in::<F64x4>(rays, q, out)
+    packets_in::<Pair<F64x4>>(rays, q, out)
 }
 
 /// The ten coefficients widened, written out: `map` over ten lanes is not
@@ -186,37 +199,39 @@ fn widen10<L: Real4>(c: &[f32x4; 10]) -> [L; 10] {
     ]
 }
 
-/// [`intersect_packets`] over any four-lane [`Real4`].
+/// [`intersect_packets`] over any eight-lane [`Real8`].
 #[inline(always)]
-fn packets_in<L: Real4>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
+fn packets_in<W: Real8>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
     let env = subnormals_work();
-    let k = widen10::<L>(&q.coeffs);
+    let k = widen10::<W::Half>(&q.coeffs);
+    let t = W::twice;
     let k2 = [
-        Pair(k[0], k[0]),
-        Pair(k[1], k[1]),
-        Pair(k[2], k[2]),
-        Pair(k[3], k[3]),
-        Pair(k[4], k[4]),
-        Pair(k[5], k[5]),
-        Pair(k[6], k[6]),
-        Pair(k[7], k[7]),
-        Pair(k[8], k[8]),
-        Pair(k[9], k[9]),
+        t(k[0]),
+        t(k[1]),
+        t(k[2]),
+        t(k[3]),
+        t(k[4]),
+        t(k[5]),
+        t(k[6]),
+        t(k[7]),
+        t(k[8]),
+        t(k[9]),
     ];
     let len = rays.len().min(out.len());
     let mut pairs = rays[..len].chunks_exact(2);
     let mut outs = out[..len].chunks_exact_mut(2);
     for (pk, o) in (&mut pairs).zip(&mut outs) {
         let (o2, d2) = (
-            Pair::widen3(&pk[0].origin, &pk[1].origin),
-            Pair::widen3(&pk[0].dir, &pk[1].dir),
+            W::widen3(&pk[0].origin, &pk[1].origin),
+            W::widen3(&pk[0].dir, &pk[1].dir),
         );
         let [x, y] = decide(&k2, o2, d2).halves();
         o[0] = finish(x, || env, &pk[0], q);
         o[1] = finish(y, || env, &pk[1], q);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
-        let (o1, d1) = (one.origin.map(L::widen), one.dir.map(L::widen));
+        let w = W::Half::widen;
+        let (o1, d1) = (one.origin.map(w), one.dir.map(w));
         *o = finish(decide(&k, o1, d1), || env, one, q);
     }
 }
@@ -233,25 +248,28 @@ struct Decided<L: Real> {
     hi: L,
 }
 
-impl<L: Real> Decided<Pair<L>> {
+impl<W: Real8> Decided<W> {
     #[inline(always)]
-    fn halves(self) -> [Decided<L>; 2] {
+    fn halves(self) -> [Decided<W::Half>; 2] {
+        let m = W::mask_halves;
+        let ([w0, w1], [n0, n1], [a0, a1]) = (m(self.two), m(self.one), m(self.all));
+        let ([d0, d1], [l0, l1], [h0, h1]) = (m(self.done), self.lo.halves(), self.hi.halves());
         [
             Decided {
-                two: self.two.0,
-                one: self.one.0,
-                all: self.all.0,
-                done: self.done.0,
-                lo: self.lo.0,
-                hi: self.hi.0,
+                two: w0,
+                one: n0,
+                all: a0,
+                done: d0,
+                lo: l0,
+                hi: h0,
             },
             Decided {
-                two: self.two.1,
-                one: self.one.1,
-                all: self.all.1,
-                done: self.done.1,
-                lo: self.lo.1,
-                hi: self.hi.1,
+                two: w1,
+                one: n1,
+                all: a1,
+                done: d1,
+                lo: l1,
+                hi: h1,
             },
         ]
     }
@@ -384,11 +402,12 @@ mod tests {
     use super::*;
     use crate::hit::same_bits;
 
-    /// The baseline copy of the batch (pairs of [`F64x4`]) gives what the
-    /// baseline one-packet kernel gives, odd tails included: where the CPU
-    /// has AVX2, [`intersect_packets`] never takes this copy.
+    /// Every copy of the batch (pairs of [`F64x4`], and where the CPU has
+    /// them pairs of AVX2 registers and AVX-512 registers, of which
+    /// [`intersect_packets`] takes only the widest) gives what the baseline
+    /// one-packet kernel gives, odd tails included.
     #[test]
-    fn baseline_packets_equal_one_packet_at_a_time() {
+    fn every_batch_copy_equals_one_packet_at_a_time() {
         let q = Quadric4::from_quadrics(
             [-1.0, 0.0, 1.0, 1e-30]
                 .map(|j| Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, j])),
@@ -401,10 +420,33 @@ mod tests {
                 Ray4::from_rays(d.map(|d| crate::Ray::new(glam::Vec3::new(0.1, -3.0, 0.0), d)))
             })
             .collect();
-        let mut out = vec![intersect_baseline(&rays[0], &q); rays.len()];
-        packets_in::<F64x4>(&rays, &q, &mut out);
+        let mut outs = vec![vec![intersect_baseline(&rays[0], &q); rays.len()]];
+        packets_in::<Pair<F64x4>>(&rays, &q, &mut outs[0]);
+        #[cfg(target_arch = "x86_64")]
+        {
+            #[target_feature(enable = "avx2,fma")]
+            fn pairs(_: Avx2, r: &[Ray4], x: &Quadric4, o: &mut [QuadricHit4]) {
+                packets_in::<Pair<Avx4>>(r, x, o)
+            }
+            #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+            fn wide(_: Avx512, r: &[Ray4], x: &Quadric4, o: &mut [QuadricHit4]) {
+                packets_in::<Avx8>(r, x, o)
+            }
+            if let Some(t) = Avx2::detect() {
+                let mut o = outs[0].clone();
+                // SAFETY: the token proves the features `pairs` needs.
+                unsafe { pairs(t, &rays, &q, &mut o) };
+                outs.push(o);
+            }
+            if let Some(t) = Avx512::detect() {
+                let mut o = outs[0].clone();
+                // SAFETY: the token proves the features `wide` needs.
+                unsafe { wide(t, &rays, &q, &mut o) };
+                outs.push(o);
+            }
+        }
         let mut classes = std::collections::BTreeSet::new();
-        for (r, h) in rays.iter().zip(&out) {
+        for (r, h) in outs.iter().flat_map(|out| rays.iter().zip(out)) {
             let want = intersect_baseline(r, &q).lanes();
             assert!(
                 h.lanes().iter().zip(&want).all(|(x, y)| same_bits(x, y)),

@@ -7,7 +7,7 @@ use crate::Ray;
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, subnormals_work};
-use crate::num::real::{F64x4, Pair, Real, Real4};
+use crate::num::real::{F64x4, Pair, Real, Real4, Real8};
 use crate::ray4::class::{NONE, ONE, TWO};
 use crate::ray4::{Ray4, gather3};
 use wide::bytemuck::cast;
@@ -163,31 +163,32 @@ pub fn intersect_packets(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
     if let Some(avx2) = Avx2::detect() {
         #[target_feature(enable = "avx2,fma")]
         fn run(_: Avx2, rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
-            packets_in::<Avx4>(rays, s, out)
+            packets_in::<Pair<Avx4>>(rays, s, out)
         }
         // SAFETY: the token exists only where AVX2 and FMA were detected.
         // Justified by the kernels bench figures in `crate::num::avx`.
         return unsafe { run(avx2, rays, s, out) };
     }
-    packets_in::<F64x4>(rays, s, out)
+    packets_in::<Pair<F64x4>>(rays, s, out)
 }
 
-/// [`intersect_packets`] over any four-lane [`Real4`].
+/// [`intersect_packets`] over any eight-lane [`Real8`].
 #[inline(always)]
-fn packets_in<L: Real4>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
+fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
     let env = subnormals_work();
-    let c2 = s.center.map(|x| Pair(L::widen(x), L::widen(x)));
-    let r2 = Pair(L::widen(s.radius), L::widen(s.radius));
+    let w = W::Half::widen;
+    let c2 = s.center.map(|x| W::twice(w(x)));
+    let r2 = W::twice(w(s.radius));
     let len = rays.len().min(out.len());
     let mut pairs = rays[..len].chunks_exact(2);
     let mut outs = out[..len].chunks_exact_mut(2);
     for (pk, o) in (&mut pairs).zip(&mut outs) {
         let (o2, d2) = (
-            Pair::widen3(&pk[0].origin, &pk[1].origin),
-            Pair::widen3(&pk[0].dir, &pk[1].dir),
+            W::widen3(&pk[0].origin, &pk[1].origin),
+            W::widen3(&pk[0].dir, &pk[1].dir),
         );
         let k = stages::classes(o2, d2, c2, r2, 1.0);
-        if L::all(k.none.0) && L::all(k.none.1) && env {
+        if W::all(k.none) && env {
             o.fill(SphereHit4::MISS);
             continue;
         }
@@ -196,7 +197,7 @@ fn packets_in<L: Real4>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
         o[1] = finish(y, || env, &pk[1], s);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
-        *o = intersect_in::<L>(one, s, || env);
+        *o = intersect_in::<W::Half>(one, s, || env);
     }
 }
 
@@ -212,23 +213,26 @@ struct Decided<L: Real> {
     hi: L,
 }
 
-impl<L: Real> Decided<Pair<L>> {
+impl<W: Real8> Decided<W> {
     #[inline(always)]
-    fn halves(self) -> [Decided<L>; 2] {
+    fn halves(self) -> [Decided<W::Half>; 2] {
+        let m = W::mask_halves;
+        let ([w0, w1], [d0, d1], [p0, p1]) = (m(self.two), m(self.done), m(self.open));
+        let ([l0, l1], [h0, h1]) = (self.lo.halves(), self.hi.halves());
         [
             Decided {
-                two: self.two.0,
-                done: self.done.0,
-                open: self.open.0,
-                lo: self.lo.0,
-                hi: self.hi.0,
+                two: w0,
+                done: d0,
+                open: p0,
+                lo: l0,
+                hi: h0,
             },
             Decided {
-                two: self.two.1,
-                done: self.done.1,
-                open: self.open.1,
-                lo: self.lo.1,
-                hi: self.hi.1,
+                two: w1,
+                done: d1,
+                open: p1,
+                lo: l1,
+                hi: h1,
             },
         ]
     }
@@ -447,11 +451,11 @@ mod tests {
     use super::*;
     use crate::hit::same_bits;
 
-    /// The baseline copy of the batch (pairs of [`F64x4`]) gives what the
-    /// baseline one-packet kernel gives, odd tails included: where the CPU
-    /// has AVX2, [`intersect_packets`] never takes this copy.
+    /// Both copies of the batch (pairs of [`F64x4`], and where the CPU
+    /// has AVX2 pairs of AVX registers, which [`intersect_packets`] takes)
+    /// give what the baseline one-packet kernel gives, odd tails included.
     #[test]
-    fn baseline_packets_equal_one_packet_at_a_time() {
+    fn every_batch_copy_equals_one_packet_at_a_time() {
         let s = Sphere4::from_spheres(
             [0.5, 1.0, 2.0, 1e-30].map(|r| Sphere::new(glam::Vec3::new(0.0, 0.5, 0.0), r)),
         );
@@ -463,10 +467,23 @@ mod tests {
                 Ray4::from_rays(d.map(|d| crate::Ray::new(glam::Vec3::new(0.1, -3.0, 0.0), d)))
             })
             .collect();
-        let mut out = vec![intersect_baseline(&rays[0], &s); rays.len()];
-        packets_in::<F64x4>(&rays, &s, &mut out);
+        let mut outs = vec![vec![intersect_baseline(&rays[0], &s); rays.len()]];
+        packets_in::<Pair<F64x4>>(&rays, &s, &mut outs[0]);
+        #[cfg(target_arch = "x86_64")]
+        {
+            #[target_feature(enable = "avx2,fma")]
+            fn pairs(_: Avx2, r: &[Ray4], x: &Sphere4, o: &mut [SphereHit4]) {
+                packets_in::<Pair<Avx4>>(r, x, o)
+            }
+            if let Some(t) = Avx2::detect() {
+                let mut o = outs[0].clone();
+                // SAFETY: the token proves the features `pairs` needs.
+                unsafe { pairs(t, &rays, &s, &mut o) };
+                outs.push(o);
+            }
+        }
         let mut classes = std::collections::BTreeSet::new();
-        for (r, h) in rays.iter().zip(&out) {
+        for (r, h) in outs.iter().flat_map(|out| rays.iter().zip(out)) {
             let want = intersect_baseline(r, &s).lanes();
             assert!(
                 h.lanes().iter().zip(&want).all(|(x, y)| same_bits(x, y)),
@@ -494,7 +511,7 @@ mod tests {
         let packets = [miss, miss, mixed, miss, miss];
         let mut out = vec![intersect(&miss, &s4); packets.len()];
         intersect_packets(&packets, &s4, &mut out);
-        packets_in::<F64x4>(&packets[1..], &s4, &mut out[1..]);
+        packets_in::<Pair<F64x4>>(&packets[1..], &s4, &mut out[1..]);
         for (p, h) in packets.iter().zip(&out) {
             let want = p.to_rays().map(|r| reference::intersect(&r, &s));
             for hit in [
@@ -529,7 +546,7 @@ mod tests {
         let want = r4.to_rays().map(|r| reference::intersect(&r, &s));
         assert_eq!(want[0], SphereHit::Tangent(5.0));
         let mut out = vec![intersect(&r4, &s4); 3];
-        packets_in::<F64x4>(&[r4; 3], &s4, &mut out);
+        packets_in::<Pair<F64x4>>(&[r4; 3], &s4, &mut out);
         for h in out
             .iter()
             .chain([&intersect(&r4, &s4), &intersect_baseline(&r4, &s4)])
