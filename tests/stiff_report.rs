@@ -311,8 +311,8 @@ fn sphere_stages_alone_match_the_oracle_on_grazing_rays() {
     );
 }
 
-/// Under flush-to-zero and denormals-are-zero, the references return the
-/// same bits as without, on every catalogue case (its `plane/subnormal-
+/// Under flush-to-zero, denormals-are-zero, and both, the references
+/// return the same bits as without, on every catalogue case (its `plane/subnormal-
 /// normal` family has subnormal inputs) and on rays whose roots are
 /// subnormal f32 values from normal inputs, where only the result's
 /// rounding meets FTZ.
@@ -390,11 +390,31 @@ fn ftz_and_daz_change_no_answer() {
     };
     let plain: Vec<Vec<u32>> = cases.iter().map(bits).collect();
     let saved = csr();
-    set_csr(saved | 1 << 15 | 1 << 6);
-    let flushing = !subnormals_work();
-    let flushed: Vec<Vec<u32>> = cases.iter().map(bits).collect();
-    set_csr(saved);
-    assert!(flushing, "FTZ/DAZ did not take effect");
+    // FTZ alone, DAZ alone, both: each meets the kernels in its own place
+    // (results, inputs).
+    for (mode, bits_on) in [
+        ("FTZ", 1 << 15),
+        ("DAZ", 1 << 6),
+        ("FTZ and DAZ", 1 << 15 | 1 << 6),
+    ] {
+        set_csr(saved | bits_on);
+        let flushing = !subnormals_work();
+        let daz = rayoracle::num::certify::denormals_are_zero();
+        let flushed: Vec<Vec<u32>> = cases.iter().map(bits).collect();
+        set_csr(saved);
+        assert!(flushing, "{mode} did not take effect");
+        assert_eq!(daz, bits_on & 1 << 6 != 0, "{mode}");
+        let diffs: Vec<usize> = (0..cases.len())
+            .filter(|&i| plain[i] != flushed[i])
+            .collect();
+        assert!(
+            diffs.is_empty(),
+            "{mode}: {} cases differ, first {:?}",
+            diffs.len(),
+            cases[diffs[0]]
+        );
+    }
+    assert!(!rayoracle::num::certify::denormals_are_zero());
     let tiny = plain
         .iter()
         .flatten()
@@ -408,15 +428,6 @@ fn ftz_and_daz_change_no_answer() {
         sphere::reference::intersect_staged(r, s).1,
         rayoracle::stage::Stage::DoubleWord,
         "{last:?}"
-    );
-    let diffs: Vec<usize> = (0..cases.len())
-        .filter(|&i| plain[i] != flushed[i])
-        .collect();
-    assert!(
-        diffs.is_empty(),
-        "{} cases differ, first {:?}",
-        diffs.len(),
-        cases[diffs[0]]
     );
 }
 

@@ -53,6 +53,7 @@ use super::tan::{Fx, Iv, decide, rsqrt, sqrt, tan_half};
 use super::{CameraError, CameraParams};
 use crate::Ray;
 use crate::exact::memo::{Memo, remembered};
+use crate::num::certify::{narrow_exact, widen_bits};
 use core::cell::RefCell;
 use glam::Vec3;
 
@@ -209,7 +210,7 @@ impl Iv64 {
         if !(self.lo > 0.0 || self.hi < 0.0) || self.lo > self.hi {
             return None;
         }
-        let (a, b) = (self.lo as f32, self.hi as f32);
+        let (a, b) = (narrow_exact(self.lo), narrow_exact(self.hi));
         (a.to_bits() == b.to_bits()).then_some(a)
     }
 }
@@ -218,7 +219,7 @@ impl Exact {
     /// The exact data of a camera that [`CameraParams::build`] accepts
     /// (finite `dir` and `up`, `dir × up ≠ 0`, `angle ∈ (0, π)`).
     pub fn new(p: &CameraParams) -> Exact {
-        let v = |v: Vec3| v.to_array().map(|c| Fx::from_f64(c as f64));
+        let v = |v: Vec3| v.to_array().map(|c| Fx::from_f64(widen_bits(c.to_bits())));
         let (d, up) = (v(p.dir), v(p.up));
         let x = cross(&d, &up);
         let y = cross(&d, &x);

@@ -28,7 +28,9 @@
 //! [`super::exact`].
 
 use crate::num::Real;
-use crate::num::certify::{SLACK, U, flush_prone, needs_probe, subnormals_work};
+use crate::num::certify::{
+    SLACK, U, denormals_are_zero, flush_prone, needs_probe, subnormals_work,
+};
 
 /// The relative error of the stored basis per unit, `2⁻⁴⁴`: the f64
 /// basis of [`super::basis`] (which refuses a component its bound does not
@@ -67,11 +69,12 @@ pub fn component<L: Real>(d: L, bx: L, by: L, nx: L, ny: L, shrink: f64) -> (L, 
 }
 
 /// Whether the floating-point environment may have changed a pixel's
-/// filtered direction: with subnormals flushed ([`subnormals_work`]), a
-/// subnormal `dir` component (which denormals-are-zero reads as 0) or a
-/// result that is 0 or subnormal (which flush-to-zero makes of a subnormal
-/// one). The filter itself never underflows in f64 (above), so only these
-/// two places meet the environment; such a pixel goes to the oracle whole.
+/// filtered direction: a subnormal `dir` component where
+/// denormals-are-zero reads it as 0 ([`denormals_are_zero`]), or a result
+/// that is 0 or subnormal where flush-to-zero may have made it of a
+/// subnormal one ([`subnormals_work`]). The filter itself never underflows
+/// in f64 (above), so only these two places meet the environment; such a
+/// pixel goes to the oracle whole.
 ///
 /// ```
 /// use rayoracle::camera::filter::flushed;
@@ -81,7 +84,7 @@ pub fn component<L: Real>(d: L, bx: L, by: L, nx: L, ny: L, shrink: f64) -> (L, 
 /// ```
 #[inline(always)]
 pub fn flushed(dir: &[f32; 3], out: &[f32; 3]) -> bool {
-    (needs_probe(dir, &[]) || flush_prone(out)) && !subnormals_work()
+    (denormals_are_zero() && needs_probe(dir, &[])) || (flush_prone(out) && !subnormals_work())
 }
 
 /// `2p + 1 − res`, exact in f64.

@@ -29,6 +29,7 @@
 //! assert!(h.width_bits() < -95);
 //! ```
 
+use crate::num::certify::{narrow_exact, widen_bits};
 use core::cmp::Ordering;
 use dashu_int::ops::{BitTest, UnsignedAbs};
 use dashu_int::{IBig, UBig};
@@ -473,23 +474,40 @@ pub fn tan_half(angle: f32, p: u32) -> Iv {
 /// assert_eq!(decide(&Iv::point(Fx::new(1, 200))), Some(f32::INFINITY));
 /// ```
 pub fn decide(x: &Iv) -> Option<f32> {
-    let guess = x.lo.to_f64() as f32;
+    // The candidates as bits, their neighbours and values found with
+    // integer arithmetic ([`widen_bits`]): the exact path must meet
+    // neither flush-to-zero nor denormals-are-zero, and a float holding a
+    // subnormal could be compared as one.
+    const SIGN: u32 = 0x8000_0000;
+    const INF: u32 = 0x7f80_0000;
+    const MAX: u32 = 0x7f7f_ffff;
+    let up = |b: u32| match b {
+        SIGN => 1,
+        _ if b & SIGN == 0 => b + 1,
+        _ => b - 1,
+    };
+    let down = |b: u32| match b {
+        0 => SIGN | 1,
+        _ if b & SIGN == 0 => b - 1,
+        _ => b + 1,
+    };
     let threshold = 2f64.powi(128) - 2f64.powi(103);
-    let owner = |c: f32| -> (f64, f64) {
-        let mid = |a: f32, b: f32| (a as f64 + b as f64) / 2.0;
-        let below = if c == f32::NEG_INFINITY {
+    let sign = |b: u32| if b & SIGN == 0 { 1.0 } else { -1.0 };
+    let mid = |a: u32, b: u32| (widen_bits(a) + widen_bits(b)) / 2.0;
+    let owner = |b: u32| -> (f64, f64) {
+        let below = if b == SIGN | INF {
             f64::NEG_INFINITY
-        } else if c == -f32::MAX || c == f32::INFINITY {
-            c.signum() as f64 * threshold
+        } else if b == SIGN | MAX || b == INF {
+            sign(b) * threshold
         } else {
-            mid(c, c.next_down())
+            mid(b, down(b))
         };
-        let above = if c == f32::INFINITY {
+        let above = if b == INF {
             f64::INFINITY
-        } else if c == f32::MAX || c == f32::NEG_INFINITY {
-            c.signum() as f64 * threshold
+        } else if b == MAX || b == SIGN | INF {
+            sign(b) * threshold
         } else {
-            mid(c, c.next_up())
+            mid(b, up(b))
         };
         (below, above)
     };
@@ -497,11 +515,12 @@ pub fn decide(x: &Iv) -> Option<f32> {
         (lo == f64::NEG_INFINITY || Fx::from_f64(lo) < x.lo)
             && (hi == f64::INFINITY || x.hi < Fx::from_f64(hi))
     };
-    for c in [guess, guess.next_up(), guess.next_down()] {
-        if c.is_nan() {
-            continue;
+    let guess = narrow_exact(x.lo.to_f64()).to_bits();
+    for b in [guess, up(guess), down(guess)] {
+        if b & !SIGN > INF {
+            continue; // NaN
         }
-        if c == 0.0 {
+        if b & !SIGN == 0 {
             let tiny = 2f64.powi(-150);
             if inside(0.0, tiny) && x.lo.signum() > 0 {
                 return Some(0.0);
@@ -511,9 +530,9 @@ pub fn decide(x: &Iv) -> Option<f32> {
             }
             continue;
         }
-        let (below, above) = owner(c);
+        let (below, above) = owner(b);
         if inside(below, above) {
-            return Some(c);
+            return Some(f32::from_bits(b));
         }
     }
     None

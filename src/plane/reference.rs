@@ -5,7 +5,7 @@
 use super::{Plane, PlaneHit, exact, stages};
 use crate::Ray;
 use crate::hit::Intersection;
-use crate::num::certify::{certify, flush_prone, needs_probe, subnormals_work};
+use crate::num::certify::{certify, denormals_are_zero, flush_prone, needs_probe, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a plane: the exact class over `t ∈ ℝ`, and the
@@ -46,10 +46,12 @@ pub fn intersect_staged(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
 #[doc(hidden)]
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
-    // FTZ and DAZ matter only on a subnormal input or result
-    // ([`needs_probe`]): the register is read only there.
+    // The environment meets an input only through DAZ, and a result only
+    // through FTZ where it is subnormal ([`needs_probe`]): the inputs are
+    // scanned only under DAZ, and the register read only for such a
+    // result.
     let inputs = inputs(ray, plane);
-    if needs_probe(&inputs, &[]) && !subnormals_work() {
+    if denormals_are_zero() && needs_probe(&inputs, &[]) {
         return (exact_stage(ray, plane), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
@@ -93,7 +95,7 @@ pub(crate) fn escalate(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
 #[cold]
 #[inline(never)]
 fn escalate_shrunk(ray: &Ray, plane: &Plane, shrink: f64, probe: bool) -> (PlaneHit, Stage) {
-    if probe && needs_probe(&inputs(ray, plane), &[]) && !subnormals_work() {
+    if probe && denormals_are_zero() && needs_probe(&inputs(ray, plane), &[]) {
         return (exact_stage(ray, plane), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();

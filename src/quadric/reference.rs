@@ -5,7 +5,7 @@
 use super::{Quadric, QuadricHit, exact, stages};
 use crate::Ray;
 use crate::hit::Intersection;
-use crate::num::certify::{certify, flush_prone, needs_probe, subnormals_work};
+use crate::num::certify::{certify, denormals_are_zero, flush_prone, needs_probe, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a quadric: the exact class over `t ∈ ℝ`, and the
@@ -48,10 +48,12 @@ pub fn intersect_staged(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
 #[doc(hidden)]
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
-    // FTZ and DAZ matter only on a subnormal input or result
-    // ([`needs_probe`]): the register is read only there.
+    // The environment meets an input only through DAZ, and a result only
+    // through FTZ where it is subnormal ([`needs_probe`]): the inputs are
+    // scanned only under DAZ, and the register read only for such a
+    // result.
     let inputs = inputs(ray, quadric);
-    if needs_probe(&inputs, &[]) && !subnormals_work() {
+    if denormals_are_zero() && needs_probe(&inputs, &[]) {
         return (exact_stage(ray, quadric), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
@@ -110,7 +112,7 @@ pub(crate) fn escalate(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
 #[cold]
 #[inline(never)]
 fn escalate_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
-    if needs_probe(&inputs(ray, quadric), &[]) && !subnormals_work() {
+    if denormals_are_zero() && needs_probe(&inputs(ray, quadric), &[]) {
         return (exact_stage(ray, quadric), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();

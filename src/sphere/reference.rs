@@ -6,7 +6,7 @@
 use super::{Sphere, SphereHit, exact, stages};
 use crate::Ray;
 use crate::hit::Intersection;
-use crate::num::certify::{certify, flush_prone, needs_probe, subnormals_work};
+use crate::num::certify::{certify, denormals_are_zero, flush_prone, needs_probe, subnormals_work};
 use crate::stage::Stage;
 
 /// Intersects a line with a sphere: the exact class and both roots over
@@ -51,10 +51,12 @@ pub fn intersect_staged(ray: &Ray, sphere: &Sphere) -> (SphereHit, Stage) {
 #[doc(hidden)]
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage) {
-    // FTZ and DAZ matter only on a subnormal input or result
-    // ([`needs_probe`]): the register is read only there.
+    // The environment meets an input only through DAZ, and a result only
+    // through FTZ where it is subnormal ([`needs_probe`]): the inputs are
+    // scanned only under DAZ, and the register read only for such a
+    // result.
     let inputs = inputs(ray, sphere);
-    if needs_probe(&inputs, &[]) && !subnormals_work() {
+    if denormals_are_zero() && needs_probe(&inputs, &[]) {
         return (exact_stage(ray, sphere), Stage::Exact);
     }
     let (o, d, c, r) = widen(ray, sphere);
@@ -105,7 +107,7 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
 #[cold]
 #[inline(never)]
 pub(crate) fn escalate(ray: &Ray, sphere: &Sphere, env: bool) -> (SphereHit, Stage) {
-    if !env && needs_probe(&inputs(ray, sphere), &[]) && !subnormals_work() {
+    if !env && denormals_are_zero() && needs_probe(&inputs(ray, sphere), &[]) {
         return (exact_stage(ray, sphere), Stage::Exact);
     }
     let (o, d, c, r) = widen(ray, sphere);
