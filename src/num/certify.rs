@@ -163,8 +163,7 @@ pub fn subnormals_work() -> bool {
 pub fn denormals_are_zero() -> bool {
     #[cfg(target_arch = "x86_64")]
     {
-        let (x, y): (f32, f64) = (f32::from_bits(1), 0.0);
-        let mut y = y;
+        let (x, mut y) = (f32::from_bits(1), 0.0f64);
         // SAFETY: one SSE2 conversion between two XMM registers, which
         // every x86-64 CPU has; it reads and writes no memory, touches no
         // flags but MXCSR's sticky exception bits, and needs no stack. Not
@@ -333,8 +332,6 @@ fn subnormals_survive_with(mul: impl Fn(f64, f64) -> f64) -> bool {
 mod tests {
     use super::*;
 
-    /// A multiplication that flushes subnormal results (FTZ), and one that
-    /// reads subnormal inputs as 0 (DAZ), are both detected.
     /// The conversions from bits agree with the hardware's in the default
     /// environment, bit for bit, over the subnormal and low normal ranges
     /// and random others.
@@ -370,6 +367,8 @@ mod tests {
         }
     }
 
+    /// A multiplication that flushes subnormal results (FTZ), and one that
+    /// reads subnormal inputs as 0 (DAZ), are both detected.
     #[test]
     fn flushing_is_detected() {
         let sub = |x: f64| x != 0.0 && x.abs() < f64::MIN_POSITIVE;
