@@ -315,7 +315,8 @@ fn sphere_stages_alone_match_the_oracle_on_grazing_rays() {
 /// return the same bits as without, on every catalogue case (its `plane/subnormal-
 /// normal` family has subnormal inputs) and on rays whose roots are
 /// subnormal f32 values from normal inputs, where only the result's
-/// rounding meets FTZ.
+/// rounding meets FTZ. Each mode runs on its own thread, under a time
+/// limit: a loop that never decides is a failure, not a hang.
 #[cfg(target_arch = "x86_64")]
 #[test]
 fn ftz_and_daz_change_no_answer() {
@@ -397,11 +398,25 @@ fn ftz_and_daz_change_no_answer() {
         ("DAZ", 1 << 6),
         ("FTZ and DAZ", 1 << 15 | 1 << 6),
     ] {
-        set_csr(saved | bits_on);
-        let flushing = !subnormals_work();
-        let daz = rayoracle::num::certify::denormals_are_zero();
-        let flushed: Vec<Vec<u32>> = cases.iter().map(bits).collect();
-        set_csr(saved);
+        // On a thread of its own, so that an exact path that never
+        // decides under the mode (as one did) fails the test rather than
+        // hanging it.
+        let (tx, rx) = std::sync::mpsc::channel();
+        let own = cases.clone();
+        std::thread::spawn(move || {
+            set_csr(saved | bits_on);
+            let flushing = !subnormals_work();
+            let daz = rayoracle::num::certify::denormals_are_zero();
+            let _ = tx.send((flushing, daz, own.iter().map(bits).collect::<Vec<_>>()));
+        });
+        let (flushing, daz, flushed) = match rx.recv_timeout(std::time::Duration::from_secs(300)) {
+            Ok(answers) => answers,
+            Err(std::sync::mpsc::RecvTimeoutError::Timeout) => {
+                panic!("{mode}: the catalogue took over 300 s: a kernel loops under {mode}")
+            }
+            Err(_) => panic!("{mode}: a kernel panicked (above)"),
+        };
+        assert_eq!(csr(), saved, "the main thread's environment is untouched");
         assert!(flushing, "{mode} did not take effect");
         assert_eq!(daz, bits_on & 1 << 6 != 0, "{mode}");
         let diffs: Vec<usize> = (0..cases.len())
