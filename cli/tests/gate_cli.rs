@@ -158,6 +158,38 @@ fn a_program_that_hangs_is_stopped_after_the_timeout() {
     );
 }
 
+/// A kernel that is a grandchild (here behind `sh -c`, as behind `npm
+/// run`) is stopped with the program at the timeout, not left running.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_hanging_program_is_stopped_with_the_processes_it_started() {
+    let pid_file = std::env::temp_dir().join(format!(
+        "rayoracle-gate-cli-{}-grandchild",
+        std::process::id()
+    ));
+    let script = format!(
+        "read l; sleep 600 </dev/null >/dev/null 2>&1 & echo $! > {}; wait",
+        pid_file.display()
+    );
+    let r = gate_sh(&["--kind", "plane", "--timeout", "0.5"], &script);
+    assert_eq!(r.code, 1, "{}", r.stderr);
+    assert!(
+        r.stdout.contains("within 500ms, so it was stopped"),
+        "{}",
+        r.stdout
+    );
+    let pid = std::fs::read_to_string(&pid_file).expect("the script wrote the pid");
+    let _ = std::fs::remove_file(&pid_file);
+    // Gone, or a zombie until init reaps it: either way not running.
+    let state = std::fs::read_to_string(format!("/proc/{}/stat", pid.trim()))
+        .ok()
+        .and_then(|s| Some(s.rsplit_once(')')?.1.split_whitespace().next()?.to_string()));
+    if matches!(state.as_deref(), Some(s) if s != "Z") {
+        let _ = std::process::Command::new("kill").arg(pid.trim()).status();
+        panic!("the grandchild {} still runs ({state:?})", pid.trim());
+    }
+}
+
 /// A malformed line fails its own case, named by its line, and the run
 /// goes on; so does an answer carrying another case's id.
 #[test]

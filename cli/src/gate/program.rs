@@ -75,8 +75,7 @@ impl Program {
             }
             std::thread::sleep(Duration::from_millis(10));
         }
-        let _ = self.child.kill();
-        let _ = self.child.wait();
+        kill_tree(&mut self.child);
     }
 
     /// How the program ended, if it has.
@@ -87,6 +86,50 @@ impl Program {
             _ => "closed its stdout".into(),
         }
     }
+}
+
+/// Kills the program and, on Linux, every process under it: a kernel run
+/// through a shell or a package runner (`sh -c`, `npm run`) is a
+/// grandchild, which would otherwise outlive the gate, still holding the
+/// pipes (and the terminal's stderr) it inherited. The processes are
+/// listed before any is killed, since an orphan loses its parent id.
+fn kill_tree(child: &mut Child) {
+    #[cfg(target_os = "linux")]
+    for pid in descendants(child.id()) {
+        if let Some(pid) = rustix::process::Pid::from_raw(pid) {
+            let _ = rustix::process::kill_process(pid, rustix::process::Signal::KILL);
+        }
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+}
+
+/// The processes below `root`, from the parent ids in `/proc/*/stat`.
+#[cfg(target_os = "linux")]
+fn descendants(root: u32) -> Vec<i32> {
+    let parent = |e: std::fs::DirEntry| -> Option<(i32, i32)> {
+        let pid = e.file_name().to_str()?.parse().ok()?;
+        let stat = std::fs::read_to_string(e.path().join("stat")).ok()?;
+        // "pid (comm) state ppid …", where comm may hold spaces and ')'.
+        let ppid = stat.rsplit_once(')')?.1.split_whitespace().nth(1)?;
+        Some((pid, ppid.parse().ok()?))
+    };
+    let links: Vec<(i32, i32)> = std::fs::read_dir("/proc")
+        .into_iter()
+        .flatten()
+        .flatten()
+        .filter_map(parent)
+        .collect();
+    let (mut found, mut next) = (Vec::new(), vec![root as i32]);
+    while let Some(p) = next.pop() {
+        for &(pid, pp) in &links {
+            if pp == p && !found.contains(&pid) {
+                found.push(pid);
+                next.push(pid);
+            }
+        }
+    }
+    found
 }
 
 fn write_batches(stdin: ChildStdin, batches: Receiver<Vec<String>>) {
@@ -155,7 +198,7 @@ impl CaseKernel for Program {
                     )
                 }
                 Err(RecvTimeoutError::Timeout) => {
-                    let _ = self.child.kill();
+                    kill_tree(&mut self.child);
                     format!(
                         "{} gave no answer line {line_no} (the case of id {id}) within {:?}, so it was stopped; answer lines must end with a newline and be flushed",
                         self.name, self.timeout
