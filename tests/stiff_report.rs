@@ -311,8 +311,9 @@ fn sphere_stages_alone_match_the_oracle_on_grazing_rays() {
     );
 }
 
-/// Under flush-to-zero, denormals-are-zero, and both, the references
-/// return the same bits as without, on every catalogue case (its `plane/subnormal-
+/// Under flush-to-zero, denormals-are-zero, and both, the references and
+/// the x4 kernels (one packet, and the batch path) return the same bits
+/// as without, on every catalogue case (its `plane/subnormal-
 /// normal` family has subnormal inputs) and on rays whose roots are
 /// subnormal f32 values from normal inputs, where only the result's
 /// rounding meets FTZ. Each mode runs on its own thread, under a time
@@ -372,10 +373,25 @@ fn ftz_and_daz_change_no_answer() {
             v.push(h.class().as_str().len() as u32);
             v
         };
+        // The reference, then x4: one packet, and three through the batch
+        // path (a pair and a remainder), every lane the same case.
+        macro_rules! x4 {
+            ($kind:ident, $x4:ident, $r:expr, $p:expr) => {{
+                let mut v = roots(&$kind::reference::intersect($r, $p));
+                let (r4, p4) = (Ray4::splat(*$r), $kind::x4::$x4::splat($p));
+                let one = $kind::x4::intersect(&r4, &p4);
+                let mut batch = [one; 3];
+                $kind::x4::intersect_packets(&[r4; 3], &p4, &mut batch);
+                for h4 in std::iter::once(one).chain(batch) {
+                    v.extend(h4.lanes().iter().flat_map(|h| roots(h)));
+                }
+                v
+            }};
+        }
         match c {
-            Case::Plane(r, p) => roots(&plane::reference::intersect(r, p)),
-            Case::Sphere(r, s) => roots(&sphere::reference::intersect(r, s)),
-            Case::Quadric(r, q) => roots(&quadric::reference::intersect(r, q)),
+            Case::Plane(r, p) => x4!(plane, Plane4, r, p),
+            Case::Sphere(r, s) => x4!(sphere, Sphere4, r, s),
+            Case::Quadric(r, q) => x4!(quadric, Quadric4, r, q),
             Case::Camera(p, [x, y]) => match p.build() {
                 // The scalar ray and the same pixel in each lane of a packet.
                 Ok(cam) => {

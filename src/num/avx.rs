@@ -167,6 +167,10 @@ impl Not for AvxMask {
 
 impl Real for Avx4 {
     const FEW_DIVISIONS: bool = true;
+    #[inline(always)]
+    fn denormals_are_zero() -> bool {
+        crate::num::certify::daz_probe::<true>()
+    }
     type Mask = AvxMask;
     #[inline(always)]
     fn splat(x: f64) -> Avx4 {

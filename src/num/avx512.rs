@@ -139,6 +139,10 @@ impl Not for Avx8Mask {
 
 impl Real for Avx8 {
     const FEW_DIVISIONS: bool = true;
+    #[inline(always)]
+    fn denormals_are_zero() -> bool {
+        crate::num::certify::daz_probe::<true>()
+    }
     type Mask = Avx8Mask;
     #[inline(always)]
     fn splat(x: f64) -> Avx8 {

@@ -161,25 +161,44 @@ pub fn subnormals_work() -> bool {
 /// ```
 #[inline(always)]
 pub fn denormals_are_zero() -> bool {
+    daz_probe::<{ cfg!(target_feature = "avx") }>()
+}
+
+/// [`denormals_are_zero`], its conversion VEX-encoded where `VEX` (for
+/// code compiled with AVX, where a legacy SSE instruction that meets the
+/// dirty upper halves of the vector registers costs a state transition or
+/// a false dependency on some Intel cores).
+#[inline(always)]
+pub(crate) fn daz_probe<const VEX: bool>() -> bool {
     #[cfg(target_arch = "x86_64")]
     {
         let (x, mut y) = (f32::from_bits(1), 0.0f64);
-        // SAFETY: one SSE2 conversion between two XMM registers, which
-        // every x86-64 CPU has; it reads and writes no memory, touches no
-        // flags but MXCSR's sticky exception bits, and needs no stack. Not
-        // `pure`: its result depends on MXCSR, so it must run where it is
-        // written. It replaces a scan of every input for a subnormal on
-        // every call of the scalar kernels: in the kernels bench
-        // (`reference/per-ray`, 4,096 primary rays, default build, two
-        // runs within the hour), the sphere's reference went from 100.3 to
-        // 122.3 Mrays/s and the plane's from 83.0 to 100.4.
+        // SAFETY: one conversion between two XMM registers, SSE2 (which
+        // every x86-64 CPU has) or, where `VEX`, AVX, which only code
+        // compiled for AVX asks for; it reads and writes no memory,
+        // touches no flags but MXCSR's sticky exception bits, and needs no
+        // stack. Not `pure`: its result depends on MXCSR, so it must run
+        // where it is written. It replaces a scan of every input for a
+        // subnormal on every call of the scalar kernels: in the kernels
+        // bench (`reference/per-ray`, 4,096 primary rays, default build,
+        // two runs within the hour), the sphere's reference went from
+        // 100.3 to 122.3 Mrays/s and the plane's from 83.0 to 100.4.
         unsafe {
-            core::arch::asm!(
-                "cvtss2sd {y}, {x}",
-                x = in(xmm_reg) x,
-                y = inout(xmm_reg) y,
-                options(nomem, nostack, preserves_flags)
-            );
+            if VEX {
+                core::arch::asm!(
+                    "vcvtss2sd {y}, {y}, {x}",
+                    x = in(xmm_reg) x,
+                    y = inout(xmm_reg) y,
+                    options(nomem, nostack, preserves_flags)
+                );
+            } else {
+                core::arch::asm!(
+                    "cvtss2sd {y}, {x}",
+                    x = in(xmm_reg) x,
+                    y = inout(xmm_reg) y,
+                    options(nomem, nostack, preserves_flags)
+                );
+            }
         }
         y == 0.0
     }
@@ -292,6 +311,44 @@ pub fn needs_probe(inputs: &[f32], t: &[f64]) -> bool {
     any
 }
 
+/// Whether the results of a four-lane packet stand as its filter left
+/// them: denormals-are-zero is off ([`denormals_are_zero`]), so no input
+/// was read as 0, and, where some lane's result is 0 or subnormal
+/// ([`flush_prone4`]), flush-to-zero is off too ([`subnormals_work`]),
+/// the only place FTZ meets the filters, whose f64 arithmetic never
+/// underflows. MXCSR is read only for such a packet: `stmxcsr` and the load
+/// after it cost more than the conversion that probes DAZ.
+///
+/// `L` picks the probe's encoding ([`Real::denormals_are_zero`]).
+///
+/// ```
+/// use rayoracle::num::certify::results_stand;
+/// // A default Rust program runs with FTZ and DAZ off.
+/// assert!(results_stand::<f64>(false) && results_stand::<f64>(true));
+/// ```
+#[inline(always)]
+pub fn results_stand<L: Real>(prone: bool) -> bool {
+    !L::denormals_are_zero() && (!prone || subnormals_work())
+}
+
+/// [`flush_prone`] over the lanes of an `f32x4`: whether any is 0 or
+/// subnormal. A NaN lane (no root) is not.
+///
+/// ```
+/// use rayoracle::num::certify::flush_prone4;
+/// use wide::f32x4;
+/// assert!(!flush_prone4(f32x4::from([1.0, -2.0, f32::NAN, 3.0])));
+/// assert!(flush_prone4(f32x4::from([1.0, -0.0, 2.0, 3.0])));
+/// assert!(flush_prone4(f32x4::from([1.0, 2.0, 1e-40, 3.0])));
+/// ```
+#[inline(always)]
+pub fn flush_prone4(t: wide::f32x4) -> bool {
+    let bits: wide::i32x4 = wide::bytemuck::cast(t);
+    (bits & wide::i32x4::splat(0x7f80_0000))
+        .simd_eq(wide::i32x4::ZERO)
+        .any()
+}
+
 /// Whether any of these certified f32 results is 0 or subnormal (by its
 /// bits): the results of the later stages, which return f32 values, need
 /// [`subnormals_work`] only there. A result FTZ flushed is 0; one that
@@ -331,6 +388,43 @@ fn subnormals_survive_with(mul: impl Fn(f64, f64) -> f64) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Both encodings of the DAZ probe see the flag (the VEX one where the
+    /// CPU has AVX), on a thread of its own, whose MXCSR is restored.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn both_daz_probes_see_the_flag() {
+        fn csr() -> u32 {
+            let mut v = 0u32;
+            // SAFETY: stores MXCSR to `v`, a live aligned u32. A test: no
+            // benchmark is involved, and there is no other way to read it.
+            unsafe { core::arch::asm!("stmxcsr [{}]", in(reg) &mut v, options(nostack)) };
+            v
+        }
+        fn set_csr(v: u32) {
+            // SAFETY: loads MXCSR from `v`, a live aligned u32 holding the
+            // saved register with at most the DAZ bit changed: a valid
+            // value. A test, on its own thread.
+            unsafe { core::arch::asm!("ldmxcsr [{}]", in(reg) &v, options(nostack)) };
+        }
+        std::thread::spawn(|| {
+            let avx = std::arch::is_x86_feature_detected!("avx");
+            let saved = csr();
+            for daz in [false, true] {
+                set_csr(if daz {
+                    saved | 1 << 6
+                } else {
+                    saved & !(1 << 6)
+                });
+                let (sse, vex) = (daz_probe::<false>(), avx.then(daz_probe::<true>));
+                set_csr(saved);
+                assert_eq!(sse, daz);
+                assert!(vex.is_none_or(|v| v == daz), "{vex:?}");
+            }
+        })
+        .join()
+        .unwrap();
+    }
 
     /// The conversions from bits agree with the hardware's in the default
     /// environment, bit for bit, over the subnormal and low normal ranges

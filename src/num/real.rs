@@ -53,6 +53,12 @@ pub trait Real:
     /// Whether `lo` and `hi` round to the same `f32`, bit for bit (so −0
     /// and +0 differ, and a NaN never matches).
     fn same_f32(lo: Self, hi: Self) -> Self::Mask;
+    /// [`denormals_are_zero`](crate::num::certify::denormals_are_zero),
+    /// probed in this type's instruction encoding (VEX for the AVX types).
+    #[inline(always)]
+    fn denormals_are_zero() -> bool {
+        crate::num::certify::denormals_are_zero()
+    }
 }
 
 impl Real for f64 {
@@ -224,6 +230,10 @@ impl<T: Not<Output = T>> Not for Pair<T> {
 
 impl<L: Real> Real for Pair<L> {
     const FEW_DIVISIONS: bool = L::FEW_DIVISIONS;
+    #[inline(always)]
+    fn denormals_are_zero() -> bool {
+        L::denormals_are_zero()
+    }
     type Mask = Pair<L::Mask>;
     #[inline(always)]
     fn splat(x: f64) -> Pair<L> {

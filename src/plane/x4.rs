@@ -5,7 +5,7 @@
 use super::{Plane, PlaneHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
-use crate::num::certify::{certify, subnormals_work};
+use crate::num::certify::{certify, flush_prone4, results_stand, subnormals_work};
 use crate::num::real::{F64x4, Pair, Real, Real4, Real8};
 use crate::ray4::class::{ALL, NONE, ONE};
 use crate::ray4::{Ray4, gather3, scatter3};
@@ -108,7 +108,7 @@ pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 /// ```
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
-    intersect_in::<F64x4>(ray, p, subnormals_work)
+    intersect_in::<F64x4>(ray, p, results_stand::<F64x4>)
 }
 
 /// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
@@ -129,7 +129,7 @@ pub fn intersect_baseline(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
     #[target_feature(enable = "avx2,fma")]
     fn run(_: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
-        intersect_in::<Avx4>(ray, p, subnormals_work)
+        intersect_in::<Avx4>(ray, p, results_stand::<Avx4>)
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.
     // Justified by the kernels bench figures in `crate::num::avx`.
@@ -180,12 +180,12 @@ fn packets_in<W: Real8>(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
             W::widen3(&pk[0].dir, &pk[1].dir),
         );
         let [x, y] = decide(o2, d2, a2, n2).halves();
-        o[0] = finish(x, || env, &pk[0], p);
-        o[1] = finish(y, || env, &pk[1], p);
+        o[0] = finish(x, |_| env, &pk[0], p);
+        o[1] = finish(y, |_| env, &pk[1], p);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
         let (o1, d1) = (one.origin.map(W::Half::widen), one.dir.map(W::Half::widen));
-        *o = finish(decide(o1, d1, a, n), || env, one, p);
+        *o = finish(decide(o1, d1, a, n), |_| env, one, p);
     }
 }
 
@@ -233,12 +233,18 @@ fn decide<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Decided<L> {
     }
 }
 
-/// The results of one packet; `env` says whether the floating-point
-/// environment keeps subnormals (read only where every lane is done).
+/// The results of one packet; `env(prone)` says whether they stand in the
+/// floating-point environment, `prone` where a root is 0 or subnormal
+/// ([`results_stand`]; asked only where every lane is done).
 #[inline(always)]
-fn finish<L: Real4>(x: Decided<L>, env: impl Fn() -> bool, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+fn finish<L: Real4>(
+    x: Decided<L>,
+    env: impl Fn(bool) -> bool,
+    ray: &Ray4,
+    p: &Plane4,
+) -> PlaneHit4 {
     let t = x.t.narrow();
-    if L::all(x.hit) && env() {
+    if L::all(x.hit) && env(flush_prone4(t)) {
         return PlaneHit4 {
             class: i32x4::splat(ONE),
             t,
@@ -248,7 +254,7 @@ fn finish<L: Real4>(x: Decided<L>, env: impl Fn() -> bool, ray: &Ray4, p: &Plane
     // ONE where hit, NONE where parallel (never both), else ALL.
     let k = i32x4::splat;
     let class = k(ALL) + (h & k(ONE - ALL)) + (par & k(NONE - ALL));
-    if L::all(x.done) && env() {
+    if L::all(x.done) && env(flush_prone4(t)) {
         PlaneHit4 { class, t }
     } else {
         PlaneHit4::settle([class, cast(t)], L::mask_i32(x.done), ray, p)
@@ -257,7 +263,7 @@ fn finish<L: Real4>(x: Decided<L>, env: impl Fn() -> bool, ray: &Ray4, p: &Plane
 
 /// The kernel over any four-lane [`Real4`].
 #[inline(always)]
-fn intersect_in<L: Real4>(ray: &Ray4, p: &Plane4, env: impl Fn() -> bool) -> PlaneHit4 {
+fn intersect_in<L: Real4>(ray: &Ray4, p: &Plane4, env: impl Fn(bool) -> bool) -> PlaneHit4 {
     let w = L::widen;
     let x = decide(
         ray.origin.map(w),

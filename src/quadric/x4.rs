@@ -7,7 +7,7 @@ use super::{Quadric, QuadricHit, reference, stages};
 use crate::num::avx::{Avx2, Avx4};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx512::{Avx8, Avx512};
-use crate::num::certify::{certify, subnormals_work};
+use crate::num::certify::{certify, flush_prone4, results_stand, subnormals_work};
 use crate::num::real::{F64x4, Pair, Real, Real4, Real8};
 use crate::ray4::Ray4;
 use crate::ray4::class::{ALL, NONE, ONE, TWO};
@@ -112,7 +112,7 @@ pub fn intersect(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
 /// ```
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
-    intersect_in::<F64x4>(ray, q, subnormals_work)
+    intersect_in::<F64x4>(ray, q, results_stand::<F64x4>)
 }
 
 /// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
@@ -133,7 +133,7 @@ pub fn intersect_baseline(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
 pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
     #[target_feature(enable = "avx2,fma")]
     fn run(_: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
-        intersect_in::<Avx4>(ray, q, subnormals_work)
+        intersect_in::<Avx4>(ray, q, results_stand::<Avx4>)
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.
     // Justified by the kernels bench figures in `crate::num::avx`.
@@ -226,13 +226,13 @@ fn packets_in<W: Real8>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
             W::widen3(&pk[0].dir, &pk[1].dir),
         );
         let [x, y] = decide(&k2, o2, d2).halves();
-        o[0] = finish(x, || env, &pk[0], q);
-        o[1] = finish(y, || env, &pk[1], q);
+        o[0] = finish(x, |_| env, &pk[0], q);
+        o[1] = finish(y, |_| env, &pk[1], q);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
         let w = W::Half::widen;
         let (o1, d1) = (one.origin.map(w), one.dir.map(w));
-        *o = finish(decide(&k, o1, d1), || env, one, q);
+        *o = finish(decide(&k, o1, d1), |_| env, one, q);
     }
 }
 
@@ -297,12 +297,13 @@ fn decide<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3]) -> Decided<L> {
     }
 }
 
-/// The results of one packet; `env` says whether the floating-point
-/// environment keeps subnormals (read only where every lane is done).
+/// The results of one packet; `env(prone)` says whether they stand in the
+/// floating-point environment, `prone` where a root is 0 or subnormal
+/// ([`results_stand`]; asked only where every lane is done).
 #[inline(always)]
 fn finish<L: Real4>(
     x: Decided<L>,
-    env: impl FnOnce() -> bool,
+    env: impl FnOnce(bool) -> bool,
     ray: &Ray4,
     q: &Quadric4,
 ) -> QuadricHit4 {
@@ -310,7 +311,7 @@ fn finish<L: Real4>(
     let k = i32x4::splat;
     let class = t.select(k(TWO), o.select(k(ONE), a & k(ALL)));
     let (t0, t1) = (x.lo.narrow(), x.hi.narrow());
-    if L::all(x.done) && env() {
+    if L::all(x.done) && env(flush_prone4(t0) || flush_prone4(t1)) {
         QuadricHit4 { class, t0, t1 }
     } else {
         QuadricHit4::settle([class, cast(t0), cast(t1)], L::mask_i32(x.done), ray, q)
@@ -319,7 +320,7 @@ fn finish<L: Real4>(
 
 /// The kernel over any four-lane [`Real4`].
 #[inline(always)]
-fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4, env: impl FnOnce() -> bool) -> QuadricHit4 {
+fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4, env: impl FnOnce(bool) -> bool) -> QuadricHit4 {
     let k = widen10::<L>(&q.coeffs);
     finish(
         decide(&k, ray.origin.map(L::widen), ray.dir.map(L::widen)),

@@ -6,7 +6,7 @@ use super::{Sphere, SphereHit, reference, stages};
 use crate::Ray;
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
-use crate::num::certify::{certify, subnormals_work};
+use crate::num::certify::{certify, flush_prone4, results_stand, subnormals_work};
 use crate::num::real::{F64x4, Pair, Real, Real4, Real8};
 use crate::ray4::class::{NONE, ONE, TWO};
 use crate::ray4::{Ray4, gather3};
@@ -114,7 +114,7 @@ pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 /// ```
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-    intersect_in::<F64x4>(ray, s, subnormals_work)
+    intersect_in::<F64x4>(ray, s, results_stand::<F64x4>)
 }
 
 /// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
@@ -135,7 +135,7 @@ pub fn intersect_baseline(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
     #[target_feature(enable = "avx2,fma")]
     fn run(_: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-        intersect_in::<Avx4>(ray, s, subnormals_work)
+        intersect_in::<Avx4>(ray, s, results_stand::<Avx4>)
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.
     // Justified by the kernels bench figures in `crate::num::avx`.
@@ -193,11 +193,11 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
             continue;
         }
         let [x, y] = decide_sorted(stages::sorted(k, 1.0)).halves();
-        o[0] = finish(x, || env, &pk[0], s);
-        o[1] = finish(y, || env, &pk[1], s);
+        o[0] = finish(x, |_| env, &pk[0], s);
+        o[1] = finish(y, |_| env, &pk[1], s);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
-        *o = intersect_in::<W::Half>(one, s, || env);
+        *o = intersect_in::<W::Half>(one, s, |_| env);
     }
 }
 
@@ -273,15 +273,16 @@ fn decide_quotients<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L
     }
 }
 
-/// The results of one packet; `env` says whether the floating-point
-/// environment keeps subnormals (read only where every lane is done).
+/// The results of one packet; `env(prone)` says whether they stand in the
+/// floating-point environment, `prone` where a root is 0 or subnormal
+/// ([`results_stand`]; asked only where every lane is done).
 /// Lanes the first pass leaves with the class two go to the second; what
 /// is left (an undecided class, an undecided root) goes to the scalar
 /// stages.
 #[inline(always)]
 fn finish<L: Real4>(
     x: Decided<L>,
-    env: impl FnOnce() -> bool,
+    env: impl FnOnce(bool) -> bool,
     ray: &Ray4,
     s: &Sphere4,
 ) -> SphereHit4 {
@@ -300,7 +301,7 @@ fn finish<L: Real4>(
     };
     let class = L::mask_i32(x.two) & i32x4::splat(TWO);
     let (t0, t1) = (x.lo.narrow(), x.hi.narrow());
-    if L::all(x.done) && env() {
+    if L::all(x.done) && env(flush_prone4(t0) || flush_prone4(t1)) {
         SphereHit4 { class, t0, t1 }
     } else {
         SphereHit4::settle([class, cast(t0), cast(t1)], L::mask_i32(x.done), ray, s)
@@ -309,12 +310,12 @@ fn finish<L: Real4>(
 
 /// The kernel over any four-lane [`Real4`].
 #[inline(always)]
-fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl Fn() -> bool) -> SphereHit4 {
+fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl Fn(bool) -> bool) -> SphereHit4 {
     let (o, d, c, r) = widened::<L>(ray, s);
     let k = stages::classes(o, d, c, r, 1.0);
     // A packet whose every lane certainly misses needs no roots: coherent
     // rays, such as a camera's, often come so.
-    if L::all(k.none) && env() {
+    if L::all(k.none) && env(false) {
         return SphereHit4::MISS;
     }
     // Nor does one without a lane certified to have two (exact tangents).
