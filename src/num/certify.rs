@@ -9,11 +9,18 @@
 //!
 //! The bound comes in two parts, `e = |t|·r + a`: a relative part `r`,
 //! which the kernels can often work out before `t` itself, and an absolute
-//! part `a`. The ends are computed in f64, rounded to nearest, each within
-//! `2⁻⁵³(|t| + e) ≤ 2⁻⁵²|t|` of the true end wherever the test can pass
-//! (there `e ≤ |t|`, or the ends would straddle 0), so `certify` adds
-//! `2⁻⁵¹` to `r`. The kernels widen `r` and `a` by `1 + 2⁻³⁰`, which covers
-//! the roundings of the few dozen operations that evaluate them and `e`.
+//! part `a`. `certify` adds `2⁻⁵¹` to `r`, `w = r + 2⁻⁵¹`, and computes
+//! the ends in f64, rounded to nearest, as `t(1 − w) − a'` and `t(1 + w) +
+//! a'` with `a' = a` carrying the sign of `t`: for `t > 0` the lower and
+//! upper ends, for `t < 0` the upper and lower, and neither waits on a sum
+//! `|t|w + a`, which would lengthen the chain of dependent operations
+//! after `t` by two. Where the test can pass, `a ≤ e ≤ |t|` (or the ends
+//! would straddle 0, and the computed ones have opposite signs too), and
+//! each end is then within `3.01·2⁻⁵³|t|` of `t(1 ∓ (r + 2⁻⁵¹)) ∓ a'`, on
+//! the outer side of `t(1 ∓ r) ∓ a'`: the roundings of `1 ∓ w`, the
+//! product and the sum are covered by the `2⁻⁵¹ = 4·2⁻⁵³`. The kernels
+//! widen `r` and `a` by `1 + 2⁻³⁰`, which covers the roundings of the few
+//! dozen operations that evaluate them.
 
 use super::real::Real;
 
@@ -43,8 +50,9 @@ pub const SLACK: f64 = 1.0 + 1.0 / (1u64 << 30) as f64;
 /// ```
 #[inline(always)]
 pub fn certify<L: Real>(t: L, r: L, a: L) -> L::Mask {
-    let e = t.abs() * (r + L::splat(2f64.powi(-51))) + a;
-    L::same_f32(t - e, t + e)
+    let (one, w) = (L::splat(1.0), r + L::splat(2f64.powi(-51)));
+    let a = a.copysign(t);
+    L::same_f32(t * (one - w) - a, t * (one + w) + a)
 }
 
 /// The bound on a quotient, in the two parts [`certify`] takes. For `t̂ =
@@ -388,6 +396,75 @@ fn subnormals_survive_with(mul: impl Fn(f64, f64) -> f64) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `certify` against exact arithmetic: wherever it passes, both ends
+    /// of `[t − |t|r − a, t + |t|r + a]`, computed exactly (as integers
+    /// scaled by `2²⁴⁰⁰`), round to `t as f32`. The cases put `t` at and
+    /// around f32 midpoints, a few f64 ulps either side, with the bound
+    /// just inside and just outside the distance to the midpoint.
+    #[test]
+    fn certified_enclosures_round_to_one_f32_exactly() {
+        use dashu_int::IBig;
+        use rand::{Rng, SeedableRng};
+        // x·2¹²⁰⁰ for a finite x, exactly.
+        let big = |x: f64| -> IBig {
+            let (bits, neg) = (x.to_bits() & !(1 << 63), x.is_sign_negative());
+            let (e, m) = ((bits >> 52) as i64, bits & ((1 << 52) - 1));
+            let (m, shift) = if e == 0 {
+                (m, 1200 - 1074)
+            } else {
+                (m | 1 << 52, e - 1075 + 1200)
+            };
+            let v = IBig::from(m) << shift as usize;
+            if neg { -v } else { v }
+        };
+        let scaled = |x: f64| big(x) << 1200;
+        // Whether the exact `v·2⁻²⁴⁰⁰` rounds to `f` (ties to even).
+        let rounds_to = |v: &IBig, f: f32| -> bool {
+            let (down, up) = (f.next_down() as f64, f.next_up() as f64);
+            let (lo, hi) = (
+                scaled((f as f64 + down) / 2.0),
+                scaled((f as f64 + up) / 2.0),
+            );
+            let even = f.to_bits().is_multiple_of(2);
+            (lo < *v || (lo == *v && even)) && (*v < hi || (*v == hi && even))
+        };
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(51);
+        let (mut certified, mut near) = (0, 0);
+        for _ in 0..200_000 {
+            let f = rng.random_range(0.001f32..1000.0) * if rng.random() { 1.0 } else { -1.0 };
+            let mid = (f as f64 + f.next_up() as f64) / 2.0;
+            let t = mid + (rng.random_range(-40i64..=40) as f64) * mid.abs() * 2f64.powi(-52);
+            let dist = (t - mid).abs();
+            let r = match rng.random_range(0..3) {
+                0 => 0.0,
+                1 => rng.random_range(0.0..2f64.powi(-50)),
+                _ => rng.random::<f64>() * dist / t.abs(),
+            };
+            let a = match rng.random_range(0..3) {
+                0 => 0.0,
+                1 => dist * rng.random_range(0.5..1.5),
+                _ => (dist - r * t.abs()).max(0.0) * rng.random_range(0.9..1.1),
+            };
+            if !certify(t, r, a) {
+                continue;
+            }
+            certified += 1;
+            near += usize::from(r * t.abs() + a > dist / 2.0);
+            let e = (big(t.abs()) * big(r)) + scaled(a);
+            let want = t as f32;
+            for end in [scaled(t) - &e, scaled(t) + &e] {
+                assert!(
+                    rounds_to(&end, want),
+                    "t {t:e}, r {r:e}, a {a:e}: not {want:e}"
+                );
+            }
+        }
+        assert!(
+            certified > 20_000 && near > 5_000,
+            "{certified} certified, {near} near"
+        );
+    }
 
     /// Both encodings of the DAZ probe see the flag (the VEX one where the
     /// CPU has AVX), on a thread of its own, whose MXCSR is restored.
