@@ -268,8 +268,8 @@ pub struct Sorted<L: Real> {
 /// In the notation of the [module](self), on the lanes where `Δ̂ > E_Δ`
 /// (so `Δ̂ > 0`): one division `ρ = 1/(âΔ̂)`, started with the square root,
 /// gives `1/â = Δ̂ρ` within `3u`, and `1/(ŝâ) = ŝρ` within `4u`, so that
-/// `E_s/â` is evaluated as `ŝ(E_Δρ + 2u/â)`, no product of it waiting on
-/// both `ρ` and `1/â`. With `n̂ = fl(−b̂ ∓ ŝ)` against `n = −b ∓ √Δ`: `|n̂ − n| ≤ u|n̂| +
+/// `E_s/â = (E_Δ/ŝ + 2uŝ)/â` is evaluated as `ŝρ(E_Δ + 2uΔ̂)`, which waits
+/// on the division alone. With `n̂ = fl(−b̂ ∓ ŝ)` against `n = −b ∓ √Δ`: `|n̂ − n| ≤ u|n̂| +
 /// E_b + E_s`, `E_s = E_Δ/ŝ + 2uŝ` as in the filter. The root `t̂ =
 /// fl(n̂·(1/â))` is within `4u|t̂|` of `n̂/â`, and `|n̂/â − n/a| ≤ (|n̂|
 /// E_a/a + |n̂ − n|)/â`, with `E_a/a ≤ 2u`: `e = 7u|t̂| + (E_b + E_s)/â`
@@ -285,9 +285,8 @@ pub struct Sorted<L: Real> {
 ///
 /// Where two roots are certified, `âΔ̂` lies between `2⁻⁹⁴⁸` and `2⁷⁷⁸`
 /// (the bounds of `q̂âŝ` in the module's range section), so `ρ`, `1/â` and
-/// `1/Δ̂` are normal and finite. `E_Δρ` may underflow, but `2u/â` (at least
-/// `2⁻³¹¹`, as `â < 2²⁵⁸`) is added to it, and what an underflow loses (below
-/// `2⁻¹⁰²²`) is far inside the slack of that sum.
+/// `1/Δ̂` are normal and finite; `ρ(E_Δ + 2uΔ̂) ≥ 2u/â` is at least
+/// `2⁻³¹¹`, as `â < 2²⁵⁸`, so it does not underflow.
 ///
 /// ```
 /// use rayoracle::num::certify::certify;
@@ -331,9 +330,9 @@ pub(crate) fn sorted<L: Real>(classes: Classes<L>, shrink: f64) -> Sorted<L> {
         (ia * idisc, ia)
     };
     // Everything but ŝ, ready while the square root runs: (E_b + E_s)/â =
-    // E_b/â + ŝ·(E_Δρ + 2u/â), with no product waiting on both ρ and 1/â.
+    // E_b/â + ŝρ(E_Δ + 2uΔ̂), waiting on ρ alone.
     let eb = k(8.0) * mb * ia * slack;
-    let es = (ed * slack) * rho + L::splat(2.0 * U * shrink * SLACK) * ia;
+    let es = rho * ((ed + k(2.0) * disc) * slack);
     let s = disc.sqrt();
     Sorted {
         none,
