@@ -14,11 +14,11 @@
 //! a'` with `a' = a` carrying the sign of `t`: for `t > 0` the lower and
 //! upper ends, for `t < 0` the upper and lower, and neither waits on a sum
 //! `|t|w + a`, which would lengthen the chain of dependent operations
-//! after `t` by two. Where the test can pass, `a ≤ e ≤ |t|` (or the ends
-//! would straddle 0, and the computed ones have opposite signs too), and
-//! each end is then within `3.01·2⁻⁵³|t|` of `t(1 ∓ (r + 2⁻⁵¹)) ∓ a'`, on
-//! the outer side of `t(1 ∓ r) ∓ a'`: the roundings of `1 ∓ w`, the
-//! product and the sum are covered by the `2⁻⁵¹ = 4·2⁻⁵³`. The kernels
+//! after `t` by two. Where the test can pass, `|t|w + a < 2⁻²²|t|`: a
+//! wider enclosure holds 0 or an f32 midpoint far inside it, and so do the
+//! computed ends. There each end is within `3.02·2⁻⁵³|t|` of `t(1 ∓ w) ∓
+//! a'`, so on the outer side of `t(1 ∓ r) ∓ a'`: the roundings of `1 ∓ w`,
+//! the product and the sum are covered by the `2⁻⁵¹ = 4·2⁻⁵³`. The kernels
 //! widen `r` and `a` by `1 + 2⁻³⁰`, which covers the roundings of the few
 //! dozen operations that evaluate them.
 
