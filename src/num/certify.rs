@@ -398,34 +398,21 @@ mod tests {
     use super::*;
 
     /// `certify` against exact arithmetic: wherever it passes, both ends
-    /// of `[t − |t|r − a, t + |t|r + a]`, computed exactly (as integers
-    /// scaled by `2²⁴⁰⁰`), round to `t as f32`. The cases put `t` at and
-    /// around f32 midpoints, a few f64 ulps either side, with the bound
-    /// just inside and just outside the distance to the midpoint.
+    /// of `[t − |t|r − a, t + |t|r + a]`, computed exactly ([`Dyadic`]),
+    /// round to `t as f32`. The cases put `t` at and around f32 midpoints,
+    /// a few f64 ulps either side, with the bound just inside and just
+    /// outside the distance to the midpoint.
+    ///
+    /// [`Dyadic`]: crate::exact::Dyadic
     #[test]
     fn certified_enclosures_round_to_one_f32_exactly() {
-        use dashu_int::IBig;
+        use crate::exact::Dyadic;
         use rand::{Rng, SeedableRng};
-        // x·2¹²⁰⁰ for a finite x, exactly.
-        let big = |x: f64| -> IBig {
-            let (bits, neg) = (x.to_bits() & !(1 << 63), x.is_sign_negative());
-            let (e, m) = ((bits >> 52) as i64, bits & ((1 << 52) - 1));
-            let (m, shift) = if e == 0 {
-                (m, 1200 - 1074)
-            } else {
-                (m | 1 << 52, e - 1075 + 1200)
-            };
-            let v = IBig::from(m) << shift as usize;
-            if neg { -v } else { v }
-        };
-        let scaled = |x: f64| big(x) << 1200;
-        // Whether the exact `v·2⁻²⁴⁰⁰` rounds to `f` (ties to even).
-        let rounds_to = |v: &IBig, f: f32| -> bool {
-            let (down, up) = (f.next_down() as f64, f.next_up() as f64);
-            let (lo, hi) = (
-                scaled((f as f64 + down) / 2.0),
-                scaled((f as f64 + up) / 2.0),
-            );
+        let d = Dyadic::from_f64;
+        // Whether `v` rounds to `f` (ties to even); f32 midpoints are f64s.
+        let rounds_to = |v: &Dyadic, f: f32| -> bool {
+            let mid = |g: f32| d((f as f64 + g as f64) / 2.0);
+            let (lo, hi) = (mid(f.next_down()), mid(f.next_up()));
             let even = f.to_bits().is_multiple_of(2);
             (lo < *v || (lo == *v && even)) && (*v < hi || (*v == hi && even))
         };
@@ -451,9 +438,9 @@ mod tests {
             }
             certified += 1;
             near += usize::from(r * t.abs() + a > dist / 2.0);
-            let e = (big(t.abs()) * big(r)) + scaled(a);
+            let e = d(t.abs()) * d(r) + d(a);
             let want = t as f32;
-            for end in [scaled(t) - &e, scaled(t) + &e] {
+            for end in [d(t) - &e, d(t) + &e] {
                 assert!(
                     rounds_to(&end, want),
                     "t {t:e}, r {r:e}, a {a:e}: not {want:e}"
