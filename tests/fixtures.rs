@@ -7,8 +7,12 @@
 //! `expect` keys: `class` (the oracle's class: `hit`, `parallel`,
 //! `in_plane`, `none`, `tangent`, `two`, `one`, `all`, `non_finite`, and for
 //! cameras `ray` or `error`), `roots_bits` (the roots' f32 bits, ascending),
-//! `dir_bits` (a camera ray's direction bits) and `error` (a camera
-//! construction error's variant name, e.g. `DirZero`).
+//! `dir_bits` (a camera ray's direction bits), `error` (a camera
+//! construction error's variant name, e.g. `DirZero`) and `stage` (for a
+//! plane, sphere or quadric: the stage of the scalar reference that
+//! decides it, by [`Stage::name`](rayoracle::stage::Stage::name), worked
+//! out from the derivations, so that a case sent to a later stage than it
+//! needs, which still gives the right answer, shows).
 //!
 //! Lines of a kind that is compiled out of this build (cargo features) are
 //! skipped and counted; every kind that is compiled in must run at least one
@@ -139,6 +143,20 @@ fn oracle(case: &Case) -> Oracle {
     }
 }
 
+/// The stage of the scalar reference that decides `case` (`None` for a
+/// camera, which has none).
+fn reference_stage(case: &Case) -> Option<&'static str> {
+    match case {
+        #[cfg(feature = "plane")]
+        Case::Plane(ray, p) => Some(plane::reference::intersect_staged(ray, p).1.name()),
+        #[cfg(feature = "sphere")]
+        Case::Sphere(ray, s) => Some(sphere::reference::intersect_staged(ray, s).1.name()),
+        #[cfg(feature = "quadric")]
+        Case::Quadric(ray, q) => Some(quadric::reference::intersect_staged(ray, q).1.name()),
+        Case::Camera(..) => None,
+    }
+}
+
 fn parse_bits(v: &Value) -> Result<Vec<u32>, String> {
     let items = v.as_array().ok_or("expected an array of \"0x…\" strings")?;
     items
@@ -199,6 +217,16 @@ fn check_expect(case: &Case, expect: &Value) -> Vec<String> {
                     errs.push(format!("expect.error: oracle gives {g:?}, expected {w}"))
                 }
                 (None, _) => errs.push("expect.error: not a string".into()),
+            },
+            "stage" => match (want.as_str(), reference_stage(case)) {
+                (Some(w), Some(g)) if w == g => {}
+                (Some(w), Some(g)) => errs.push(format!(
+                    "expect.stage: the reference decides in stage {g}, expected {w}"
+                )),
+                (Some(_), None) => {
+                    errs.push(format!("expect.stage: not for a {} case", case.kind()))
+                }
+                (None, _) => errs.push("expect.stage: not a string".into()),
             },
             other => errs.push(format!("expect.{other}: unknown key")),
         }

@@ -123,3 +123,24 @@ fn inputs(ray: &Ray, plane: &Plane) -> [f32; 12] {
 fn exact_stage(ray: &Ray, plane: &Plane) -> PlaneHit {
     exact::intersect(ray, plane).unwrap_or(PlaneHit::Parallel)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    /// x4's way into the later stages, [`escalate`], probes the inputs
+    /// only under DAZ, as the reference does: a line the tight stage
+    /// decides is decided there, with a subnormal input or without.
+    #[test]
+    fn escalate_takes_the_stages_the_reference_takes() {
+        let e = f32::EPSILON;
+        let p = Plane::new(Vec3::X, Vec3::new(1.0 - e, 1.0, 0.0));
+        let want = PlaneHit::Hit(-(2f32.powi(46) - 2f32.powi(23)));
+        for z in [0.0, 1e-40] {
+            let r = Ray::new(Vec3::ZERO, Vec3::new(1.0 + e, -1.0, z));
+            assert_eq!(escalate(&r, &p), (want, Stage::Tight), "z = {z:e}");
+            assert_eq!(intersect_staged(&r, &p), (want, Stage::Tight), "z = {z:e}");
+        }
+    }
+}
