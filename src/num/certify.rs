@@ -306,6 +306,10 @@ pub fn narrow_exact(x: f64) -> f32 {
 /// assert!(!needs_probe(&[1.0, 0.0, -3.5], &[4.0, 0.0]));
 /// assert!(needs_probe(&[1.0, 1e-40], &[4.0]));
 /// assert!(needs_probe(&[1.0], &[1e-39]));
+/// // The least normal f32 is not subnormal, as an input or as a result.
+/// let least = f32::MIN_POSITIVE;
+/// assert!(!needs_probe(&[least, -least], &[f64::from(least), -f64::from(least)]));
+/// assert!(needs_probe(&[f32::from_bits(least.to_bits() - 1)], &[]));
 /// ```
 #[inline(always)]
 pub fn needs_probe(inputs: &[f32], t: &[f64]) -> bool {
@@ -393,6 +397,31 @@ fn subnormals_survive_with(mul: impl Fn(f64, f64) -> f64) -> bool {
     half != 0.0 && mul(half, 2.0) == f64::MIN_POSITIVE
 }
 
+/// Runs `f` on a thread of its own with MXCSR's flush-to-zero and
+/// denormals-are-zero bits as given, and returns what it returns: for the
+/// unit tests of the paths those environments take.
+#[cfg(all(test, target_arch = "x86_64"))]
+pub(crate) fn in_environment<R: Send + 'static>(
+    ftz: bool,
+    daz: bool,
+    f: impl FnOnce() -> R + Send + 'static,
+) -> R {
+    std::thread::spawn(move || {
+        let mut csr = 0u32;
+        // SAFETY: stores MXCSR to `csr`, a live aligned u32. Test code
+        // only: there is no other way to read the register.
+        unsafe { core::arch::asm!("stmxcsr [{}]", in(reg) &mut csr, options(nostack)) };
+        let csr = csr & !(1 << 15 | 1 << 6) | u32::from(ftz) << 15 | u32::from(daz) << 6;
+        // SAFETY: loads MXCSR from `csr`, a live aligned u32 holding the
+        // thread's own register with at most the FTZ and DAZ bits changed:
+        // a valid value, on a thread that ends with `f`.
+        unsafe { core::arch::asm!("ldmxcsr [{}]", in(reg) &csr, options(nostack)) };
+        f()
+    })
+    .join()
+    .unwrap()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -453,41 +482,29 @@ mod tests {
         );
     }
 
-    /// Both encodings of the DAZ probe see the flag (the VEX one where the
-    /// CPU has AVX), on a thread of its own, whose MXCSR is restored.
+    /// Every probe of the environment sees the flags it is for: both
+    /// encodings of the DAZ probe see DAZ (the VEX one where the CPU has
+    /// AVX), and the register read and the arithmetic probe see FTZ and DAZ
+    /// alike.
     #[cfg(target_arch = "x86_64")]
     #[test]
-    fn both_daz_probes_see_the_flag() {
-        fn csr() -> u32 {
-            let mut v = 0u32;
-            // SAFETY: stores MXCSR to `v`, a live aligned u32. A test: no
-            // benchmark is involved, and there is no other way to read it.
-            unsafe { core::arch::asm!("stmxcsr [{}]", in(reg) &mut v, options(nostack)) };
-            v
+    fn the_environment_probes_see_the_flags() {
+        let avx = std::arch::is_x86_feature_detected!("avx");
+        for (ftz, daz) in [(false, false), (true, false), (false, true), (true, true)] {
+            let (sse, vex, work, survive) = in_environment(ftz, daz, move || {
+                let vex = avx.then(daz_probe::<true>);
+                (
+                    daz_probe::<false>(),
+                    vex,
+                    subnormals_work(),
+                    subnormals_survive(),
+                )
+            });
+            assert_eq!(sse, daz, "ftz {ftz}, daz {daz}");
+            assert!(vex.is_none_or(|v| v == daz), "{vex:?}");
+            assert_eq!(work, !(ftz || daz), "ftz {ftz}, daz {daz}");
+            assert_eq!(survive, !(ftz || daz), "ftz {ftz}, daz {daz}");
         }
-        fn set_csr(v: u32) {
-            // SAFETY: loads MXCSR from `v`, a live aligned u32 holding the
-            // saved register with at most the DAZ bit changed: a valid
-            // value. A test, on its own thread.
-            unsafe { core::arch::asm!("ldmxcsr [{}]", in(reg) &v, options(nostack)) };
-        }
-        std::thread::spawn(|| {
-            let avx = std::arch::is_x86_feature_detected!("avx");
-            let saved = csr();
-            for daz in [false, true] {
-                set_csr(if daz {
-                    saved | 1 << 6
-                } else {
-                    saved & !(1 << 6)
-                });
-                let (sse, vex) = (daz_probe::<false>(), avx.then(daz_probe::<true>));
-                set_csr(saved);
-                assert_eq!(sse, daz);
-                assert!(vex.is_none_or(|v| v == daz), "{vex:?}");
-            }
-        })
-        .join()
-        .unwrap();
     }
 
     /// The conversions from bits agree with the hardware's in the default

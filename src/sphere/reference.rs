@@ -187,3 +187,34 @@ fn inputs(ray: &Ray, sphere: &Sphere) -> [f32; 10] {
 fn exact_stage(ray: &Ray, sphere: &Sphere) -> SphereHit {
     exact::intersect(ray, sphere).unwrap_or(SphereHit::None)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    /// x4's way into the later stages, [`escalate`], probes the inputs
+    /// only where x4 has not read the environment (`env` false), and only
+    /// under DAZ: in the default environment it takes the stages the
+    /// reference takes, with a subnormal input or without; under DAZ,
+    /// which reads the centre's `1e-40` as 0 and so makes the line an exact
+    /// tangent, it asks the oracle, which says the line misses.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn escalate_probes_the_inputs_only_under_daz() {
+        let r = Ray::new(Vec3::new(0.0, 1.0, -5.0), Vec3::Z);
+        let tangent = Sphere::new(Vec3::ZERO, 1.0);
+        let near = Sphere::new(Vec3::new(1e-40, 0.0, 0.0), 1.0);
+        for env in [false, true] {
+            let want = (SphereHit::Tangent(5.0), Stage::Tracked);
+            assert_eq!(escalate(&r, &tangent, env), want, "env {env}");
+            assert_eq!(intersect_staged(&r, &tangent), want);
+            let want = (SphereHit::None, Stage::DoubleWord);
+            assert_eq!(escalate(&r, &near, env), want, "env {env}");
+            assert_eq!(intersect_staged(&r, &near), want);
+        }
+        let daz =
+            crate::num::certify::in_environment(false, true, move || escalate(&r, &near, false));
+        assert_eq!(daz, (SphereHit::None, Stage::Exact));
+    }
+}
