@@ -173,3 +173,56 @@ fn inputs(ray: &Ray, quadric: &Quadric) -> [f32; 16] {
 fn exact_stage(ray: &Ray, quadric: &Quadric) -> QuadricHit {
     exact::intersect(ray, quadric).unwrap_or(QuadricHit::None)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    /// A unit sphere written as a quadric, touched by a line at `t =
+    /// 2⁻¹⁴⁰`, a subnormal f32 that the tracked stage finds from a
+    /// subnormal origin. x4's way into the later stages, [`escalate`],
+    /// takes the reference's stage (it probes the inputs only under DAZ);
+    /// under flush-to-zero, where rounding the root to f32 gives 0, the
+    /// oracle answers instead, as it does under denormals-are-zero.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn a_subnormal_root_of_a_later_stage_is_kept_from_ftz() {
+        let t = 2f32.powi(-140);
+        let q = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+        let r = Ray::new(Vec3::new(0.0, 1.0, -t), Vec3::Z);
+        let want = (QuadricHit::One(t), Stage::Tracked);
+        assert_eq!(intersect_staged(&r, &q), want);
+        assert_eq!(escalate(&r, &q), want);
+        let ftz =
+            crate::num::certify::in_environment(true, false, move || intersect_staged(&r, &q));
+        assert_eq!(ftz, (QuadricHit::One(t), Stage::Exact));
+        // Under DAZ the origin would read as 0, and the root as 0: both
+        // ways in probe the inputs and ask the oracle.
+        let daz = crate::num::certify::in_environment(false, true, move || {
+            (intersect_staged(&r, &q), escalate(&r, &q))
+        });
+        let exact = (QuadricHit::One(t), Stage::Exact);
+        assert_eq!(daz, (exact, exact));
+    }
+
+    /// The same sphere and a line that misses it by `2⁻¹⁴⁹`, the least
+    /// subnormal, in its origin's `x`: the double-word stage proves the
+    /// miss.
+    /// Under DAZ that `x` would read as 0 and the line would touch the
+    /// sphere at `t = 5`, a normal root that nothing downstream would
+    /// question: only the probe of the inputs sends it to the oracle.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn under_daz_a_subnormal_input_goes_to_the_oracle() {
+        let q = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+        let r = Ray::new(Vec3::new(f32::from_bits(1), 1.0, -5.0), Vec3::Z);
+        let want = (QuadricHit::None, Stage::DoubleWord);
+        assert_eq!((intersect_staged(&r, &q), escalate(&r, &q)), (want, want));
+        let daz = crate::num::certify::in_environment(false, true, move || {
+            (intersect_staged(&r, &q), escalate(&r, &q))
+        });
+        let exact = (QuadricHit::None, Stage::Exact);
+        assert_eq!(daz, (exact, exact));
+    }
+}
