@@ -10,9 +10,10 @@
 //! `dir_bits` (a camera ray's direction bits), `error` (a camera
 //! construction error's variant name, e.g. `DirZero`) and `stage` (for a
 //! plane, sphere or quadric: the stage of the scalar reference that
-//! decides it, by [`Stage::name`](rayoracle::stage::Stage::name), worked
-//! out from the derivations, so that a case sent to a later stage than it
-//! needs, which still gives the right answer, shows).
+//! decides it, by [`Stage::name`](rayoracle::stage::Stage::name), as
+//! recorded when the line was added; a case sent to a later stage than it
+//! needs still gets the right answer, so only this key shows it, and a
+//! change of stage must be a deliberate one).
 //!
 //! Lines of a kind that is compiled out of this build (cargo features) are
 //! skipped and counted; every kind that is compiled in must run at least one
