@@ -40,6 +40,7 @@ fn the_plane_and_cylinder_solvers_fail_exactly_these_families() {
             ("plane/in-plane", 135),
             ("plane/zero-normal", 1),
             ("plane/subnormal-normal", 256),
+            ("plane/nearly-parallel", 1),
             ("plane/near-parallel", 6),
             ("plane/random/small-root", 8),
             ("plane/random/in-plane", 256),
