@@ -155,6 +155,17 @@ proptest! {
         x4_agrees(&rayoracle::case::Case::Camera(p, px))?;
     }
 
+    /// Pixels outside the image extrapolate the same formula, with the
+    /// filter's bound computed per pixel rather than the image's.
+    #[test]
+    fn pixels_outside_the_image((p, x, y) in valid_camera().prop_flat_map(|p| (
+        Just(p),
+        prop_oneof![Just(p.res[0]), p.res[0]..=u32::MAX, 0..=p.res[0] - 1],
+        prop_oneof![Just(p.res[1]), p.res[1]..=u32::MAX, u32::MAX..=u32::MAX],
+    ))) {
+        agrees(p, [x, y])?;
+    }
+
     /// The enclosure of `tan(a/2)` is monotone in `a`: at 120 bits the
     /// enclosures of two neighbouring `f32` angles are disjoint and in order.
     #[test]
@@ -292,8 +303,10 @@ fn tan_half_against_known_values() {
 /// components on near-diagonal cameras (`dir ≈ −z` tilted by a tiny
 /// amount, `up ≈ (1, 1, 0)`, square images, diagonal pixels), where the
 /// terms `u·xₓ` and `v·yₓ` nearly cancel and the component is about the
-/// tiny `dirₓ`. At full size it never does.
-fn wrong_with_shrink(shrink: f64) -> usize {
+/// tiny `dirₓ`. At full size it never does. `outside` takes the pixels
+/// beyond the image (still on its diagonal), whose bound is computed per
+/// pixel rather than once for the image.
+fn wrong_with_shrink(shrink: f64, outside: bool) -> usize {
     let mut rng = SmallRng::seed_from_u64(0x5a1c);
     let mut wrong = 0;
     for _ in 0..200 {
@@ -305,7 +318,7 @@ fn wrong_with_shrink(shrink: f64) -> usize {
         let res = rng.random_range(2..5000);
         let p = CameraParams::new(Vec3::ZERO, dir, up, rng.random_range(0.1f32..3.0), [res; 2]);
         let cam = p.build().unwrap();
-        let x = rng.random_range(0..res);
+        let x = rng.random_range(0..res) + if outside { res } else { 0 };
         let got = cam.ray_shrunk(x, x, shrink).dir;
         let want = exact::ray(&p, x, x).unwrap().dir;
         if got.to_array().map(f32::to_bits) != want.to_array().map(f32::to_bits) {
@@ -317,8 +330,10 @@ fn wrong_with_shrink(shrink: f64) -> usize {
 
 #[test]
 fn a_shrunk_filter_bound_gives_wrong_components() {
-    assert_eq!(wrong_with_shrink(1.0), 0);
-    assert!(wrong_with_shrink(1e-6) > 0);
+    for outside in [false, true] {
+        assert_eq!(wrong_with_shrink(1.0, outside), 0);
+        assert!(wrong_with_shrink(1e-6, outside) > 0);
+    }
 }
 
 /// Rounding defines overflow: a component whose real value is beyond

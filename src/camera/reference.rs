@@ -7,7 +7,8 @@
 
 use super::{CameraError, CameraParams, MAX_RESOLUTION, basis, filter};
 use crate::Ray;
-use crate::num::real::{F64x4, Real, Real4};
+use crate::num::certify::widen_bits;
+use crate::num::real::{F64x4, Real};
 use glam::Vec3;
 
 /// A validated camera with its basis: `x` (right, half-width) and `y` (down,
@@ -37,6 +38,17 @@ pub struct Camera {
     /// `xᵢ/resX` and `yᵢ/resY` to within `2⁻⁵²` relatively, for
     /// [`filter::component`] (NaN where out of its range).
     pub(super) unit: [[f64; 3]; 2],
+    /// `dir` in f64, widened from its bits.
+    pub(super) d64: [f64; 3],
+    /// The filter's bound terms, `err[j][i]` for component `i`
+    /// ([`filter::bound_terms`]).
+    pub(super) err: [[f64; 3]; 3],
+    /// The filter's bound for every pixel of the image ([`filter::bound`]
+    /// at the largest numerators).
+    pub(super) e_image: [f64; 3],
+    /// Whether some `unit` value is NaN: then every pixel is settled
+    /// ([`Camera::settle`]).
+    pub(super) slow: bool,
 }
 
 /// Cameras are equal when their inputs are: everything else is built from
@@ -156,11 +168,19 @@ impl Camera {
         if !(x.is_finite() && y.is_finite()) {
             return Err(CameraError::BasisOverflow);
         }
+        let d = p.dir.to_array();
+        let t: [[f64; 3]; 3] =
+            core::array::from_fn(|i| filter::bound_terms(d[i], unit[0][i], unit[1][i]));
+        let corner = p.res.map(|r| filter::numerator(0, r));
         Ok(Camera {
             params: *p,
             x,
             y,
             unit,
+            d64: d.map(|d| widen_bits(d.to_bits())),
+            err: core::array::from_fn(|j| t.map(|e| e[j])),
+            e_image: t.map(|t| filter::bound(corner, t)),
+            slow: unit.as_flattened().iter().any(|u| u.is_nan()),
         })
     }
 
@@ -188,40 +208,65 @@ impl Camera {
     #[inline]
     pub(crate) fn dir(&self, px: u32, py: u32, shrink: f64) -> [f32; 3] {
         let [rx, ry] = self.params.res;
-        let (nx, ny) = (filter::numerator(px, rx), filter::numerator(py, ry));
-        let d = self.params.dir.to_array();
+        let n = [filter::numerator(px, rx), filter::numerator(py, ry)];
         // The three components in the lanes of one F64x4 (two SSE2
         // registers in a default build), the fourth lane idle.
         let lanes = |v: [f64; 3]| F64x4::from([v[0], v[1], v[2], 0.0]);
-        let (r, ok) = filter::component(
-            lanes(d.map(f64::from)),
-            lanes(self.unit[0]),
-            lanes(self.unit[1]),
-            F64x4::splat(nx),
-            F64x4::splat(ny),
-            shrink,
+        let s = <F64x4 as Real>::splat;
+        let e = if px < rx && py < ry {
+            lanes(self.e_image)
+        } else {
+            filter::bound(n.map(s), self.err.map(lanes))
+        };
+        let (out, ok) = filter::component(
+            lanes(self.d64),
+            [lanes(self.unit[0]), lanes(self.unit[1])],
+            n.map(s),
+            e * s(shrink),
         );
-        let ([o0, o1, o2, _], ok) = (r.narrow().to_array(), ok.lanes());
+        // Decided, and neither 0 nor subnormal (where flush-to-zero, or an
+        // exact zero, may matter).
+        let good = ok & !filter::tiny(out);
+        let [o0, o1, o2, _] = out.to_array();
         let mut out = [o0, o1, o2];
-        let mut undecided = [!ok[0], !ok[1], !ok[2]];
-        if filter::flushed(&d, &out) {
-            undecided = [true; 3];
-        }
-        if undecided.contains(&true) {
-            self.escalate(&mut out, undecided, px, py);
+        if good.to_bitmask() & 0b111 != 0b111 || self.slow {
+            let ok = ok.to_bitmask();
+            self.settle(&mut out, [0, 1, 2].map(|i| ok & 1 << i != 0), n);
         }
         out
     }
 
-    /// The undecided components of one pixel, from the oracle.
+    /// The components of one pixel that the filter leaves undecided or
+    /// that are 0 or subnormal (all three where the camera is `slow`):
+    /// `dᵢ` where that is exact ([`filter::exact`]), else the oracle where
+    /// the filter's answer does not stand. `ok` is the filter's verdict,
+    /// `n` the pixel's numerators.
     #[cold]
     #[inline(never)]
-    pub(crate) fn escalate(&self, out: &mut [f32; 3], undecided: [bool; 3], px: u32, py: u32) {
-        let [rx, ry] = self.params.res;
-        let (nx, ny) = (
-            super::exact::numerator(px, rx),
-            super::exact::numerator(py, ry),
-        );
+    pub(crate) fn settle(&self, out: &mut [f32; 3], ok: [bool; 3], n: [f64; 2]) {
+        let d = self.params.dir.to_array();
+        let flushed = filter::flushed(out);
+        let mut undecided = [false; 3];
+        for i in 0..3 {
+            let b = [self.unit[0][i], self.unit[1][i]];
+            if filter::exact(b, n) {
+                out[i] = d[i];
+            } else {
+                undecided[i] = flushed || !ok[i] || b[0].is_nan() || b[1].is_nan();
+            }
+        }
+        if undecided.contains(&true) {
+            self.escalate(out, undecided, n);
+        }
+    }
+
+    /// The undecided components of one pixel, from the oracle; `n` holds
+    /// the pixel's numerators ([`filter::numerator`], integers below `2³⁴`
+    /// in magnitude, so exact in f64).
+    #[cold]
+    #[inline(never)]
+    pub(crate) fn escalate(&self, out: &mut [f32; 3], undecided: [bool; 3], n: [f64; 2]) {
+        let (nx, ny) = (n[0] as i64, n[1] as i64);
         super::exact::with_approx(&self.params, |e, a| {
             for i in (0..3).filter(|&i| undecided[i]) {
                 out[i] = e.round_component(a, i, nx, ny);

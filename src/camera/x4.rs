@@ -3,19 +3,9 @@
 //! oracle (correct rounding is unique, so the two agree by construction).
 
 use super::{Camera, filter};
-use crate::num::Real;
-use crate::num::certify::{needs_probe, subnormals_work};
-use crate::num::real::{F64x4, Real4};
+use crate::num::real::{F64x4, Real};
 use crate::ray4::Ray4;
-use wide::f32x4;
-
-/// Whether subnormals are flushed, out of line: the kernels ask only on the
-/// rare packets where it matters.
-#[cold]
-#[inline(never)]
-fn flushing() -> bool {
-    !subnormals_work()
-}
+use wide::{f32x4, i32x4};
 
 impl Camera {
     /// The rays of four arbitrary pixels `[[X, Y]; 4]`.
@@ -30,48 +20,52 @@ impl Camera {
     #[inline]
     pub fn ray4(&self, pixels: [[u32; 2]; 4]) -> Ray4 {
         let [w, h] = self.params.res;
-        let nx = F64x4::from(pixels.map(|p| filter::numerator(p[0], w)));
-        let ny = F64x4::from(pixels.map(|p| filter::numerator(p[1], h)));
-        let d = self.params.dir.to_array();
-        let mut out = [[0.0f32; 4]; 3];
-        let mut undecided = [[false; 3]; 4];
-        let tiny = <F64x4 as Real>::splat(f32::MIN_POSITIVE as f64);
-        let mut normal = <F64x4 as Real>::splat(1.0).gt(tiny);
+        let n = [
+            filter::numerators(pixels.map(|p| p[0]), w),
+            filter::numerators(pixels.map(|p| p[1]), h),
+        ];
+        let inside = pixels.iter().all(|&[x, y]| x < w && y < h);
+        let s = <F64x4 as Real>::splat;
+        let mut dir = [f32x4::ZERO; 3];
+        let mut ok = [i32x4::ZERO; 3];
+        let mut good = i32x4::splat(-1);
         for i in 0..3 {
-            let s = |x: f64| <F64x4 as crate::num::Real>::splat(x);
-            let (r, ok) = filter::component(
-                s(d[i] as f64),
-                s(self.unit[0][i]),
-                s(self.unit[1][i]),
-                nx,
-                ny,
-                1.0,
-            );
-            out[i] = r.to_f32();
-            normal = normal & r.abs().gt(tiny);
-            for (lane, ok) in ok.lanes().into_iter().enumerate() {
-                undecided[lane][i] = !ok;
-            }
+            let e = if inside {
+                s(self.e_image[i])
+            } else {
+                filter::bound(n, [0, 1, 2].map(|j| s(self.err[j][i])))
+            };
+            let b = [s(self.unit[0][i]), s(self.unit[1][i])];
+            (dir[i], ok[i]) = filter::component(s(self.d64[i]), b, n, e);
+            good = good & ok[i] & !filter::tiny(dir[i]);
         }
-        // Per packet, as [`filter::flushed`] per pixel: with subnormals
-        // flushed, every lane goes to the oracle if any component is below
-        // the least normal f32 or `dir` has a subnormal component (rare).
-        if (!F64x4::all(normal) || needs_probe(&d, &[])) && flushing() {
-            undecided = [[true; 3]; 4];
+        // As [`Camera::ray`] per pixel: a lane with a component undecided,
+        // 0 or subnormal, or every lane of a `slow` camera.
+        if !good.all() || self.slow {
+            self.settle4(&mut dir, ok, good, n);
         }
-        for (lane, [px, py]) in pixels.into_iter().enumerate() {
-            if undecided[lane].contains(&true) {
-                let mut dir = [0, 1, 2].map(|i| out[i][lane]);
-                self.escalate(&mut dir, undecided[lane], px, py);
-                (0..3).for_each(|i| out[i][lane] = dir[i]);
-            }
-        }
-        let splat = |v: glam::Vec3| v.to_array().map(f32x4::splat);
-        let dir = out.map(f32x4::from);
         Ray4 {
-            origin: splat(self.params.position),
+            origin: self.params.position.to_array().map(f32x4::splat),
             dir,
         }
+    }
+
+    /// [`Camera::settle`] for the lanes of a packet that need it.
+    #[cold]
+    #[inline(never)]
+    fn settle4(&self, dir: &mut [f32x4; 3], ok: [i32x4; 3], good: i32x4, n: [F64x4; 2]) {
+        let mut lanes = dir.map(|v| v.to_array());
+        let (ok, good) = (ok.map(i32x4::to_bitmask), good.to_bitmask());
+        let [nx, ny] = n.map(F64x4::to_array);
+        for lane in 0..4 {
+            if good & 1 << lane == 0 || self.slow {
+                let mut out = [0, 1, 2].map(|i| lanes[i][lane]);
+                let ok = [0, 1, 2].map(|i| ok[i] & 1 << lane != 0);
+                self.settle(&mut out, ok, [nx[lane], ny[lane]]);
+                (0..3).for_each(|i| lanes[i][lane] = out[i]);
+            }
+        }
+        *dir = lanes.map(f32x4::from);
     }
 
     /// Four consecutive pixels of row `py`: `(px, py) … (px + 3, py)`.

@@ -332,6 +332,24 @@ mod sse2 {
     use safe_arch::{m128, m128d};
     use wide::bytemuck::cast;
 
+    impl F64x4 {
+        /// Four `i32` lanes, exactly (`cvtdq2pd`, never through memory).
+        ///
+        /// ```
+        /// use rayoracle::num::real::F64x4;
+        /// use wide::i32x4;
+        /// let x = F64x4::from_i32(i32x4::from([1, -2, i32::MIN, i32::MAX]));
+        /// assert_eq!(x.to_array(), [1.0, -2.0, -2147483648.0, 2147483647.0]);
+        /// ```
+        #[inline(always)]
+        pub fn from_i32(x: i32x4) -> F64x4 {
+            let v: safe_arch::m128i = cast(x);
+            let hi = safe_arch::unpack_high_i64_m128i(v, v);
+            let f = safe_arch::convert_to_m128d_from_lower2_i32_m128i;
+            F64x4(cast([f(v), f(hi)]))
+        }
+    }
+
     impl Real4 for F64x4 {
         #[inline(always)]
         fn widen(x: f32x4) -> F64x4 {
@@ -373,6 +391,14 @@ mod sse2 {
 mod portable {
     //! [`Real4`] for [`F64x4`] lane by lane, off x86-64.
     use super::*;
+
+    impl F64x4 {
+        /// Four `i32` lanes, exactly.
+        #[inline(always)]
+        pub fn from_i32(x: i32x4) -> F64x4 {
+            F64x4::from(x.to_array().map(f64::from))
+        }
+    }
 
     impl Real4 for F64x4 {
         #[inline(always)]
