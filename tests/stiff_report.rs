@@ -344,11 +344,15 @@ fn ftz_and_daz_change_no_answer() {
         .flat_map(|f| f.cases.iter().cloned())
         .collect();
     // Cameras whose rays have subnormal components, from a subnormal `dir`
-    // component (DAZ) and from a basis term (FTZ).
+    // component (DAZ) and from a basis term (FTZ). With `|dir|` near the
+    // least normal f32, the filter's bound is small enough to certify a
+    // subnormal component, which FTZ then flushes: dir's own at the
+    // centre, a sum at the corner.
     for dir in [
         Vec3::new(1e-40, 0.0, -1.0),
         Vec3::new(0.0, -3e-39, -1.0),
         Vec3::new(1e-38, 1e-38, -1.0),
+        Vec3::new(1e-40, 0.0, -1e-38),
     ] {
         let p = rayoracle::camera::CameraParams::new(Vec3::ZERO, dir, Vec3::Y, 1.0, [3, 3]);
         cases.extend([[1, 1], [0, 0], [2, 1]].map(|px| Case::Camera(p, px)));

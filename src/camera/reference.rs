@@ -59,10 +59,14 @@ impl PartialEq for Camera {
     }
 }
 
+/// The zero test is on the bits, ORed together (which the optimiser does
+/// not turn back into float comparisons): denormals-are-zero would read a
+/// vector of subnormal components as zero.
 fn check_vec(v: Vec3, zero: CameraError, nonfinite: CameraError) -> Result<(), CameraError> {
+    let [a, b, c] = v.to_array().map(f32::to_bits);
     if !v.is_finite() {
         Err(nonfinite)
-    } else if v == Vec3::ZERO {
+    } else if (a | b | c) << 1 == 0 {
         Err(zero)
     } else {
         Ok(())
@@ -149,7 +153,9 @@ impl Camera {
         check_vec(p.dir, CameraError::DirZero, CameraError::DirNonFinite)?;
         check_vec(p.up, CameraError::UpZero, CameraError::UpNonFinite)?;
         // Every f32 below PI (which is above π) is below π.
-        if !(p.angle > 0.0 && p.angle < core::f32::consts::PI) {
+        // `angle > 0` on the bits, as for `dir` and `up` above.
+        let positive = (1..0x8000_0000).contains(&p.angle.to_bits());
+        if !(positive && p.angle < core::f32::consts::PI) {
             return Err(CameraError::AngleOutOfRange(p.angle));
         }
         for r in p.res {
