@@ -348,13 +348,19 @@ fn ftz_and_daz_change_no_answer() {
     // least normal f32, the filter's bound is small enough to certify a
     // subnormal component, which FTZ then flushes: dir's own at the
     // centre, a sum at the corner.
-    for dir in [
-        Vec3::new(1e-40, 0.0, -1.0),
-        Vec3::new(0.0, -3e-39, -1.0),
-        Vec3::new(1e-38, 1e-38, -1.0),
-        Vec3::new(1e-40, 0.0, -1e-38),
+    // A subnormal `angle` and a subnormal `up`, which DAZ would read as 0
+    // if construction compared them as floats: both build, as without.
+    let camera =
+        |dir, up, angle| rayoracle::camera::CameraParams::new(Vec3::ZERO, dir, up, angle, [3, 3]);
+    for p in [
+        camera(Vec3::new(1e-40, 0.0, -1.0), Vec3::Y, 1.0),
+        camera(Vec3::new(0.0, -3e-39, -1.0), Vec3::Y, 1.0),
+        camera(Vec3::new(1e-38, 1e-38, -1.0), Vec3::Y, 1.0),
+        camera(Vec3::new(1e-40, 0.0, -1e-38), Vec3::Y, 1.0),
+        camera(Vec3::new(0.3, 0.0, -1.0), Vec3::Y, 1e-40),
+        camera(Vec3::new(0.3, 0.0, -1.0), Vec3::new(0.0, 1e-40, 0.0), 1.0),
     ] {
-        let p = rayoracle::camera::CameraParams::new(Vec3::ZERO, dir, Vec3::Y, 1.0, [3, 3]);
+        assert!(p.build().is_ok(), "{p:?}");
         cases.extend([[1, 1], [0, 0], [2, 1]].map(|px| Case::Camera(p, px)));
     }
     cases.push(Case::Plane(
