@@ -156,3 +156,18 @@ fn numerator_in_f32_is_caught_by_subnormal_normals() {
         8,
     );
 }
+
+/// `t ≥ 0` for `t > 0`: a ray that starts on the plane hits it at 0.
+fn plane_t_ge_0(ray: &Ray, p: &Plane) -> Answer {
+    nearest_where(ray, p, |t| t >= 0.0)
+}
+
+#[test]
+fn t_ge_0_is_caught_by_origins_on_the_plane() {
+    let report = gate(Semantics::NearestPositive).plane(&plane_t_ge_0);
+    assert_family_catches("plane t ≥ 0", &report, "plane/random/on-plane", 250);
+    // The control: the same kernel with `t > 0`.
+    let control = gate(Semantics::NearestPositive)
+        .plane(&|r: &Ray, p: &Plane| nearest_where(r, p, |t| t > 0.0));
+    assert_passes("plane t > 0", &control, 500);
+}

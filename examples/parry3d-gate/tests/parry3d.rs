@@ -25,10 +25,12 @@ fn kernel<'a>(list: &'a [Surveyed], name: &str) -> &'a Surveyed {
 }
 
 /// Exactly these sphere families fail the gate for both of parry3d's ball
-/// casts (declared: nearest t > 0, a careful f32 kernel's tolerance).
+/// casts (declared: nearest t > 0, a careful f32 kernel's tolerance). The
+/// on-surface and tangent families fail by `t = 0` from an origin on the
+/// sphere moving out.
 /// (`huge-near` passes: its near roots, off by their own κ allowance in
 /// absolute terms, may cross 0.)
-const BALL_FAILS: [&str; 10] = [
+const BALL_FAILS: [&str; 12] = [
     "sphere/dir-tiny",
     "sphere/far-tiny-1e7",
     "sphere/subnormal",
@@ -36,6 +38,8 @@ const BALL_FAILS: [&str; 10] = [
     "sphere/far-tiny",
     "sphere/dir-scale",
     "sphere/random/aimed",
+    "sphere/random/on-surface",
+    "sphere/random/tangent",
     "sphere/random/far",
     "sphere/random/far-graze",
     FAR_1E4,
@@ -124,7 +128,8 @@ fn the_careful_formula_fails_only_these_families() {
             "sphere/huge",
             "sphere/far-tiny",
             "sphere/huge-near",
-            "sphere/random/on-surface"
+            "sphere/random/on-surface",
+            "sphere/random/tangent"
         ]
     );
 }
@@ -134,7 +139,12 @@ fn parry3d_halfspace_fails_exactly_these_families() {
     let (_, planes) = surveyed();
     assert_eq!(
         failing(kernel(planes, "parry3d HalfSpace::cast_local_ray")),
-        ["plane/subnormal-normal", "plane/dir-subnormal"]
+        [
+            "plane/origin-on-plane",
+            "plane/subnormal-normal",
+            "plane/dir-subnormal",
+            "plane/random/on-plane"
+        ]
     );
 }
 
