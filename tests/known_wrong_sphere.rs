@@ -202,3 +202,19 @@ fn disc_epsilon_is_caught_by_small_spheres() {
         8,
     );
 }
+
+/// A miss answered as a hit at `t = 0` (an API where 0 means "no hit",
+/// wrapped as a distance).
+fn sphere_miss_as_zero(ray: &Ray, s: &Sphere) -> Answer {
+    Answer::Nearest(Some(
+        sphere::plain::intersect(ray, s)
+            .nearest(0.0, f32::INFINITY)
+            .unwrap_or(0.0),
+    ))
+}
+
+#[test]
+fn a_miss_answered_as_zero_is_caught_by_rays_behind() {
+    let report = gate(Semantics::NearestPositive).sphere(&sphere_miss_as_zero);
+    assert_family_catches("sphere miss as t = 0", &report, "sphere/sphere-behind", 250);
+}

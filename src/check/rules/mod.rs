@@ -75,9 +75,11 @@
 //!   A hit outside the range fails. A ray lying on the surface has no
 //!   nearest hit, so any answer passes; a hit or a miss at `|t| ≤ 10⁻³⁰`,
 //!   or within the band, may go either way (a hit: the nearer of two roots
-//!   within the band's reach of the double root, `t ≤ t*`), except a hit
-//!   there where every input is a small integer ([`Exact::small_integers`]):
-//!   every root is then 0 exactly or far from it, so a hit at 0 is `t ≥ 0`.
+//!   within the band's reach of the double root, `t ≤ t*`). A hit at `|t|
+//!   ≤ 10⁻³⁰` is forgiven only where some exact root may be there (within
+//!   its reach), and not where every input is a small integer
+//!   ([`Exact::small_integers`]): every root is then 0 exactly or far from
+//!   it, so a hit at 0 is `t ≥ 0`.
 //! * **Solid.** In [`Semantics::Solid`] the answer is `t = 0` where the
 //!   surface's function at the origin ([`Exact::inside`]) is `≤ 0`, else
 //!   the nearest hit `t > 0`. Where that value is within its band, both
@@ -1309,11 +1311,17 @@ fn nearest_fault(
     if let (Some(i), None) = (expected, p) {
         seen.push(RootJudged::new(d, e, i, roots[i], t, kappa(i)));
     }
-    // A root this close to 0 may round to either side, but not where every
-    // input is a small integer: there every root is 0 or far from it, and
+    // A root this close to 0 may round to either side: forgiven where some
+    // exact root may be there (within its reach), but not where every input
+    // is a small integer: there every root is 0 or far from it, and
     // rounding errors are far above 10⁻³⁰, so a 0 answered for `t > 0` is
-    // `t ≥ 0`.
-    if expected.is_none() && t.abs() <= 1e-30 && !e.small_integers {
+    // `t ≥ 0`. A miss answered as 0 is not forgiven.
+    let root_near_zero = e.roots.is_none()
+        || (0..roots.len()).any(|i| {
+            let (a, b) = span.ends(i);
+            a <= 1e-30 && b >= -1e-30
+        });
+    if expected.is_none() && t.abs() <= 1e-30 && root_near_zero && !e.small_integers {
         return None;
     }
     if p.is_none() && !in_range(t, lo, hi) {
