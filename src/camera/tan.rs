@@ -429,7 +429,9 @@ fn alternating(m2: u64, s: usize, w: usize, p: u32, den: impl Fn(u64) -> u64) ->
 /// assert!(h.lo.to_f64() > 1.0 + 4.3e-8 && h.hi.to_f64() < 1.0 + 4.4e-8);
 /// ```
 pub fn tan_half(angle: f32, p: u32) -> Iv {
-    debug_assert!(angle > 0.0 && angle < core::f32::consts::PI);
+    // On the bits, as `Camera::new` tests it: denormals-are-zero reads a
+    // subnormal angle as 0 in a float comparison.
+    debug_assert!((1..core::f32::consts::PI.to_bits()).contains(&angle.to_bits()));
     // angle/2 = m·2^−s exactly, m < 2²⁴ (s > 0: the angle is below 4).
     let b = angle.to_bits();
     let (exp, frac) = ((b >> 23) as i64, (b & 0x7f_ffff) as u64);
