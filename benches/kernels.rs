@@ -7,6 +7,15 @@
 //! printed at the end and written to `target/criterion/ratios.md` and
 //! `target/criterion/ratios.json` (one object per kernel, Mrays/s).
 //!
+//! Two measures of each, from the same run. Criterion's median times each
+//! way of running a kernel for seconds, one after another, so on a shared
+//! machine two ways of one kernel can meet different loads. After it, every
+//! routine runs again in interleaved rounds, one pass over the kernel's
+//! rays each, a kernel's ways back to back ([`Paired`]); each keeps its
+//! fastest pass (`interleaved` in the JSON). Load from elsewhere only adds
+//! time, so the fastest pass is the one least disturbed, and the ways of a
+//! kernel are compared under the same conditions.
+//!
 //! The ways of running a kernel, per batch:
 //! * `reference/per-ray`: one `black_box`ed call per ray, so the optimiser
 //!   cannot fuse calls across rays: the scalar code as written.
@@ -39,6 +48,9 @@ use std::hint::black_box;
 use wide::f32x4;
 
 const N: usize = 4096;
+
+/// The interleaved rounds: each routine's fastest of this many passes.
+const ROUNDS: usize = 1000;
 
 fn camera() -> Camera {
     CameraParams::new(
@@ -74,90 +86,129 @@ fn pack(rays: &[Ray]) -> Vec<Ray4> {
         .collect()
 }
 
+/// Every routine the criterion groups time, kept to be timed again,
+/// interleaved ([`Paired::run`]): one pass of each routine of a kernel in
+/// turn, round after round, so that the variants of a kernel are measured
+/// within microseconds of each other, under the same load from the rest
+/// of the machine, and each keeps its fastest pass.
+#[derive(Default)]
+struct Paired<'a> {
+    routines: Vec<Routine<'a>>,
+}
+
+/// A kernel (the criterion group), a way of running it, and one pass.
+type Routine<'a> = (String, &'static str, Box<dyn FnMut() + 'a>);
+
+impl<'a> Paired<'a> {
+    /// Times `routine` under `group/id` with criterion, and keeps it.
+    fn bench<T>(
+        &mut self,
+        g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+        group: &str,
+        id: &'static str,
+        mut routine: impl FnMut() -> T + 'a,
+    ) {
+        let (f, p) = id.split_once('/').expect("variant/way");
+        g.bench_function(BenchmarkId::new(f, p), |b| b.iter(&mut routine));
+        self.routines.push((
+            group.to_string(),
+            id,
+            Box::new(move || {
+                black_box(routine());
+            }),
+        ));
+    }
+
+    /// `rounds` rounds of one pass of every routine, a kernel's routines
+    /// one after another; the fastest pass of each, in ns.
+    fn run(mut self, rounds: usize) -> Vec<(String, &'static str, f64)> {
+        let mut best = vec![f64::INFINITY; self.routines.len()];
+        for _ in 0..rounds {
+            for (b, (_, _, r)) in best.iter_mut().zip(&mut self.routines) {
+                let start = std::time::Instant::now();
+                r();
+                *b = b.min(start.elapsed().as_nanos() as f64);
+            }
+        }
+        self.routines
+            .into_iter()
+            .zip(best)
+            .map(|((g, id, _), t)| (g, id, t))
+            .collect()
+    }
+}
+
 #[allow(clippy::too_many_arguments)]
-fn bench_group<P: Copy>(
+fn bench_group<'a, P: Copy + 'a>(
     c: &mut Criterion,
+    paired: &mut Paired<'a>,
     name: &str,
-    rays: &[Ray],
+    rays: &'a [Ray],
+    packed: &'a [Ray4],
     prim: P,
-    scalar: impl Fn(&Ray, &P) -> Option<f32>,
-    baseline: impl Fn(&Ray, &P) -> Option<f32>,
-    simd: impl Fn(&Ray4) -> f32x4,
-    base: impl Fn(&Ray4) -> f32x4,
-    mut batch: impl FnMut(&[Ray4]) -> f32x4,
+    scalar: impl Fn(&Ray, &P) -> Option<f32> + Copy + 'a,
+    baseline: impl Fn(&Ray, &P) -> Option<f32> + 'a,
+    simd: impl Fn(&Ray4) -> f32x4 + 'a,
+    base: impl Fn(&Ray4) -> f32x4 + 'a,
+    mut batch: impl FnMut(&[Ray4]) -> f32x4 + 'a,
 ) {
-    let packed = pack(rays);
     let mut g = c.benchmark_group(name);
     g.throughput(Throughput::Elements(rays.len() as u64));
-    g.bench_function(BenchmarkId::new("reference", "per-ray"), |b| {
-        b.iter(|| {
-            let mut acc = 0.0f32;
-            for r in rays {
-                acc += black_box(scalar(black_box(r), &prim)).unwrap_or(0.0);
-            }
-            acc
-        })
+    paired.bench(&mut g, name, "reference/per-ray", move || {
+        let mut acc = 0.0f32;
+        for r in rays {
+            acc += black_box(scalar(black_box(r), &prim)).unwrap_or(0.0);
+        }
+        acc
     });
-    g.bench_function(BenchmarkId::new("reference", "slice"), |b| {
-        b.iter(|| {
-            black_box(rays)
-                .iter()
-                .map(|r| scalar(r, &prim).unwrap_or(0.0))
-                .sum::<f32>()
-        })
+    paired.bench(&mut g, name, "reference/slice", move || {
+        black_box(rays)
+            .iter()
+            .map(|r| scalar(r, &prim).unwrap_or(0.0))
+            .sum::<f32>()
     });
-    g.bench_function(BenchmarkId::new("x4", "packed"), |b| {
-        b.iter(|| {
-            let mut acc = f32x4::ZERO;
-            for r in black_box(&packed) {
-                acc += simd(r);
-            }
-            acc
-        })
+    paired.bench(&mut g, name, "x4/packed", move || {
+        let mut acc = f32x4::ZERO;
+        for r in black_box(packed) {
+            acc += simd(r);
+        }
+        acc
     });
-    g.bench_function(BenchmarkId::new("x4", "baseline"), |b| {
-        b.iter(|| {
-            let mut acc = f32x4::ZERO;
-            for r in black_box(&packed) {
-                acc += base(r);
-            }
-            acc
-        })
+    paired.bench(&mut g, name, "x4/baseline", move || {
+        let mut acc = f32x4::ZERO;
+        for r in black_box(packed) {
+            acc += base(r);
+        }
+        acc
     });
-    g.bench_function(BenchmarkId::new("x4", "batch"), |b| {
-        b.iter(|| batch(black_box(&packed)))
-    });
-    g.bench_function(BenchmarkId::new("f64", "per-ray"), |b| {
-        b.iter(|| {
-            let mut acc = 0.0f32;
-            for r in rays {
-                acc += black_box(baseline(black_box(r), &prim)).unwrap_or(0.0);
-            }
-            acc
-        })
+    paired.bench(&mut g, name, "x4/batch", move || batch(black_box(packed)));
+    paired.bench(&mut g, name, "f64/per-ray", move || {
+        let mut acc = 0.0f32;
+        for r in rays {
+            acc += black_box(baseline(black_box(r), &prim)).unwrap_or(0.0);
+        }
+        acc
     });
     g.finish();
 }
 
 /// parry3d's cast on the same rays, moved into the shape's frame
 /// beforehand, one `black_box`ed call per ray.
-fn bench_peer<S: parry3d::query::RayCast>(
+fn bench_peer<'a, S: parry3d::query::RayCast + 'a>(
     c: &mut Criterion,
+    paired: &mut Paired<'a>,
     name: &str,
-    shape: &S,
-    local: &[parry3d::query::Ray],
+    shape: &'a S,
+    local: &'a [parry3d::query::Ray],
 ) {
     let mut g = c.benchmark_group(name);
     g.throughput(Throughput::Elements(local.len() as u64));
-    g.bench_function(BenchmarkId::new("parry3d", "per-ray"), |b| {
-        b.iter(|| {
-            let mut acc = 0.0f32;
-            for r in local {
-                acc +=
-                    black_box(shape.cast_local_ray(black_box(r), f32::MAX, false)).unwrap_or(0.0);
-            }
-            acc
-        })
+    paired.bench(&mut g, name, "parry3d/per-ray", move || {
+        let mut acc = 0.0f32;
+        for r in local {
+            acc += black_box(shape.cast_local_ray(black_box(r), f32::MAX, false)).unwrap_or(0.0);
+        }
+        acc
     });
     g.finish();
 }
@@ -180,24 +231,56 @@ fn shuffled(rays: &[Ray]) -> Vec<Ray> {
     v
 }
 
-fn benches(c: &mut Criterion) {
+/// Runs every group with criterion, then the interleaved passes
+/// ([`Paired`]); returns the fastest pass of each routine.
+fn benches(c: &mut Criterion) -> Vec<(String, &'static str, f64)> {
     let mut rng = SmallRng::seed_from_u64(0x5eed);
     let rays = rays(&mut rng);
     let (t_min, t_max) = (f32x4::ZERO, f32x4::splat(f32::INFINITY));
     let finite = |m: f32x4, t: f32x4| m.select(t, f32x4::ZERO);
 
+    // The data every routine borrows, before the routines themselves.
     let s = Sphere::new(Vec3::new(0.3, 0.5, -1.0), 1.2);
     let s4 = sphere::x4::Sphere4::splat(&s);
     let ball = parry3d::shape::Ball::new(s.radius);
-    let mut sphere_out = vec![sphere::x4::intersect(&Ray4::splat(rays[0]), &s4); N / 4];
-    for (name, rays) in [
+    let sets = [
         ("sphere", rays.clone()),
         ("sphere-shuffled", shuffled(&rays)),
-    ] {
+    ];
+    let sphere_packed = sets.each_ref().map(|(_, r)| pack(r));
+    let sphere_local = sets.each_ref().map(|(_, r)| local(r, s.center));
+    let mut sphere_out =
+        [(); 2].map(|_| vec![sphere::x4::intersect(&Ray4::splat(rays[0]), &s4); N / 4]);
+
+    let p = Plane::new(Vec3::new(0.0, -1.0, 0.0), Vec3::new(0.05, 1.0, 0.02));
+    let p4 = plane::x4::Plane4::splat(&p);
+    let mut plane_out = vec![plane::x4::intersect(&Ray4::splat(rays[0]), &p4); N / 4];
+    let n = p.normal.normalize().to_array();
+    let half = parry3d::shape::HalfSpace::new(parry3d::math::Vector::new(n[0], n[1], n[2]));
+    let plane_local = local(&rays, p.point);
+
+    // A one-sheet hyperboloid x² + z² − y² = 0.5, tilted by the mix of terms.
+    let q = Quadric::new([1.0, -1.0, 1.0, 0.1, 0.0, 0.05, 0.0, 0.2, 0.0, -0.5]);
+    let q4 = quadric::x4::Quadric4::splat(&q);
+    let mut quadric_out = vec![quadric::x4::intersect(&Ray4::splat(rays[0]), &q4); N / 4];
+    let packed = pack(&rays);
+
+    let cam = camera();
+    let cam64 = rayoracle::camera::plain::Camera::new(&cam.params).expect("valid camera");
+
+    let mut paired = Paired::default();
+    for ((((name, rays), packed), local), out) in sets
+        .iter()
+        .zip(&sphere_packed)
+        .zip(&sphere_local)
+        .zip(&mut sphere_out)
+    {
         bench_group(
             c,
+            &mut paired,
             name,
-            &rays,
+            rays,
+            packed,
             s,
             |r, s| sphere::reference::intersect(r, s).nearest(0.0, f32::INFINITY),
             |r, s| sphere::plain::intersect(r, s).nearest(0.0, f32::INFINITY),
@@ -210,25 +293,24 @@ fn benches(c: &mut Criterion) {
                 finite(m, t)
             },
             |packed| {
-                sphere::x4::intersect_packets(packed, &s4, &mut sphere_out);
+                sphere::x4::intersect_packets(packed, &s4, out);
                 let mut acc = f32x4::ZERO;
-                for h in &sphere_out {
+                for h in out.iter() {
                     let (m, t) = h.nearest(t_min, t_max);
                     acc += finite(m, t);
                 }
                 acc
             },
         );
-        bench_peer(c, name, &ball, &local(&rays, s.center));
+        bench_peer(c, &mut paired, name, &ball, local);
     }
 
-    let p = Plane::new(Vec3::new(0.0, -1.0, 0.0), Vec3::new(0.05, 1.0, 0.02));
-    let p4 = plane::x4::Plane4::splat(&p);
-    let mut plane_out = vec![plane::x4::intersect(&Ray4::splat(rays[0]), &p4); N / 4];
     bench_group(
         c,
+        &mut paired,
         "plane",
         &rays,
+        &packed,
         p,
         |r, p| plane::reference::intersect(r, p).nearest(0.0, f32::INFINITY),
         |r, p| plane::plain::intersect(r, p).nearest(0.0, f32::INFINITY),
@@ -250,18 +332,14 @@ fn benches(c: &mut Criterion) {
             acc
         },
     );
-    let n = p.normal.normalize().to_array();
-    let half = parry3d::shape::HalfSpace::new(parry3d::math::Vector::new(n[0], n[1], n[2]));
-    bench_peer(c, "plane", &half, &local(&rays, p.point));
+    bench_peer(c, &mut paired, "plane", &half, &plane_local);
 
-    // A one-sheet hyperboloid x² + z² − y² = 0.5, tilted by the mix of terms.
-    let q = Quadric::new([1.0, -1.0, 1.0, 0.1, 0.0, 0.05, 0.0, 0.2, 0.0, -0.5]);
-    let q4 = quadric::x4::Quadric4::splat(&q);
-    let mut quadric_out = vec![quadric::x4::intersect(&Ray4::splat(rays[0]), &q4); N / 4];
     bench_group(
         c,
+        &mut paired,
         "quadric",
         &rays,
+        &packed,
         q,
         |r, q| quadric::reference::intersect(r, q).nearest(0.0, f32::INFINITY),
         |r, q| quadric::plain::intersect(r, q).nearest(0.0, f32::INFINITY),
@@ -285,120 +363,135 @@ fn benches(c: &mut Criterion) {
     );
 
     // Camera: 4096 pixel rays; the x4 path makes four consecutive pixels.
-    let cam = camera();
+    let (cam, cam64) = (&cam, &cam64);
     let mut g = c.benchmark_group("camera");
     g.throughput(Throughput::Elements(N as u64));
-    g.bench_function(BenchmarkId::new("reference", "per-ray"), |b| {
-        b.iter(|| {
-            let mut acc = 0.0f32;
-            for i in 0..N as u32 {
-                acc += black_box(cam.ray(black_box(i % 64), i / 64)).dir.x;
-            }
-            acc
-        })
+    paired.bench(&mut g, "camera", "reference/per-ray", move || {
+        let mut acc = 0.0f32;
+        for i in 0..N as u32 {
+            acc += black_box(cam.ray(black_box(i % 64), i / 64)).dir.x;
+        }
+        acc
     });
-    g.bench_function(BenchmarkId::new("reference", "slice"), |b| {
-        b.iter(|| {
-            (0..N as u32)
-                .map(|i| cam.ray(i % 64, i / 64).dir.x)
-                .sum::<f32>()
-        })
+    paired.bench(&mut g, "camera", "reference/slice", move || {
+        (0..N as u32)
+            .map(|i| cam.ray(i % 64, i / 64).dir.x)
+            .sum::<f32>()
     });
-    g.bench_function(BenchmarkId::new("x4", "packed"), |b| {
-        b.iter(|| {
-            let mut acc = f32x4::ZERO;
-            for i in (0..N as u32).step_by(4) {
-                acc += black_box(cam.ray4_row(black_box(i % 64), i / 64)).dir[0];
-            }
-            acc
-        })
+    paired.bench(&mut g, "camera", "x4/packed", move || {
+        let mut acc = f32x4::ZERO;
+        for i in (0..N as u32).step_by(4) {
+            acc += black_box(cam.ray4_row(black_box(i % 64), i / 64)).dir[0];
+        }
+        acc
     });
-    let cam64 = rayoracle::camera::plain::Camera::new(&cam.params).expect("valid camera");
-    g.bench_function(BenchmarkId::new("f64", "per-ray"), |b| {
-        b.iter(|| {
-            let mut acc = 0.0f32;
-            for i in 0..N as u32 {
-                acc += black_box(cam64.ray(black_box(i % 64), i / 64)).dir.x;
-            }
-            acc
-        })
+    paired.bench(&mut g, "camera", "f64/per-ray", move || {
+        let mut acc = 0.0f32;
+        for i in 0..N as u32 {
+            acc += black_box(cam64.ray(black_box(i % 64), i / 64)).dir.x;
+        }
+        acc
     });
     g.finish();
+    paired.run(ROUNDS)
 }
 
-/// Reads criterion's point estimates back, prints the rates and ratios of
-/// this run, and writes them to `target/criterion/ratios.{md,json}`.
-fn print_ratios() {
-    let base = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/criterion");
-    let ns = |group: &str, id: &str| -> Option<f64> {
-        let path = base.join(group).join(id).join("new/estimates.json");
-        let v: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(path).ok()?).ok()?;
-        v["median"]["point_estimate"].as_f64()
-    };
+/// The rates of one kernel, Mrays/s, from `ns(id)`: the time of one pass
+/// over the kernel's rays by way `id`. A row of the Markdown table, and
+/// the JSON object's rates.
+fn rates(k: &str, ns: impl Fn(&str) -> Option<f64>) -> (String, serde_json::Value) {
+    let rate = |id: &str| ns(id).map(|t| N as f64 / t * 1e3);
     let f = |x: Option<f64>| x.map_or("–".into(), |v| format!("{v:.1}"));
     let r = |a: Option<f64>, b: Option<f64>| match (a, b) {
         (Some(a), Some(b)) => format!("{:.2}×", a / b),
         _ => "–".into(),
     };
-    let mut md = String::from(
-        "| kernel | rays | reference per-ray | reference slice | x4 | x4 baseline | x4 batch | f64 per-ray | parry3d | x4 ÷ parry3d | x4 batch ÷ parry3d | x4 ÷ f64 | f64 ÷ reference per-ray |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+    let (pr, sl, x4, base, batch, f64r, peer) = (
+        rate("reference/per-ray"),
+        rate("reference/slice"),
+        rate("x4/packed"),
+        rate("x4/baseline"),
+        rate("x4/batch"),
+        rate("f64/per-ray"),
+        rate("parry3d/per-ray"),
     );
+    let md = format!(
+        "| {k} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+        f(pr),
+        f(sl),
+        f(x4),
+        f(base),
+        f(batch),
+        f(f64r),
+        f(peer),
+        r(x4, peer),
+        r(batch, peer),
+        r(x4, f64r),
+        r(f64r, pr),
+    );
+    let mut o = serde_json::json!({
+        "reference_per_ray": pr,
+        "reference_slice": sl,
+        "x4": x4,
+        "x4_baseline": base,
+        "x4_batch": batch,
+        "f64": f64r,
+    });
+    if let Some(p) = peer {
+        o["parry3d"] = serde_json::json!(p);
+    }
+    (md, o)
+}
+
+/// Prints the rates and ratios of this run, and writes them to
+/// `target/criterion/ratios.{md,json}`: criterion's medians (read back
+/// from its estimates), and, as `interleaved`, each routine's fastest of
+/// the [`ROUNDS`] interleaved passes ([`Paired`]).
+fn print_ratios(best: &[(String, &'static str, f64)]) {
+    let base = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/criterion");
+    let median = |group: &str, id: &str| -> Option<f64> {
+        let path = base.join(group).join(id).join("new/estimates.json");
+        let v: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(path).ok()?).ok()?;
+        v["median"]["point_estimate"].as_f64()
+    };
+    let fastest = |group: &str, id: &str| {
+        best.iter()
+            .find(|(g, i, _)| g == group && *i == id)
+            .map(|b| b.2)
+    };
+    let head = "| kernel | reference per-ray | reference slice | x4 | x4 baseline | x4 batch | f64 per-ray | parry3d | x4 ÷ parry3d | x4 batch ÷ parry3d | x4 ÷ f64 | f64 ÷ reference per-ray |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    let (mut md, mut fast) = (String::from(head), String::from(head));
     let mut json = Vec::new();
     for k in ["camera", "plane", "sphere", "sphere-shuffled", "quadric"] {
-        let rate = |id: &str| ns(k, id).map(|t| N as f64 / t * 1e3);
-        let (pr, sl, x4, base, batch, f64r, peer) = (
-            rate("reference/per-ray"),
-            rate("reference/slice"),
-            rate("x4/packed"),
-            rate("x4/baseline"),
-            rate("x4/batch"),
-            rate("f64/per-ray"),
-            rate("parry3d/per-ray"),
-        );
         let rays = if k == "sphere-shuffled" {
             "4096 primary rays of a 64×64 camera, shuffled"
         } else {
             "4096 primary rays of a 64×64 camera"
         };
-        md += &format!(
-            "| {k} | {rays} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
-            f(pr),
-            f(sl),
-            f(x4),
-            f(base),
-            f(batch),
-            f(f64r),
-            f(peer),
-            r(x4, peer),
-            r(batch, peer),
-            r(x4, f64r),
-            r(f64r, pr),
-        );
-        let mut o = serde_json::json!({
-            "kernel": k,
-            "rays": rays,
-            "reference_per_ray": pr,
-            "reference_slice": sl,
-            "x4": x4,
-            "x4_baseline": base,
-            "x4_batch": batch,
-            "f64": f64r,
-        });
-        if let Some(p) = peer {
-            o["parry3d"] = serde_json::json!(p);
-        }
+        let (row, mut o) = rates(k, |id| median(k, id));
+        let (fast_row, interleaved) = rates(k, |id| fastest(k, id));
+        md += &row;
+        fast += &fast_row;
+        o["kernel"] = serde_json::json!(k);
+        o["rays"] = serde_json::json!(rays);
+        o["interleaved"] = interleaved;
         json.push(o);
     }
-    println!("\nMrays/s, one run:\n\n{md}");
-    let _ = std::fs::write(base.join("ratios.md"), md);
+    let md = format!(
+        "Mrays/s, one run, 4096 primary rays of a 64×64 camera (sphere-shuffled: the same, shuffled).\n\n\
+         Criterion's medians:\n\n{md}\n\
+         The fastest of {ROUNDS} interleaved passes (one pass of each way of a kernel in turn):\n\n{fast}"
+    );
+    println!("\n{md}");
+    let _ = std::fs::write(base.join("ratios.md"), &md);
     let text = serde_json::to_string_pretty(&json).expect("JSON");
     let _ = std::fs::write(base.join("ratios.json"), text + "\n");
 }
 
 fn main() {
     let mut c = Criterion::default().configure_from_args();
-    benches(&mut c);
+    let best = benches(&mut c);
     c.final_summary();
-    print_ratios();
+    print_ratios(&best);
 }
