@@ -13,10 +13,12 @@
 //!   [`Stage`](crate::stage::Stage) decided (the filter, f64 arithmetic
 //!   proven exact, or exact arithmetic on integers);
 //! * **ns per ray**: the median over repeated passes of the time per case
-//!   of one pass, every variant timed in the same run, one `black_box`ed
-//!   call per case (per packet of four for x4), one core. A camera case
-//!   builds its camera and then one ray, so the camera's figures are mostly
-//!   construction.
+//!   of one pass, one `black_box`ed call per case (per packet of four for
+//!   x4), one core. The variants of a family are timed together, their
+//!   passes interleaved, so that they meet the same load from the rest of
+//!   the machine. A camera case is timed for its ray: its camera is built
+//!   before the clock starts (but for the exact oracle's, which builds its
+//!   own).
 //!
 //! Each kernel also gets a point per variant on an error-against-time plane
 //! ([`Point`]): time is the mean of the family medians; error is the worst
@@ -248,7 +250,7 @@ pub fn mark_front(rows: &mut [Row]) {
 }
 
 /// The median time per ray of `passes` timed passes of `variant` over
-/// `family`. Each pass repeats the family's cases enough times to last
+/// `family`, timed alone ([`run`] interleaves a family's variants). Each pass repeats the family's cases enough times to last
 /// about 0.2 ms (calibrated by one untimed pass), so that the clock's
 /// resolution and the call overhead of the timer do not show.
 pub fn time_per_case(family: &Family, variant: Variant, passes: usize) -> f64 {
@@ -261,13 +263,37 @@ pub fn time_per_case(family: &Family, variant: Variant, passes: usize) -> f64 {
 /// a pass lasts about 2·10⁵ ns (1 to 10,000 repetitions). `pass` is a
 /// parameter so that a test can give it a fake clock.
 fn median_pass(passes: usize, mut pass: impl FnMut(usize) -> variant::Timed) -> f64 {
-    let once = pass(1).nanos;
-    let reps = ((2e5 / once.max(1.0)).ceil() as usize).clamp(1, 10_000);
-    let mut t: Vec<f64> = (0..passes.max(1))
-        .map(|_| pass(reps).ns_per_ray())
+    median_passes(passes, 1, |_, reps| pass(reps))[0]
+}
+
+/// [`median_pass`] for `n` timed things at once, `pass(i, reps)` timing
+/// the `i`-th: each calibrated first, then their passes interleaved (pass
+/// 1 of each in turn, then pass 2…), so that each meets the load of the
+/// rest of the machine at the same moments as the others, and their ratios
+/// do not depend on when it changed.
+fn median_passes(
+    passes: usize,
+    n: usize,
+    mut pass: impl FnMut(usize, usize) -> variant::Timed,
+) -> Vec<f64> {
+    let reps: Vec<usize> = (0..n)
+        .map(|i| {
+            let once = pass(i, 1).nanos;
+            ((2e5 / once.max(1.0)).ceil() as usize).clamp(1, 10_000)
+        })
         .collect();
-    t.sort_by(f64::total_cmp);
-    t[t.len() / 2]
+    let mut t = vec![Vec::new(); n];
+    for _ in 0..passes.max(1) {
+        for (i, t) in t.iter_mut().enumerate() {
+            t.push(pass(i, reps[i]).ns_per_ray());
+        }
+    }
+    t.into_iter()
+        .map(|mut t| {
+            t.sort_by(f64::total_cmp);
+            t[t.len() / 2]
+        })
+        .collect()
 }
 
 /// The whole report: for every family (in catalogue order) every variant,
@@ -278,9 +304,14 @@ pub fn run(catalogue: &Catalogue, options: Options, on_step: &mut dyn FnMut()) -
     for family in &catalogue.families {
         let batch = Batch::new(family.kernel, &family.cases);
         let exact = variant::outcomes(Variant::Exact, &batch);
-        for variant in Variant::ALL {
+        // The variants of a family timed together, their passes
+        // interleaved, so that their ratios hold under a changing load.
+        let ns = median_passes(options.passes, Variant::ALL.len(), |i, reps| {
+            variant::time_pass(Variant::ALL[i], &batch, reps)
+        });
+        for (variant, ns) in Variant::ALL.into_iter().zip(ns) {
             let mut row = accuracy_against(family, variant, &batch, &exact);
-            row.ns_per_ray = time_per_case(family, variant, options.passes);
+            row.ns_per_ray = ns;
             rows.push(row);
             on_step();
         }
@@ -461,6 +492,41 @@ mod tests {
             }),
             3.0
         );
+    }
+
+    /// Several timed things: each calibrated on its own, then their
+    /// passes in turn, one of each per round; each its own median.
+    #[test]
+    fn the_passes_of_several_are_interleaved() {
+        let mut calls = Vec::new();
+        let ns = super::median_passes(3, 2, |i, reps| {
+            calls.push((i, reps));
+            // A machine slowing by 1% a call, after the calibration.
+            let slow = if reps == 1 {
+                1.0
+            } else {
+                1.0 + calls.len() as f64 / 100.0
+            };
+            Timed {
+                nanos: [1e3, 4e4][i] * reps as f64 * slow,
+                rays: reps as f64,
+            }
+        });
+        assert_eq!(
+            calls,
+            [
+                (0, 1),
+                (1, 1),
+                (0, 200),
+                (1, 5),
+                (0, 200),
+                (1, 5),
+                (0, 200),
+                (1, 5)
+            ]
+        );
+        // Calls 5 and 6 are each one's middle pass.
+        assert!((ns[0] - 1050.0).abs() < 1e-9 && (ns[1] - 42_400.0).abs() < 1e-9);
     }
 
     fn row(kernel: &str, variant: &str, family: &str, ns: f64, mismatches: usize) -> Row {
