@@ -230,8 +230,9 @@ fn a_spurious_hit_is_named_by_its_sign() {
         f.unwrap_err().why
     };
     assert_eq!(why(-1.0), "a hit at t ≤ 0 was returned");
-    // On small integers no root is near 0 unless it is 0 exactly, which
-    // every kernel computes exactly: a hit at 0 is `t ≥ 0`, not rounding.
+    // On small integers every root is 0 exactly or far from 0, and
+    // rounding errors are far above 10⁻³⁰: a hit at 0 on this miss is not
+    // rounding.
     assert_eq!(why(0.0), "a hit at t ≤ 0 was returned");
     assert_eq!(why(3.0), "a hit where there is none");
 }
