@@ -250,9 +250,10 @@ pub fn mark_front(rows: &mut [Row]) {
 }
 
 /// The median time per ray of `passes` timed passes of `variant` over
-/// `family`, timed alone ([`run`] interleaves a family's variants). Each pass repeats the family's cases enough times to last
-/// about 0.2 ms (calibrated by one untimed pass), so that the clock's
-/// resolution and the call overhead of the timer do not show.
+/// `family`, timed alone ([`run`] interleaves a family's variants). Each
+/// pass repeats the family's cases enough times to last about 0.2 ms
+/// (calibrated by one untimed pass), so that the clock's resolution and
+/// the call overhead of the timer do not show.
 pub fn time_per_case(family: &Family, variant: Variant, passes: usize) -> f64 {
     let batch = Batch::new(family.kernel, &family.cases);
     median_pass(passes, |reps| variant::time_pass(variant, &batch, reps))
