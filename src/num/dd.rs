@@ -160,10 +160,20 @@ impl Product for Fused {
     }
 }
 
+/// TwoProduct as the build's target features allow: fused where they
+/// include FMA, Dekker's otherwise.
+#[cfg(all(target_feature = "fma", any(feature = "sphere", feature = "quadric")))]
+pub(crate) type BuildProduct = Fused;
+#[cfg(all(
+    not(target_feature = "fma"),
+    any(feature = "sphere", feature = "quadric")
+))]
+pub(crate) type BuildProduct = Dekker;
+
 /// Proof that the running CPU has the FMA instructions: only
-/// [`Fma::detect`] makes one. The later stages of the quadric kernels take
-/// a copy of themselves compiled with the `fma` target feature, over
-/// [`Fused`], when it does.
+/// [`Fma::detect`] makes one. The later stages of the sphere and quadric
+/// kernels take a copy of themselves compiled with the `fma` target
+/// feature, over [`Fused`], when it does.
 ///
 /// ```
 /// use rayoracle::num::dd::Fma;

@@ -62,7 +62,9 @@ use crate::num::certify::{SLACK, U, certify, div, quotient_bound};
 use crate::num::dd::Fma;
 #[cfg(any(target_arch = "x86_64", target_feature = "fma"))]
 use crate::num::dd::Fused;
-use crate::num::dd::{Acc, Approx, Dd, Dekker, GridAcc, Product, quotient, two_roots};
+use crate::num::dd::{
+    Acc, Approx, BuildProduct, Dd, Dekker, GridAcc, Product, quotient, two_roots,
+};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
 use crate::stage::Stage;
@@ -366,7 +368,9 @@ pub fn grid(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> f64 {
 /// ([`Tracked`]), each term `k·x·y` as `k·x` (a product of two f32
 /// values, exact in f64) times `y`, checked. The sums of the terms need no
 /// check where the sum of their magnitudes is below `2⁵²g`, `g` the data's
-/// [`grid`]. Where no
+/// [`grid`]; elsewhere they are summed in double words ([`GridAcc`]),
+/// exact where the errors' magnitudes sum below `2⁵²g`, and a sum is one
+/// f64 where its low word is then 0. Where no
 /// operation rounded, the class follows from signs, as in pbrt-v4's
 /// `Quadratic` with its α = 0 branch: a linear root `−γ/β` or a double
 /// root `−β/2α` rounds once (certified with `2u`); two roots `q/α` and
@@ -383,13 +387,21 @@ pub fn grid(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> f64 {
 /// assert_eq!(tracked(&cyl, [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]), Some(QuadricHit::All));
 /// ```
 pub fn tracked(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> Option<QuadricHit> {
-    tracked_of::<Dekker>(&ExactTerms::new::<Dekker>(k, o, d))
+    tracked_in::<Dekker>(&ExactTerms::new::<Dekker>(k, o, d), 1.0).0
 }
 
-/// [`tracked`] on the exact terms.
-#[inline(always)]
-fn tracked_of<P: Product>(t: &ExactTerms) -> Option<QuadricHit> {
-    tracked_in::<P>(t).0
+/// What [`tracked_in`] leaves [`double_word_of`]: α, β and γ as far as it
+/// summed them.
+#[derive(Clone, Copy, Debug)]
+enum Sums {
+    /// Not summed: a term rounded.
+    Terms,
+    /// Each one f64, exactly: the sums on the grid, or checked.
+    Exact([f64; 3]),
+    /// Each as double words with its bound, summed as the double-word
+    /// stage sums the terms first ([`GridAcc`]): data whose terms fail the
+    /// grid test, which their errors may still pass.
+    Words([Dd; 3]),
 }
 
 /// [`tracked`] on the exact terms: a term rounded in f64 exactly where its
@@ -397,9 +409,12 @@ fn tracked_of<P: Product>(t: &ExactTerms) -> Option<QuadricHit> {
 /// least `2⁻⁴⁴⁷`, far above [`Tracked::mul`]'s `2⁻⁹⁰⁰`; a non-finite
 /// input makes a low word NaN). With the answer, α, β and γ where they
 /// were computed exactly (and are finite), so that [`double_word`] need
-/// not sum their terms again where this stage gives no answer.
+/// not sum their terms again where this stage gives no answer: as one
+/// exact f64 each, or, where the terms fail the grid test, as the double
+/// words of [`GridAcc`] (bounds multiplied by `shrink`), which prove a sum
+/// exact in one f64 where they are exact and the low word is 0.
 #[inline(always)]
-fn tracked_in<P: Product>(t: &ExactTerms) -> (Option<QuadricHit>, Option<[f64; 3]>) {
+fn tracked_in<P: Product>(t: &ExactTerms, shrink: f64) -> (Option<QuadricHit>, Sums) {
     // Most data that is not small integers or dyadic rounds here already.
     let mut rounded = false;
     let mut any = |v: &[Pair]| v.iter().for_each(|p| rounded |= p.1 != 0.0);
@@ -407,7 +422,7 @@ fn tracked_in<P: Product>(t: &ExactTerms) -> (Option<QuadricHit>, Option<[f64; 3
     any(&t.1);
     any(&t.2);
     if rounded {
-        return (None, None);
+        return (None, Sums::Terms);
     }
     let mut x = Tracked::new();
     // The terms are multiples of the grid g: where their magnitudes sum
@@ -427,18 +442,29 @@ fn tracked_in<P: Product>(t: &ExactTerms) -> (Option<QuadricHit>, Option<[f64; 3
     let (alpha, beta, gamma) = if (ma + mb + mg) * SLACK < t.3 * 4_503_599_627_370_496.0 {
         (a, b, g)
     } else {
-        // Every addition checked, so any order: two chains again.
-        let mut sum = |v: &[Pair]| {
-            let mut s = [0.0; 2];
-            for (i, y) in v.iter().enumerate() {
-                s[i % 2] = x.add(s[i % 2], y.0);
-            }
-            x.add(s[0], s[1])
-        };
-        (sum(&t.0), sum(&t.1), sum(&t.2))
+        // Double words, whose errors need only sum below 2⁵²g: where the
+        // sums do not fit one f64 (most data of spread exponents), the
+        // double-word stage takes the words as they are.
+        let words = [&t.0[..], &t.1, &t.2].map(|v| {
+            let mut acc = GridAcc::new();
+            v.iter().for_each(|p| acc.add_pair((p.0, p.1)));
+            acc.finish(t.3, 1.0)
+        });
+        if !words.iter().all(|w| w.err == 0.0 && w.lo == 0.0) {
+            let words = words.map(|w| Dd {
+                err: w.err * shrink,
+                ..w
+            });
+            return (None, Sums::Words(words));
+        }
+        (words[0].hi, words[1].hi, words[2].hi)
     };
     let sums = [alpha, beta, gamma];
-    let sums = (x.exact() && sums.iter().all(|v| v.is_finite())).then_some(sums);
+    let sums = if sums.iter().all(|v| v.is_finite()) {
+        Sums::Exact(sums)
+    } else {
+        Sums::Terms
+    };
     (tracked_roots::<P>(&mut x, alpha, beta, gamma), sums)
 }
 
@@ -533,19 +559,19 @@ fn pairs<const N: usize>(x: &[f64; N]) -> [Pair; N] {
 /// assert!(matches!(h, Some(QuadricHit::One(t)) if t < 0.0));
 /// ```
 pub fn double_word(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<QuadricHit> {
-    double_word_of::<Dekker>(&ExactTerms::new::<Dekker>(k, o, d), None, shrink)
+    double_word_of::<Dekker>(&ExactTerms::new::<Dekker>(k, o, d), Sums::Terms, shrink)
 }
 
-/// [`double_word`] on the exact terms, and on α, β and γ where
-/// [`tracked`] found them exactly (`exact`), which it does not sum again.
+/// [`double_word`] on the exact terms, and on α, β and γ as far as
+/// [`tracked`] summed them ([`Sums`]), which it does not sum again.
 #[inline(always)]
-fn double_word_of<P: Product>(
-    t: &ExactTerms,
-    exact: Option<[f64; 3]>,
-    shrink: f64,
-) -> Option<QuadricHit> {
-    let (alpha, beta, gamma) = match exact {
-        Some(v) => {
+fn double_word_of<P: Product>(t: &ExactTerms, sums: Sums, shrink: f64) -> Option<QuadricHit> {
+    let exact = match sums {
+        Sums::Exact(v) => Some(v),
+        _ => None,
+    };
+    let (alpha, beta, gamma) = match sums {
+        Sums::Exact(v) => {
             let [alpha, beta, gamma] = v.map(|hi| Dd {
                 hi,
                 lo: 0.0,
@@ -553,7 +579,8 @@ fn double_word_of<P: Product>(
             });
             (alpha, beta, gamma)
         }
-        None => {
+        Sums::Words([a, b, g]) => (a, b, g),
+        Sums::Terms => {
             let (mut a, mut b, mut g) = (GridAcc::new(), GridAcc::new(), GridAcc::new());
             t.0.iter().for_each(|p| a.add_pair((p.0, p.1)));
             t.1.iter().for_each(|p| b.add_pair((p.0, p.1)));
@@ -681,7 +708,7 @@ fn later_by<P: Product>(
     shrink: f64,
 ) -> Option<(QuadricHit, Stage)> {
     let t = ExactTerms::new::<P>(k, o, d);
-    match tracked_in::<P>(&t) {
+    match tracked_in::<P>(&t, shrink) {
         (Some(h), _) => Some((h, Stage::Tracked)),
         (None, exact) => double_word_of::<P>(&t, exact, shrink).map(|h| (h, Stage::DoubleWord)),
     }
@@ -726,13 +753,6 @@ pub fn later(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<(Qu
     later_by::<BuildProduct>(k, o, d, shrink)
 }
 
-/// TwoProduct as the build's target features allow: fused where they
-/// include FMA, Dekker's otherwise.
-#[cfg(target_feature = "fma")]
-type BuildProduct = Fused;
-#[cfg(not(target_feature = "fma"))]
-type BuildProduct = Dekker;
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -742,16 +762,9 @@ mod tests {
     use rand::rngs::SmallRng;
     use rand::{Rng, SeedableRng};
 
-    /// Where the tracked stage gives no answer but proves α, β and γ exact,
-    /// the double-word stage on those single words answers as it does from
-    /// the terms, and as the oracle does: on the stiff catalogue's quadric
-    /// cases and on small-integer quadrics (double planes, cones through
-    /// their apex, cylinders) crossed by rays with few-bit inputs, where
-    /// the sums are exact and their products are not (the catalogue only
-    /// in a build with every kind).
-    #[test]
-    fn double_word_on_exact_sums_matches_the_terms_and_the_oracle() {
-        let mut cases: Vec<(Ray, Quadric)> = Vec::new();
+    /// The stiff catalogue's quadric cases, in a build with every kind.
+    fn catalogue() -> Vec<(Ray, Quadric)> {
+        let mut cases = Vec::new();
         #[cfg(all(feature = "plane", feature = "sphere"))]
         for f in &crate::report::Catalogue::builtin()
             .expect("the built-in catalogue")
@@ -763,47 +776,56 @@ mod tests {
                 }
             }
         }
-        let mut rng = SmallRng::seed_from_u64(0xd0b1e);
-        let few = |rng: &mut SmallRng| rng.random_range(-(1i32 << 20)..1 << 20) as f32 / 4096.0;
-        for _ in 0..4000 {
-            let n = [0, 1, 2].map(|_| rng.random_range(-3i32..4) as f32);
-            let e = rng.random_range(-3i32..4) as f32;
-            // (n·p − e)² = 0, or a cone or cylinder with the same normal.
-            let k = match rng.random_range(0..3) {
-                0 => [
-                    n[0] * n[0],
-                    n[1] * n[1],
-                    n[2] * n[2],
-                    2.0 * n[0] * n[1],
-                    2.0 * n[0] * n[2],
-                    2.0 * n[1] * n[2],
-                    -2.0 * e * n[0],
-                    -2.0 * e * n[1],
-                    -2.0 * e * n[2],
-                    e * e,
-                ],
-                1 => [n[0], n[1], -n[2].abs(), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
-                _ => [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -e * e],
-            };
-            let o = Vec3::new(few(&mut rng), few(&mut rng), few(&mut rng));
-            let d = Vec3::new(few(&mut rng), few(&mut rng), few(&mut rng));
-            cases.push((Ray::new(o, d), Quadric::new(k)));
-        }
-        let (mut exact_sums, mut answered) = (0, 0);
-        for (r, q) in &cases {
+        cases
+    }
+
+    /// The coefficients of the double plane `(n·p − e)² = 0`.
+    fn double_plane(n: [f32; 3], e: f32) -> [f32; 10] {
+        [
+            n[0] * n[0],
+            n[1] * n[1],
+            n[2] * n[2],
+            2.0 * n[0] * n[1],
+            2.0 * n[0] * n[2],
+            2.0 * n[1] * n[2],
+            -2.0 * e * n[0],
+            -2.0 * e * n[1],
+            -2.0 * e * n[2],
+            e * e,
+        ]
+    }
+
+    /// On each case where the tracked stage gives no answer and leaves
+    /// sums that `kind` accepts, the double-word stage from those sums:
+    /// the oracle's answer where it gives one, and, where `same` (else
+    /// where both answer), what it gives from the terms. Returns how many
+    /// cases were left such sums, and how many of those it answered.
+    fn from_tracked_sums(
+        cases: &[(Ray, Quadric)],
+        kind: fn(&Sums) -> bool,
+        same: bool,
+    ) -> (usize, usize) {
+        let (mut left, mut answered) = (0, 0);
+        for (r, q) in cases {
             let w = |v: Vec3| v.to_array().map(f64::from);
             let (k, o, d) = (q.coeffs.map(f64::from), w(r.origin), w(r.dir));
             let t = ExactTerms::new::<Dekker>(&k, o, d);
-            let (None, Some(sums)) = tracked_in::<Dekker>(&t) else {
+            let (None, sums) = tracked_in::<Dekker>(&t, 1.0) else {
                 continue;
             };
-            exact_sums += 1;
-            let from_words = double_word_of::<Dekker>(&t, Some(sums), 1.0);
-            let from_terms = double_word_of::<Dekker>(&t, None, 1.0);
-            if let (Some(a), Some(b)) = (from_words, from_terms) {
-                assert!(crate::hit::same_bits(&a, &b), "{r:?} {q:?}: {a:?} {b:?}");
+            if !kind(&sums) {
+                continue;
             }
-            if let Some(a) = from_words {
+            left += 1;
+            let from_sums = double_word_of::<Dekker>(&t, sums, 1.0);
+            let from_terms = double_word_of::<Dekker>(&t, Sums::Terms, 1.0);
+            match (from_sums, from_terms) {
+                (Some(a), Some(b)) => {
+                    assert!(crate::hit::same_bits(&a, &b), "{r:?} {q:?}: {a:?} {b:?}")
+                }
+                (a, b) => assert!(!same || a == b, "{r:?} {q:?}: {a:?} {b:?}"),
+            }
+            if let Some(a) = from_sums {
                 answered += 1;
                 let want = exact::intersect(r, q).expect("finite");
                 assert!(
@@ -812,9 +834,66 @@ mod tests {
                 );
             }
         }
+        (left, answered)
+    }
+
+    /// Where the tracked stage gives no answer but proves α, β and γ exact,
+    /// the double-word stage on those single words answers as it does from
+    /// the terms (where both answer), and as the oracle does: on the stiff
+    /// catalogue's quadric cases and on small-integer quadrics (double
+    /// planes, cones through their apex, cylinders) crossed by rays with
+    /// few-bit inputs, where the sums are exact and their products are not
+    /// (the catalogue only in a build with every kind).
+    #[test]
+    fn double_word_on_exact_sums_matches_the_terms_and_the_oracle() {
+        let mut cases = catalogue();
+        let mut rng = SmallRng::seed_from_u64(0xd0b1e);
+        let few = |rng: &mut SmallRng| rng.random_range(-(1i32 << 20)..1 << 20) as f32 / 4096.0;
+        for _ in 0..4000 {
+            let n = [0, 1, 2].map(|_| rng.random_range(-3i32..4) as f32);
+            let e = rng.random_range(-3i32..4) as f32;
+            // (n·p − e)² = 0, or a cone or cylinder with the same normal.
+            let k = match rng.random_range(0..3) {
+                0 => double_plane(n, e),
+                1 => [n[0], n[1], -n[2].abs(), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+                _ => [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -e * e],
+            };
+            let o = Vec3::new(few(&mut rng), few(&mut rng), few(&mut rng));
+            let d = Vec3::new(few(&mut rng), few(&mut rng), few(&mut rng));
+            cases.push((Ray::new(o, d), Quadric::new(k)));
+        }
+        let exact = |s: &Sums| matches!(s, Sums::Exact(_));
+        let (left, answered) = from_tracked_sums(&cases, exact, false);
         assert!(
-            exact_sums > 1000 && answered * 10 > exact_sums * 9,
-            "{answered} of {exact_sums}"
+            left > 1000 && answered * 10 > left * 9,
+            "{answered} of {left}"
         );
+    }
+
+    /// Where the terms fail the grid test, the tracked stage leaves the
+    /// double-word stage its double words, with which it answers exactly
+    /// as it does from the terms, and as the oracle does: on the
+    /// catalogue's quadric cases (a build with every kind), where the
+    /// double planes take this way, and on integer double planes crossed
+    /// by rays of spread exponents, most of which it answers (the rest
+    /// reach the oracle).
+    #[test]
+    fn double_word_on_the_tracked_words_matches_the_terms_and_the_oracle() {
+        let mut cases = catalogue();
+        let mut rng = SmallRng::seed_from_u64(0x90_4d5);
+        let spread = |rng: &mut SmallRng| {
+            let m = rng.random_range(-(1i32 << 23)..1 << 23) as f32;
+            m * 2f32.powi(rng.random_range(-40..0))
+        };
+        for _ in 0..2000 {
+            let n = [0, 1, 2].map(|_| rng.random_range(-3i32..4) as f32);
+            let e = rng.random_range(-3i32..4) as f32;
+            let o = Vec3::new(spread(&mut rng), spread(&mut rng), spread(&mut rng));
+            let d = Vec3::new(spread(&mut rng), spread(&mut rng), spread(&mut rng));
+            cases.push((Ray::new(o, d), Quadric::new(double_plane(n, e))));
+        }
+        let words = |s: &Sums| matches!(s, Sums::Words(_));
+        let (left, answered) = from_tracked_sums(&cases, words, true);
+        assert!(left > 1000 && answered * 2 > left, "{answered} of {left}");
     }
 }

@@ -73,7 +73,7 @@
 
 use super::SphereHit;
 use crate::num::certify::{SLACK, U, certify, div, quotient_bound};
-use crate::num::dd::{Acc, Approx, Dd, quotient, two_roots, two_sum};
+use crate::num::dd::{Acc, Approx, Dd, Dekker, Product, quotient, two_roots, two_sum};
 use crate::num::real::Real;
 
 /// The filter's result: the classes it certified, and both roots (in
@@ -397,6 +397,7 @@ pub(crate) fn sorted<L: Real>(classes: Classes<L>, shrink: f64) -> Sorted<L> {
 /// ```
 ///
 /// [`two_roots`]: crate::num::dd::two_roots
+#[inline]
 pub fn tight(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64, shrink: f64) -> Option<SphereHit> {
     let eta = f64::from_bits((1023 - 1000) << 52);
     let Dots {
@@ -675,6 +676,7 @@ fn exact_roots(a: f64, b: f64, cq: f64, disc: f64) -> Option<SphereHit> {
 /// ```
 ///
 /// [`mul_exact`]: super::exactness::mul_exact
+#[inline]
 pub fn tracked(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Option<SphereHit> {
     let x = dots(o, d, c, r);
     if !tracked_exact(o, d, c, &x) {
@@ -749,6 +751,21 @@ pub fn double_word(
     r: f64,
     shrink: f64,
 ) -> Option<SphereHit> {
+    double_word_by::<Dekker>(o, d, c, r, shrink)
+}
+
+/// [`double_word`] with the products' errors found by `P`: the same exact
+/// pairs whichever `P`, so the same answers.
+#[inline(always)]
+pub(crate) fn double_word_by<P: Product>(
+    o: [f64; 3],
+    d: [f64; 3],
+    c: [f64; 3],
+    r: f64,
+    shrink: f64,
+) -> Option<SphereHit> {
+    let add_prod = add_prod::<P>;
+    let add_dd_prod = add_dd_prod::<P>;
     let (mut a, mut b, mut cq) = (Acc::new(), Acc::new(), Acc::new());
     for i in 0..3 {
         let (fh, fl) = two_sum(o[i], -c[i]);
@@ -787,13 +804,13 @@ pub fn double_word(
 ///
 /// [`sig_bits`]: super::exactness::sig_bits
 #[inline(always)]
-fn add_prod(acc: &mut Acc, x: f64, y: f64) {
+fn add_prod<P: Product>(acc: &mut Acc, x: f64, y: f64) {
     use super::exactness::sig_bits;
     if x == 0.0 || y == 0.0 {
     } else if sig_bits(x) + sig_bits(y) <= 53 {
         acc.add(x * y);
     } else {
-        acc.add_prod(x, y);
+        acc.add_pair(P::two_prod(x, y));
     }
 }
 
@@ -802,43 +819,84 @@ fn add_prod(acc: &mut Acc, x: f64, y: f64) {
 /// `2(|x.hi|E_y + E_x(|y.hi| + E_y))`, returned for the caller to add to
 /// the finished sum's, as [`Acc::add_dd_prod`] adds it.
 #[inline(always)]
-fn add_dd_prod(acc: &mut Acc, x: Dd, y: Dd) -> f64 {
-    add_prod(acc, x.hi, y.hi);
-    add_prod(acc, x.hi, y.lo);
-    add_prod(acc, x.lo, y.hi);
-    add_prod(acc, x.lo, y.lo);
+fn add_dd_prod<P: Product>(acc: &mut Acc, x: Dd, y: Dd) -> f64 {
+    add_prod::<P>(acc, x.hi, y.hi);
+    add_prod::<P>(acc, x.hi, y.lo);
+    add_prod::<P>(acc, x.lo, y.hi);
+    add_prod::<P>(acc, x.lo, y.lo);
     2.0 * (x.hi.abs() * y.err + x.err * (y.hi.abs() + y.err))
 }
 
 #[cfg(all(test, feature = "plane", feature = "quadric"))]
 mod tests {
     use super::compensated;
+    use crate::Ray;
     use crate::case::Case;
     use crate::hit::same_bits;
     use crate::report::Catalogue;
-    use crate::sphere::exact;
+    use crate::sphere::{Sphere, exact};
+
+    /// The catalogue's sphere cases, with their families.
+    fn catalogue() -> Vec<(String, Ray, Sphere)> {
+        let mut cases = Vec::new();
+        for family in Catalogue::builtin().unwrap().families {
+            for case in &family.cases {
+                if let Case::Sphere(r, s) = case {
+                    cases.push((family.name.clone(), *r, *s));
+                }
+            }
+        }
+        cases
+    }
+
+    /// A case's `o`, `d`, `C` and `R` in f64.
+    fn wide(r: &Ray, s: &Sphere) -> ([[f64; 3]; 3], f64) {
+        let w = |v: glam::Vec3| v.as_dvec3().to_array();
+        ([w(r.origin), w(r.dir), w(s.center)], f64::from(s.radius))
+    }
 
     /// [`compensated`] alone, on every sphere case of the catalogue: it
     /// answers only the oracle's bits, and most of the origins near a huge
     /// sphere.
     #[test]
     fn compensated_alone_matches_the_oracle() {
-        let w = |v: glam::Vec3| v.as_dvec3().to_array();
         let mut huge = 0;
-        for family in &Catalogue::builtin().unwrap().families {
-            for case in &family.cases {
-                let Case::Sphere(r, s) = case else { continue };
-                let Ok(want) = exact::intersect(r, s) else {
-                    continue;
-                };
-                let (o, d, c, rr) = (w(r.origin), w(r.dir), w(s.center), f64::from(s.radius));
-                if let Some(h) = compensated(o, d, c, rr, 1.0) {
-                    assert!(same_bits(&h, &want), "{} {r:?} {s:?}", family.name);
-                    huge += usize::from(family.name == "sphere/huge-near");
-                }
+        for (family, r, s) in catalogue() {
+            let Ok(want) = exact::intersect(&r, &s) else {
+                continue;
+            };
+            let ([o, d, c], rr) = wide(&r, &s);
+            if let Some(h) = compensated(o, d, c, rr, 1.0) {
+                assert!(same_bits(&h, &want), "{family} {r:?} {s:?}");
+                huge += usize::from(family == "sphere/huge-near");
             }
         }
         assert!(huge >= 64, "{huge}");
+    }
+
+    /// The double-word stage gives the same answers with Dekker's
+    /// TwoProduct and with the fused one, as the reference's copy for CPUs
+    /// with FMA takes, on every sphere case of the catalogue; and answers
+    /// the near tangents there.
+    #[test]
+    fn double_word_is_the_same_with_either_product() {
+        use super::double_word_by;
+        use crate::num::dd::{Dekker, Fused};
+        let mut near = 0;
+        for (family, r, s) in catalogue() {
+            let ([o, d, c], rr) = wide(&r, &s);
+            let dekker = double_word_by::<Dekker>(o, d, c, rr, 1.0);
+            let fused = double_word_by::<Fused>(o, d, c, rr, 1.0);
+            match (dekker, fused) {
+                (Some(x), Some(y)) => {
+                    assert!(same_bits(&x, &y), "{family} {r:?} {s:?}");
+                    near += usize::from(family == "sphere/near-tangent");
+                }
+                (None, None) => {}
+                _ => panic!("{family} {r:?} {s:?}: {dekker:?} {fused:?}"),
+            }
+        }
+        assert!(near >= 128, "{near}");
     }
 
     /// The grid stage agrees with the oracle on integer and dyadic lines
