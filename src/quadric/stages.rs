@@ -895,5 +895,27 @@ mod tests {
         let words = |s: &Sums| matches!(s, Sums::Words(_));
         let (left, answered) = from_tracked_sums(&cases, words, true);
         assert!(left > 1000 && answered * 2 > left, "{answered} of {left}");
+        // The words' bounds are multiplied by `shrink`, as the shrunk
+        // bounds' tests need, and some are not 0.
+        let mut bounded = 0;
+        for (r, q) in &cases {
+            let w = |v: Vec3| v.to_array().map(f64::from);
+            let t = ExactTerms::new::<Dekker>(&q.coeffs.map(f64::from), w(r.origin), w(r.dir));
+            let (Sums::Words(one), Sums::Words(quarter)) = (
+                tracked_in::<Dekker>(&t, 1.0).1,
+                tracked_in::<Dekker>(&t, 0.25).1,
+            ) else {
+                continue;
+            };
+            for (a, b) in one.iter().zip(&quarter) {
+                assert_eq!(
+                    (a.hi, a.lo, a.err * 0.25),
+                    (b.hi, b.lo, b.err),
+                    "{r:?} {q:?}"
+                );
+                bounded += usize::from(a.err > 0.0);
+            }
+        }
+        assert!(bounded > 0);
     }
 }
