@@ -762,21 +762,22 @@ mod tests {
     use rand::rngs::SmallRng;
     use rand::{Rng, SeedableRng};
 
-    /// The stiff catalogue's quadric cases, in a build with every kind.
+    /// The stiff catalogue's quadric cases, in a build with every kind
+    /// (none in others).
     fn catalogue() -> Vec<(Ray, Quadric)> {
-        let mut cases = Vec::new();
         #[cfg(all(feature = "plane", feature = "sphere"))]
-        for f in &crate::report::Catalogue::builtin()
+        return crate::report::Catalogue::builtin()
             .expect("the built-in catalogue")
             .families
-        {
-            for c in &f.cases {
-                if let crate::case::Case::Quadric(r, q) = c {
-                    cases.push((*r, *q));
-                }
-            }
-        }
-        cases
+            .iter()
+            .flat_map(|f| &f.cases)
+            .filter_map(|c| match c {
+                crate::case::Case::Quadric(r, q) => Some((*r, *q)),
+                _ => None,
+            })
+            .collect();
+        #[cfg(not(all(feature = "plane", feature = "sphere")))]
+        Vec::new()
     }
 
     /// The coefficients of the double plane `(n·p − e)² = 0`.
