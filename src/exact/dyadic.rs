@@ -896,7 +896,7 @@ pub(crate) mod tests {
 
     /// A finite float as the fuzz targets make them: any bits, a small
     /// integer, a special value, or a wide-range value.
-    #[cfg(any(feature = "sphere", feature = "quadric"))]
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
     pub(crate) fn fuzz_like_f32(r: &mut SmallRng) -> f32 {
         match r.random_range(0..4) {
             0 => f32::from_bits(r.random::<u32>() & 0xff7f_ffff),

@@ -132,7 +132,7 @@ impl Quadratic {
     }
 
     /// The quadratic of coefficients already normalised.
-    #[cfg(any(feature = "sphere", feature = "quadric"))]
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
     fn of_normalised(e: [Expansion; 3]) -> Self {
         Quadratic {
             alpha: Dyadic::from_expansion(&e[0]),
@@ -235,7 +235,7 @@ impl Quadratic {
 /// on first use (most quadratics never need them).
 enum Slow<'a> {
     Have(&'a Quadratic),
-    #[cfg(any(feature = "sphere", feature = "quadric"))]
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
     Lazy(&'a [Expansion; 3], &'a core::cell::OnceCell<Quadratic>),
 }
 
@@ -243,14 +243,14 @@ impl Slow<'_> {
     fn get(&self) -> &Quadratic {
         match self {
             Slow::Have(q) => q,
-            #[cfg(any(feature = "sphere", feature = "quadric"))]
+            #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
             Slow::Lazy(e, q) => q.get_or_init(|| Quadratic::of_normalised(**e)),
         }
     }
 }
 
 /// `α`, `β`, `γ` multiplied by −1 where [`Quadratic::new`] would.
-#[cfg(any(feature = "sphere", feature = "quadric"))]
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn normalised([alpha, beta, gamma]: [Expansion; 3]) -> [Expansion; 3] {
     let flip = alpha.sign() < 0 || (alpha.sign() == 0 && beta.sign() < 0);
     if flip {
@@ -263,7 +263,7 @@ fn normalised([alpha, beta, gamma]: [Expansion; 3]) -> [Expansion; 3] {
 /// What [`Quadratic::from_expansions`]`(α, β, γ).solve()` gives, without
 /// forming the dyadic coefficients unless a comparison outgrows the
 /// expansions.
-#[cfg(any(feature = "sphere", feature = "quadric"))]
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 pub(crate) fn solve_expansions(
     alpha: Expansion,
     beta: Expansion,

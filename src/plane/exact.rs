@@ -1,10 +1,21 @@
-//! The exact oracle: `d·n` and `(a − o)·n` as exact dyadics, the class from
-//! their signs, and `t` as the correctly rounded quotient.
+//! The exact oracle: `d·n` and `(a − o)·n` exactly, the class from their
+//! signs, and `t` as the correctly rounded quotient.
+//!
+//! Both are formed on expansions ([`crate::exact::expansion`]): `a − o` is
+//! a two-term sum of `f32`s, and each dot product a sum of products of an
+//! `f32` and such a term. Every factor's lowest bit is at `2⁻¹⁴⁹` or above
+//! and its magnitude below `2¹²⁹`, so every product is exact (lowest bits
+//! from `2⁻²⁹⁸`, magnitudes below `2²⁵⁸`), and the root of the linear
+//! equation `(d·n) t − (a − o)·n = 0` is rounded by the quadratics'
+//! solver ([`crate::exact::quadratic`]), with `α = 0`. Where subnormals
+//! are flushed ([`subnormals_work`]), both are formed on dyadics instead.
 
 use super::{Plane, PlaneHit};
 use crate::Ray;
 use crate::exact::dyadic::{dot, sub3, vec3};
-use crate::exact::{NonFinite, round_to_f32};
+use crate::exact::expansion::{Expansion, subnormals_work};
+use crate::exact::quadratic::solve_expansions;
+use crate::exact::{ExactQuadratic, NonFinite, round_to_f32};
 
 /// The exact answer, or [`NonFinite`] when an input is NaN or infinite.
 ///
@@ -16,6 +27,41 @@ use crate::exact::{NonFinite, round_to_f32};
 /// assert_eq!(intersect(&r, &p), Ok(PlaneHit::Hit(1.0 / 3.0)));
 /// ```
 pub fn intersect(ray: &Ray, plane: &Plane) -> Result<PlaneHit, NonFinite> {
+    let finite = [ray.origin, ray.dir, plane.point, plane.normal]
+        .iter()
+        .all(|v| v.is_finite());
+    if !finite {
+        return Err(NonFinite);
+    }
+    if let Some((num, den)) = on_expansions(ray, plane).filter(|_| subnormals_work()) {
+        // d·n t + (−(a − o)·n) = 0, with α = 0: never two roots.
+        return Ok(match solve_expansions(Expansion::ZERO, den, num.neg()) {
+            ExactQuadratic::One(t) => PlaneHit::Hit(t),
+            ExactQuadratic::All => PlaneHit::InPlane,
+            ExactQuadratic::None | ExactQuadratic::Two(..) => PlaneHit::Parallel,
+        });
+    }
+    on_dyadics(ray, plane)
+}
+
+/// `(a − o)·n` and `d·n` on expansions (at most 12 and 6 components, so
+/// never `None`).
+fn on_expansions(ray: &Ray, plane: &Plane) -> Option<(Expansion, Expansion)> {
+    let (o, d) = (ray.origin.as_dvec3(), ray.dir.as_dvec3());
+    let (a, n) = (plane.point.as_dvec3(), plane.normal.as_dvec3());
+    let (mut num, mut den) = (Expansion::ZERO, Expansion::ZERO);
+    for i in 0..3 {
+        let f = Expansion::from_f64(a[i]).grow(-o[i])?;
+        for &x in f.components() {
+            num.add_product(x, n[i])?;
+        }
+        den.add_product(d[i], n[i])?;
+    }
+    Some((num, den))
+}
+
+/// The exact answer on dyadics, for finite inputs.
+fn on_dyadics(ray: &Ray, plane: &Plane) -> Result<PlaneHit, NonFinite> {
     let o = vec3(ray.origin.to_array())?;
     let d = vec3(ray.dir.to_array())?;
     let a = vec3(plane.point.to_array())?;
@@ -41,9 +87,45 @@ pub fn intersect(ray: &Ray, plane: &Plane) -> Result<PlaneHit, NonFinite> {
 
 #[cfg(test)]
 mod tests {
-    use super::{Plane, PlaneHit, Ray, intersect};
+    use super::{Plane, PlaneHit, Ray, intersect, on_dyadics};
+    use crate::exact::dyadic::tests::{big_only, fuzz_like_f32};
     use crate::exact::round::comparisons;
     use glam::Vec3;
+    use rand::rngs::SmallRng;
+    use rand::{Rng, SeedableRng};
+
+    /// The answer on expansions is the one on big integers alone, bit for
+    /// bit, at every scale: any bits, subnormals, `f32::MAX`, and in a
+    /// quarter of the cases an axis normal with `d` or `a − o` exactly
+    /// across it, so that `d·n = 0` and `(a − o)·n = 0` come up.
+    #[test]
+    fn expansions_match_big_integers() {
+        let mut r = SmallRng::seed_from_u64(0x91a9e);
+        let mut seen = [0; 3];
+        for _ in 0..20_000 {
+            let mut v = || Vec3::from_array([(); 3].map(|_| fuzz_like_f32(&mut r)));
+            let (mut o, mut d, a, mut n) = (v(), v(), v(), v());
+            if r.random_bool(0.25) {
+                (n.y, n.z, d.x) = (0.0, 0.0, 0.0);
+                if r.random_bool(0.5) {
+                    o.x = a.x;
+                }
+            }
+            let (ray, p) = (Ray::new(o, d), Plane::new(a, n));
+            let got = intersect(&ray, &p).unwrap();
+            let want = big_only(|| on_dyadics(&ray, &p)).unwrap();
+            assert!(
+                crate::hit::same_bits(&got, &want),
+                "{ray:?} {p:?}: {got:?} {want:?}"
+            );
+            seen[match got {
+                PlaneHit::Hit(_) => 0,
+                PlaneHit::Parallel => 1,
+                PlaneHit::InPlane => 2,
+            }] += 1;
+        }
+        assert!(seen.iter().all(|&k| k > 500), "{seen:?}");
+    }
 
     /// The f64 guess only decides how long the exact search takes: a good
     /// one settles each `t` in a few comparisons, where `num·den` or a
