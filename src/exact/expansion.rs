@@ -3,9 +3,9 @@
 //! Predicates", 1997): a value is the exact sum of a few `f64` components,
 //! nonoverlapping and in increasing magnitude.
 //!
-//! The quantities of the sphere and quadric oracles span hundreds of bits
-//! between their largest and smallest terms (`1e30² + 1e-30²`), which a
-//! dense mantissa stores bit by bit and an expansion in two components.
+//! The quantities of the plane, sphere and quadric oracles span hundreds of
+//! bits between their largest and smallest terms (`1e30² + 1e-30²`), which
+//! a dense mantissa stores bit by bit and an expansion in two components.
 //!
 //! # Why every operation is exact
 //!

@@ -3,9 +3,10 @@
 //! polynomial quantities of every primitive (`d·n`, the discriminant, α, β,
 //! γ, …) are computed here *exactly*: on `i128` or 256-bit mantissas on
 //! the stack while they fit, on big integers (`dashu-int`) beyond that.
-//! The quadratics of the sphere and the quadric are also solved on
-//! floating-point [`expansion`]s, exact sums of a few `f64`s, which hold
-//! values of widely spread exponents in a few words.
+//! The plane's linear equation and the quadratics of the sphere and the
+//! quadric are also solved on floating-point [`expansion`]s, exact sums of
+//! a few `f64`s, which hold values of widely spread exponents in a few
+//! words.
 //!
 //! A root of a quadratic is in general irrational, so it is never formed.
 //! Instead [`round`] finds its correctly rounded `f32` (ties to even) by

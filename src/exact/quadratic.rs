@@ -1,5 +1,6 @@
 //! Exact classification and correctly rounded roots of `α t² + β t + γ = 0`
-//! with dyadic coefficients, shared by the sphere and quadric oracles.
+//! with dyadic coefficients, shared by the sphere and quadric oracles (and,
+//! with `α = 0`, the plane's).
 //!
 //! The signs that decide are those of `α`, `β`, `γ`, the discriminant
 //! `β² − 4αγ`, and of `p(m) = (αm + β)m + γ`, `2αm + β` or `βm + γ` at the
@@ -11,9 +12,9 @@
 //!
 //! A coefficient is admitted when its lowest set bit is at `2⁻⁵²⁰` or
 //! above and its magnitude below `2⁴⁸⁰` ([`super::expansion::LOW`],
-//! [`super::expansion::HIGH`]); the sphere's and the quadric's always are
-//! (products of two or three `f32`s: lowest bits from `2⁻⁴⁴⁷`, magnitudes
-//! below `2³⁹⁰`). Every point `m` has its lowest bit at `2⁻¹⁵⁰` or above
+//! [`super::expansion::HIGH`]); the plane's, the sphere's and the
+//! quadric's always are (products of two or three `f32`s: lowest bits from
+//! `2⁻⁴⁴⁷`, magnitudes below `2³⁹⁰`). Every point `m` has its lowest bit at `2⁻¹⁵⁰` or above
 //! and `|m| ≤ 2¹²⁸`. So every product formed, `β²`, `αγ`, `αm`, `βm` and
 //! `(αm + β)m`, has factors whose lowest bits add up to `−1040` or more and
 //! a magnitude below `2⁹⁶²`: each partial product is exact
