@@ -502,7 +502,13 @@ fn the_search_climbs_and_regenerates_the_fixtures_on_request() {
             println!("{kind} {}: from 2^{first:.2} to 2^{best:.2}", q.name());
             if q != Quantity::Class {
                 assert!(best >= -7.0, "{kind} {}: best 2^{best}", q.name());
-                assert!(best > first, "{kind} {}: no climb", q.name());
+                // A long search from the committed cases may find none
+                // better; the short one from fresh seeds must climb.
+                assert!(
+                    budget.is_some() || best > first,
+                    "{kind} {}: no climb",
+                    q.name()
+                );
             }
         }
         if budget.is_some() {

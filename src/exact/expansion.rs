@@ -50,14 +50,17 @@ pub const HIGH: i32 = 480;
 /// Whether subnormal numbers are read and produced as IEEE 754 says: not
 /// so under denormals-are-zero (a subnormal input reads as 0) or
 /// flush-to-zero (a subnormal result becomes 0). Asked at run time, as the
-/// floating-point environment can change.
+/// floating-point environment can change, by
+/// [`crate::num::certify::subnormals_work`]: on x86-64 a read of MXCSR,
+/// where computing with a subnormal would cost a microcode assist on
+/// every call of the oracle.
 ///
 /// ```
 /// assert!(rayoracle::exact::expansion::subnormals_work());
 /// ```
+#[inline]
 pub fn subnormals_work() -> bool {
-    use core::hint::black_box;
-    black_box(f64::from_bits(1)) != 0.0 && black_box(f64::MIN_POSITIVE) * black_box(0.5) != 0.0
+    crate::num::certify::subnormals_work()
 }
 
 /// `a + b = s + e` exactly (Knuth's TwoSum).
@@ -194,6 +197,11 @@ impl Expansion {
             out.grow_mut(x)?;
         }
         Some(out)
+    }
+
+    /// `self = −self`, in place.
+    pub fn negate(&mut self) {
+        self.c[..self.n].iter_mut().for_each(|x| *x = -*x);
     }
 
     /// `−self`.

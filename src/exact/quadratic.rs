@@ -186,7 +186,7 @@ impl Quadratic {
             .expansions
             .map(|e| e.map(Some))
             .unwrap_or_else(|| [&self.alpha, &self.beta, &self.gamma].map(Dyadic::expansion));
-        if let Some(r) = solve_fast(fast, &Slow::Have(self)) {
+        if let Some(r) = solve_fast(fast.each_ref().map(Option::as_ref), &Slow::Have(self)) {
             return r;
         }
         self.solve_dyadic()
@@ -252,13 +252,12 @@ impl Slow<'_> {
 
 /// `α`, `β`, `γ` multiplied by −1 where [`Quadratic::new`] would.
 #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
-fn normalised([alpha, beta, gamma]: [Expansion; 3]) -> [Expansion; 3] {
-    let flip = alpha.sign() < 0 || (alpha.sign() == 0 && beta.sign() < 0);
+fn normalised(mut e: [Expansion; 3]) -> [Expansion; 3] {
+    let flip = e[0].sign() < 0 || (e[0].sign() == 0 && e[1].sign() < 0);
     if flip {
-        [alpha.neg(), beta.neg(), gamma.neg()]
-    } else {
-        [alpha, beta, gamma]
+        e.iter_mut().for_each(Expansion::negate);
     }
+    e
 }
 
 /// What [`Quadratic::from_expansions`]`(α, β, γ).solve()` gives, without
@@ -273,7 +272,7 @@ pub(crate) fn solve_expansions(
     let e = normalised([alpha, beta, gamma]);
     let cell = core::cell::OnceCell::new();
     let slow = Slow::Lazy(&e, &cell);
-    if let Some(r) = solve_fast(e.map(Some), &slow) {
+    if let Some(r) = solve_fast(e.each_ref().map(Some), &slow) {
         return r;
     }
     slow.get().solve_dyadic()
@@ -281,19 +280,22 @@ pub(crate) fn solve_expansions(
 
 /// [`Quadratic::solve`] on the expansions `fast`, if each is there,
 /// subnormals work, and the discriminant fits.
-fn solve_fast(fast: [Option<Expansion>; 3], slow: &Slow) -> Option<ExactQuadratic> {
+fn solve_fast(fast: [Option<&Expansion>; 3], slow: &Slow) -> Option<ExactQuadratic> {
     #[cfg(test)]
     let fast = fast.map(|e| e.filter(|_| !super::dyadic::tests::BIG_ONLY.with(|b| b.get())));
-    let compressed = |x: Expansion| match x.components().len() {
-        ..=SHORT => x,
-        _ => x.compress(),
-    };
-    let [Some(a), Some(b), Some(c)] = fast.map(|e| e.map(compressed)) else {
+    let [Some(a), Some(b), Some(c)] = fast else {
         return None;
     };
     if !super::expansion::subnormals_work() {
         return None;
     }
+    // The long ones compressed; the rest used where they are (an
+    // expansion is a few hundred bytes, and copies cost more than the
+    // arithmetic on a short one).
+    let long = |x: &Expansion| (x.components().len() > SHORT).then(|| x.compress());
+    let kept = [long(a), long(b), long(c)];
+    let [a, b, c] =
+        [(a, &kept[0]), (b, &kept[1]), (c, &kept[2])].map(|(x, k)| k.as_ref().unwrap_or(x));
     // Long expansions (dense mantissas) cost quadratically in the exact
     // products; dyadics hold those better.
     let short = [a, b, c].iter().all(|x| x.components().len() <= SHORT);
@@ -306,13 +308,13 @@ fn solve_fast(fast: [Option<Expansion>; 3], slow: &Slow) -> Option<ExactQuadrati
 /// the `f64` filter ([`Near`]), and formed on the expansions only where
 /// that cannot tell and they are `short`, on the dyadics otherwise.
 fn solve_on_expansions(
-    [a, b, c]: [Expansion; 3],
+    [a, b, c]: [&Expansion; 3],
     short: bool,
     slow: &Slow,
 ) -> Option<ExactQuadratic> {
     let exact = |x: Option<Expansion>| x.filter(|_| short);
     let dy = Dyadic::from_f64;
-    let [na, nb, nc] = [&a, &b, &c].map(Near::of);
+    let [na, nb, nc] = [a, b, c].map(Near::of);
     let (fa, fb, fc) = (na.v, nb.v, nc.v);
     if a.sign() == 0 {
         if b.sign() == 0 {
@@ -346,7 +348,7 @@ fn solve_on_expansions(
     let (sign, fd) = match sure {
         Some(s) => (s, fd),
         None => {
-            let disc = exact(b.mul(&b))?.sub(&a.mul(&c)?.mul_pow2(2))?;
+            let disc = exact(b.mul(b))?.sub(&a.mul(c)?.mul_pow2(2))?;
             (disc.sign().cmp(&0), disc.approx())
         }
     };
@@ -379,7 +381,7 @@ fn solve_on_expansions(
             let root = |upper: bool, guess: f64| {
                 round_to_f32_at(
                     |m| {
-                        let exp = short.then_some((&a, &b, &neg));
+                        let exp = short.then_some((a, b, &neg));
                         root_against_expansions(exp, &near, m, upper).unwrap_or_else(|| {
                             let q = slow.get();
                             let neg = [-&q.beta, -&q.gamma];

@@ -13,7 +13,7 @@
 use super::{Plane, PlaneHit};
 use crate::Ray;
 use crate::exact::dyadic::{dot, sub3, vec3};
-use crate::exact::expansion::{Expansion, subnormals_work};
+use crate::exact::expansion::{Expansion, subnormals_work, two_sum};
 use crate::exact::quadratic::solve_expansions;
 use crate::exact::{ExactQuadratic, NonFinite, round_to_f32};
 
@@ -33,9 +33,9 @@ pub fn intersect(ray: &Ray, plane: &Plane) -> Result<PlaneHit, NonFinite> {
     if !finite {
         return Err(NonFinite);
     }
-    if let Some((num, den)) = on_expansions(ray, plane).filter(|_| subnormals_work()) {
-        // d·n t + (−(a − o)·n) = 0, with α = 0: never two roots.
-        return Ok(match solve_expansions(Expansion::ZERO, den, num.neg()) {
+    if let Some((neg_num, den)) = on_expansions(ray, plane).filter(|_| subnormals_work()) {
+        // d·n t − (a − o)·n = 0, with α = 0: never two roots.
+        return Ok(match solve_expansions(Expansion::ZERO, den, neg_num) {
             ExactQuadratic::One(t) => PlaneHit::Hit(t),
             ExactQuadratic::All => PlaneHit::InPlane,
             ExactQuadratic::None | ExactQuadratic::Two(..) => PlaneHit::Parallel,
@@ -44,20 +44,20 @@ pub fn intersect(ray: &Ray, plane: &Plane) -> Result<PlaneHit, NonFinite> {
     on_dyadics(ray, plane)
 }
 
-/// `(a − o)·n` and `d·n` on expansions (at most 12 and 6 components, so
-/// never `None`).
+/// `−(a − o)·n` and `d·n` on expansions (at most 12 and 6 components, so
+/// never `None`). `aᵢ − oᵢ` is the exact pair of [`two_sum`], whose zero
+/// low part adds nothing.
 fn on_expansions(ray: &Ray, plane: &Plane) -> Option<(Expansion, Expansion)> {
     let (o, d) = (ray.origin.as_dvec3(), ray.dir.as_dvec3());
     let (a, n) = (plane.point.as_dvec3(), plane.normal.as_dvec3());
-    let (mut num, mut den) = (Expansion::ZERO, Expansion::ZERO);
+    let (mut neg_num, mut den) = (Expansion::ZERO, Expansion::ZERO);
     for i in 0..3 {
-        let f = Expansion::from_f64(a[i]).grow(-o[i])?;
-        for &x in f.components() {
-            num.add_product(x, n[i])?;
-        }
+        let (hi, lo) = two_sum(a[i], -o[i]);
+        neg_num.add_product(lo, -n[i])?;
+        neg_num.add_product(hi, -n[i])?;
         den.add_product(d[i], n[i])?;
     }
-    Some((num, den))
+    Some((neg_num, den))
 }
 
 /// The exact answer on dyadics, for finite inputs.

@@ -12,7 +12,7 @@
 use super::{Sphere, SphereHit};
 use crate::Ray;
 use crate::exact::dyadic::{dot, sub3};
-use crate::exact::expansion::{Expansion, subnormals_work};
+use crate::exact::expansion::{Expansion, subnormals_work, two_sum};
 use crate::exact::memo::{Memo, remembered};
 use crate::exact::quadratic::solve_expansions;
 use crate::exact::{Dyadic, ExactQuadratic, NonFinite, Quadratic};
@@ -53,11 +53,13 @@ fn on_expansions(ray: &Ray, sphere: &Sphere) -> Option<[Expansion; 3]> {
     );
     let (mut a, mut b, mut cc) = (Expansion::ZERO, Expansion::ZERO, Expansion::ZERO);
     for i in 0..3 {
-        let f = Expansion::from_f64(o[i]).grow(-c[i])?;
+        // fᵢ = oᵢ − cᵢ as its exact pair; a zero part adds nothing.
+        let (hi, lo) = two_sum(o[i], -c[i]);
+        let f = [lo, hi];
         a.add_product(d[i], d[i])?;
-        for &x in f.components() {
+        for x in f {
             b.add_product(x, d[i])?;
-            for &y in f.components() {
+            for y in f {
                 cc.add_product(x, y)?;
             }
         }
