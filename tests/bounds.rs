@@ -8,12 +8,14 @@
 //! of [`crate::bounds_search`] found by maximising the factor at which
 //! each certified quantity comes out wrong. At the factor 1 every answer
 //! is the oracle's. At 1/16 every kernel's roots, and the sphere's and the
-//! quadric's class, come out wrong on some committed case, and at 1/8 the
-//! sphere's class and the quadric's first root: a constant cut to a
-//! sixteenth is caught here. A cut to a quarter is left to the derivations
+//! quadric's class, come out wrong on some committed case; at 1/8 the
+//! sphere's class and the quadric's class and roots; at 1/4 the quadric's
+//! class. A constant cut to a sixteenth is caught here, and for those
+//! quantities to an eighth or a quarter. A cut to a quarter of the others
+//! is left to the derivations
 //! in each kernel's `stages.rs`: each constant carries at least twice the
-//! proof's value, and the searched cases reach errors of 1/6.6 to 1/11 of
-//! their bounds. Run with
+//! proof's value, and the searched cases reach errors of 1/3.3 to 1/10.5
+//! of their bounds. Run with
 //! `--nocapture` for the counts per family and the factor each committed
 //! case reaches.
 #![cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
@@ -160,19 +162,19 @@ fn found(kind: &str) -> Vec<Case> {
 /// test notices. The bounds are the proofs' constants at least doubled,
 /// and a wrong answer needs every rounding of the proof's worst case near
 /// its maximum and in the same direction, with the exact value next to a
-/// decision; the search gets within about 2^2.7 to 2^3.4 of the bound
+/// decision; the search gets within about 2^1.7 to 2^3.4 of the bound
 /// (run with `--nocapture` for the factor each case reaches), so these
-/// are 1/16, and 1/8 for the sphere's class and the quadric's first root. Not listed: the
-/// plane's class, which no factor makes wrong (see
-/// `bounds_search::quantities`).
+/// are 1/4 for the quadric's class, 1/8 for the sphere's class and the
+/// quadric's roots, and 1/16 for the rest. Not listed: the plane's class,
+/// which no factor makes wrong (see `bounds_search::quantities`).
 const CAUGHT_AT: [(&str, f64); 7] = [
     ("bounds/plane/root0", 1.0 / 16.0),
     ("bounds/sphere/class", 0.125),
     ("bounds/sphere/root0", 1.0 / 16.0),
     ("bounds/sphere/root1", 1.0 / 16.0),
-    ("bounds/quadric/class", 1.0 / 16.0),
+    ("bounds/quadric/class", 0.25),
     ("bounds/quadric/root0", 0.125),
-    ("bounds/quadric/root1", 1.0 / 16.0),
+    ("bounds/quadric/root1", 0.125),
 ];
 
 /// Each committed case: right with the bounds as derived, wrong in its
