@@ -621,6 +621,8 @@ impl Sub for &Dyadic {
 impl Mul for &Dyadic {
     type Output = Dyadic;
     fn mul(self, o: &Dyadic) -> Dyadic {
+        #[cfg(test)]
+        tests::PRODUCTS.with(|n| n.set(n.get() + 1));
         let exp = self.exp + o.exp;
         if let (Some(a), Some(b)) = (self.fixed(), o.fixed()) {
             // Below 2^127 by the lengths alone; else the checked product.
@@ -879,6 +881,15 @@ pub(crate) mod tests {
     use rand::{Rng, SeedableRng};
 
     thread_local!(pub(crate) static BIG_ONLY: Cell<bool> = const { Cell::new(false) });
+    thread_local!(pub(crate) static PRODUCTS: Cell<usize> = const { Cell::new(0) });
+
+    /// The dyadic products `f` forms: 0 where the oracle decides on
+    /// expansions alone.
+    pub(crate) fn products_during<R>(f: impl FnOnce() -> R) -> (R, usize) {
+        let before = PRODUCTS.with(Cell::get);
+        let r = f();
+        (r, PRODUCTS.with(Cell::get) - before)
+    }
 
     /// `f()` with every operation done on big integers, as if no mantissa
     /// fitted in an `i128`: the reference for the fixed-width arithmetic.
