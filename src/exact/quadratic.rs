@@ -14,8 +14,8 @@
 //! above and its magnitude below `2⁴⁸⁰` ([`super::expansion::LOW`],
 //! [`super::expansion::HIGH`]); the plane's, the sphere's and the
 //! quadric's always are (products of two or three `f32`s: lowest bits from
-//! `2⁻⁴⁴⁷`, magnitudes below `2³⁹⁰`). Every point `m` has its lowest bit at `2⁻¹⁵⁰` or above
-//! and `|m| ≤ 2¹²⁸`. So every product formed, `β²`, `αγ`, `αm`, `βm` and
+//! `2⁻⁴⁴⁷`, magnitudes below `2³⁹⁰`). Every point `m` has its lowest bit
+//! at `2⁻¹⁵⁰` or above and `|m| ≤ 2¹²⁸`. So every product formed, `β²`, `αγ`, `αm`, `βm` and
 //! `(αm + β)m`, has factors whose lowest bits add up to `−1040` or more and
 //! a magnitude below `2⁹⁶²`: each partial product is exact
 //! ([`super::expansion::two_prod`]), and no sum overflows. An expansion
