@@ -288,21 +288,32 @@ impl Target for Quadric {
 /// [`Quadric::from_sphere`] is exact and the direction nonzero, the quadric
 /// oracle's exact polynomial is the sphere oracle's, and the quadric
 /// reference gives the sphere oracle's answer (so the two references agree,
-/// the sphere's being the oracle's). The sphere's answer is
-/// [`sphere::exact::intersect`]'s, which keeps the last few (an answer the
-/// reference's last stage asked for is not solved again); the two
-/// polynomials are compared exactly on expansions, and where either does
-/// not fit there, `false` leaves it to the full check.
+/// the sphere's being the oracle's). Without the quadric, the sphere's
+/// answer is [`sphere::exact::intersect`]'s, which keeps the last few (an
+/// answer the reference's last stage asked for is not solved again); with
+/// it, the oracle's coefficients are formed once, for its answer and for
+/// the comparison. The two polynomials are compared exactly on expansions,
+/// and where either does not fit there, `false` leaves it to the full
+/// check.
 #[cfg(feature = "sphere")]
 fn sphere_accepts(ray: &Ray, s: &Sphere, got: &sphere::SphereHit) -> bool {
-    let Ok(es) = sphere::exact::intersect(ray, s) else {
-        return true;
-    };
-    if !crate::hit::same_bits(got, &es) {
-        return false;
+    #[cfg(not(feature = "quadric"))]
+    {
+        let Ok(es) = sphere::exact::intersect(ray, s) else {
+            return true;
+        };
+        crate::hit::same_bits(got, &es)
     }
     #[cfg(feature = "quadric")]
     {
+        // The sphere oracle's coefficients, formed once for its answer and
+        // for the comparison with the quadric's below.
+        let Ok((es, sphere_poly)) = sphere::exact::intersect_and_expansions(ray, s) else {
+            return true;
+        };
+        if !crate::hit::same_bits(got, &es) {
+            return false;
+        }
         // Spheres recur from one input to the next (the fuzzer mutates one
         // lane at a time): the last few conversions are kept.
         use crate::exact::memo::{Memo, remembered};
@@ -319,8 +330,8 @@ fn sphere_accepts(ray: &Ray, s: &Sphere, got: &sphere::SphereHit) -> bool {
         let Ok(eq) = quadric::exact::expansions(ray, &q) else {
             return true;
         };
-        let same = match (sphere::exact::expansions(ray, s), eq) {
-            (Ok(Some(es)), Some(eq)) => es
+        let same = match (sphere_poly, eq) {
+            (Some(es), Some(eq)) => es
                 .iter()
                 .zip(&eq)
                 .all(|(x, y)| x.compare(y) == Some(core::cmp::Ordering::Equal)),
@@ -333,8 +344,6 @@ fn sphere_accepts(ray: &Ray, s: &Sphere, got: &sphere::SphereHit) -> bool {
         };
         same && crate::hit::same_bits(&quadric::reference::intersect(ray, &q), &as_quadric)
     }
-    #[cfg(not(feature = "quadric"))]
-    true
 }
 
 /// The two implementations a target compares: the scalar one and the

@@ -107,6 +107,23 @@ pub fn intersect(ray: &Ray, sphere: &Sphere) -> Result<SphereHit, NonFinite> {
     })
 }
 
+/// [`intersect`] without its memo, and with the coefficients it solved,
+/// where it formed them on expansions: for the `sphere` fuzz target, which
+/// compares them with the quadric oracle's and would otherwise form them
+/// twice.
+#[cfg(feature = "quadric")]
+pub(crate) fn intersect_and_expansions(
+    ray: &Ray,
+    sphere: &Sphere,
+) -> Result<(SphereHit, Option<[Expansion; 3]>), NonFinite> {
+    let e = expansions(ray, sphere)?;
+    let h = match e {
+        Some([a, b2, cc]) => hit(solve_expansions(a, b2, cc)),
+        None => classify(&on_dyadics(ray, sphere)),
+    };
+    Ok((h, e))
+}
+
 /// The sphere result of an exact [`quadratic`] (so a caller that needs both
 /// computes the quadratic once).
 ///
