@@ -5,7 +5,10 @@
 //! shuffled, where neighbouring rays no longer take the same branches. Run
 //! with `cargo bench --bench kernels`; the rates and ratios of the run are
 //! printed at the end and written to `target/criterion/ratios.md` and
-//! `target/criterion/ratios.json` (one object per kernel, Mrays/s).
+//! `target/criterion/ratios.json` (one object per kernel, Mrays/s). A
+//! filter (`cargo bench --bench kernels -- sphere`) applies to every
+//! measure below; a filtered run prints its kernels' rows and leaves those
+//! files as the last full run wrote them.
 //!
 //! Two measures of each, from the same run. Criterion's median times each
 //! way of running a kernel for seconds, one after another, so on a shared
@@ -97,6 +100,9 @@ fn pack(rays: &[Ray]) -> Vec<Ray4> {
 #[derive(Default)]
 struct Paired<'a> {
     routines: Vec<Routine<'a>>,
+    /// Routines criterion's filter left out (`cargo bench --bench kernels
+    /// -- sphere`, say), which the interleaved rounds leave out too.
+    filtered: usize,
 }
 
 /// A kernel (the criterion group), a way of running it, and one pass.
@@ -113,7 +119,9 @@ struct Passes {
 }
 
 impl<'a> Paired<'a> {
-    /// Times `routine` under `group/id` with criterion, and keeps it.
+    /// Times `routine` under `group/id` with criterion, and keeps it, unless
+    /// criterion's filter skipped it (criterion then never calls the
+    /// closure that times it).
     fn bench<T>(
         &mut self,
         g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
@@ -122,7 +130,15 @@ impl<'a> Paired<'a> {
         mut routine: impl FnMut() -> T + 'a,
     ) {
         let (f, p) = id.split_once('/').expect("variant/way");
-        g.bench_function(BenchmarkId::new(f, p), |b| b.iter(&mut routine));
+        let mut timed = false;
+        g.bench_function(BenchmarkId::new(f, p), |b| {
+            timed = true;
+            b.iter(&mut routine)
+        });
+        if !timed {
+            self.filtered += 1;
+            return;
+        }
         self.routines.push((
             group.to_string(),
             id,
@@ -133,8 +149,9 @@ impl<'a> Paired<'a> {
     }
 
     /// `rounds` rounds of one pass of every routine, a kernel's routines
-    /// one after another; the fastest and the median pass of each, in ns.
-    fn run(mut self, rounds: usize) -> Vec<(String, &'static str, Passes)> {
+    /// one after another; the fastest and the median pass of each, in ns,
+    /// and whether every routine ran (no filter).
+    fn run(mut self, rounds: usize) -> (Vec<(String, &'static str, Passes)>, bool) {
         let mut times = vec![Vec::with_capacity(rounds); self.routines.len()];
         for _ in 0..rounds {
             for (t, (_, _, r)) in times.iter_mut().zip(&mut self.routines) {
@@ -150,11 +167,14 @@ impl<'a> Paired<'a> {
                 median: t[t.len() / 2],
             }
         });
-        self.routines
+        let complete = self.filtered == 0;
+        let passes = self
+            .routines
             .into_iter()
             .zip(passes)
             .map(|((g, id, _), t)| (g, id, t))
-            .collect()
+            .collect();
+        (passes, complete)
     }
 }
 
@@ -252,8 +272,9 @@ fn shuffled(rays: &[Ray]) -> Vec<Ray> {
 }
 
 /// Runs every group with criterion, then the interleaved passes
-/// ([`Paired`]); returns the fastest and the median pass of each routine.
-fn benches(c: &mut Criterion) -> Vec<(String, &'static str, Passes)> {
+/// ([`Paired`]); returns the fastest and the median pass of each routine
+/// that ran, and whether all did.
+fn benches(c: &mut Criterion) -> (Vec<(String, &'static str, Passes)>, bool) {
     let mut rng = SmallRng::seed_from_u64(0x5eed);
     let rays = rays(&mut rng);
     let (t_min, t_max) = (f32x4::ZERO, f32x4::splat(f32::INFINITY));
@@ -467,8 +488,9 @@ fn rates(k: &str, ns: impl Fn(&str) -> Option<f64>) -> (String, serde_json::Valu
 /// `target/criterion/ratios.{md,json}`: criterion's medians (read back
 /// from its estimates), and, as `interleaved` and `interleaved_median`,
 /// each routine's fastest and median of the [`ROUNDS`] interleaved passes
-/// ([`Paired`]).
-fn print_ratios(passes: &[(String, &'static str, Passes)]) {
+/// ([`Paired`]). A filtered run (`complete` false) prints the rows of the
+/// kernels it ran and leaves the files of the last full run alone.
+fn print_ratios(passes: &[(String, &'static str, Passes)], complete: bool) {
     let base = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/criterion");
     let median = |group: &str, id: &str| -> Option<f64> {
         let path = base.join(group).join(id).join("new/estimates.json");
@@ -486,12 +508,17 @@ fn print_ratios(passes: &[(String, &'static str, Passes)]) {
     let (mut md, mut fast, mut mid) = (String::from(head), String::from(head), String::from(head));
     let mut json = Vec::new();
     for k in ["camera", "plane", "sphere", "sphere-shuffled", "quadric"] {
+        if !passes.iter().any(|p| p.0 == k) {
+            continue;
+        }
         let rays = if k == "sphere-shuffled" {
             "4096 primary rays of a 64×64 camera, shuffled"
         } else {
             "4096 primary rays of a 64×64 camera"
         };
-        let (row, mut o) = rates(k, |id| median(k, id));
+        // Criterion's estimates of this run only: a filtered run leaves
+        // those of earlier runs on disk.
+        let (row, mut o) = rates(k, |id| pass(k, id).and_then(|_| median(k, id)));
         let (fast_row, interleaved) = rates(k, |id| pass(k, id).map(|p| p.fastest));
         let (mid_row, interleaved_median) = rates(k, |id| pass(k, id).map(|p| p.median));
         md += &row;
@@ -510,6 +537,12 @@ fn print_ratios(passes: &[(String, &'static str, Passes)]) {
          The median of the same passes:\n\n{mid}"
     );
     println!("\n{md}");
+    if !complete {
+        println!(
+            "A filtered run: target/criterion/ratios.{{md,json}} are written by full runs only."
+        );
+        return;
+    }
     let _ = std::fs::write(base.join("ratios.md"), &md);
     let text = serde_json::to_string_pretty(&json).expect("JSON");
     let _ = std::fs::write(base.join("ratios.json"), text + "\n");
@@ -517,7 +550,7 @@ fn print_ratios(passes: &[(String, &'static str, Passes)]) {
 
 fn main() {
     let mut c = Criterion::default().configure_from_args();
-    let passes = benches(&mut c);
+    let (passes, complete) = benches(&mut c);
     c.final_summary();
-    print_ratios(&passes);
+    print_ratios(&passes, complete);
 }
