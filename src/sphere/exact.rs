@@ -99,19 +99,12 @@ pub fn intersect(ray: &Ray, sphere: &Sphere) -> Result<SphereHit, NonFinite> {
     }
     let (o, d, c) = (ray.origin, ray.dir, sphere.center);
     let key = [o.x, o.y, o.z, d.x, d.y, d.z, c.x, c.y, c.z, sphere.radius].map(f32::to_bits);
-    remembered(&LAST, key, || {
-        Ok(match expansions(ray, sphere)? {
-            Some([a, b2, cc]) => hit(solve_expansions(a, b2, cc)),
-            None => classify(&on_dyadics(ray, sphere)),
-        })
-    })
+    remembered(&LAST, key, || Ok(intersect_and_expansions(ray, sphere)?.0))
 }
 
 /// [`intersect`] without its memo, and with the coefficients it solved,
-/// where it formed them on expansions: for the `sphere` fuzz target, which
-/// compares them with the quadric oracle's and would otherwise form them
-/// twice.
-#[cfg(feature = "quadric")]
+/// where it formed them on expansions: the `sphere` fuzz target compares
+/// them with the quadric oracle's, and so forms them once.
 pub(crate) fn intersect_and_expansions(
     ray: &Ray,
     sphere: &Sphere,
