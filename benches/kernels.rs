@@ -2,7 +2,10 @@
 //! of a 64×64 camera (jittered, seeded), plus the plain-f64 variant as a
 //! baseline and parry3d as an outside peer (`Ball` for the sphere,
 //! `HalfSpace` for the plane). The sphere is also run on the same rays
-//! shuffled, where neighbouring rays no longer take the same branches. Run
+//! shuffled, where neighbouring rays no longer take the same branches:
+//! drawn in a fresh order before every pass, outside the timed part,
+//! because a branch predictor learns one fixed order over thousands of
+//! repeated passes, as incoherent rays in a renderer never repeat. Run
 //! with `cargo bench --bench kernels`; the rates and ratios of the run are
 //! printed at the end and written to `target/criterion/ratios.md` and
 //! `target/criterion/ratios.json` (one object per kernel, Mrays/s). A
@@ -49,7 +52,9 @@ use rayoracle::plane::{self, Plane};
 use rayoracle::quadric::{self, Quadric};
 use rayoracle::ray4::Ray4;
 use rayoracle::sphere::{self, Sphere};
+use std::cell::RefCell;
 use std::hint::black_box;
+use std::time::{Duration, Instant};
 use wide::f32x4;
 
 const N: usize = 4096;
@@ -105,8 +110,67 @@ struct Paired<'a> {
     filtered: usize,
 }
 
-/// A kernel (the criterion group), a way of running it, and one pass.
-type Routine<'a> = (String, &'static str, Box<dyn FnMut() + 'a>);
+/// A kernel (the criterion group), a way of running it, one pass, and
+/// the rays it reads, which may need a fresh order before the pass.
+type Routine<'a> = (
+    String,
+    &'static str,
+    Box<dyn FnMut() + 'a>,
+    Option<&'a RaySet>,
+);
+
+/// A set of rays as the ways of running a kernel read it: as rays, packed
+/// four to a [`Ray4`], and moved into the shape's frame for parry3d. A
+/// shuffled set is drawn in a fresh order before every pass
+/// ([`RaySet::prepare`], untimed): repeated passes over one fixed order
+/// let a branch predictor learn it, which is not what shuffled rays are
+/// there to show.
+struct RaySet {
+    rays: RefCell<Vec<Ray>>,
+    packed: RefCell<Vec<Ray4>>,
+    local: RefCell<Vec<parry3d::query::Ray>>,
+    at: Vec3,
+    fresh: Option<RefCell<SmallRng>>,
+}
+
+impl RaySet {
+    /// The rays in the order given, moved by `-at` for parry3d; shuffled
+    /// afresh before every pass, from a seeded generator, where `fresh`.
+    fn new(rays: Vec<Ray>, at: Vec3, fresh: bool) -> RaySet {
+        RaySet {
+            packed: RefCell::new(pack(&rays)),
+            local: RefCell::new(local(&rays, at)),
+            rays: RefCell::new(rays),
+            at,
+            fresh: fresh.then(|| RefCell::new(SmallRng::seed_from_u64(0x5_4ff1e))),
+        }
+    }
+
+    /// A fresh order for a shuffled set, written in place (nothing for
+    /// the others).
+    fn prepare(&self) {
+        use rand::seq::SliceRandom;
+        let Some(rng) = &self.fresh else { return };
+        let mut rays = self.rays.borrow_mut();
+        rays.shuffle(&mut *rng.borrow_mut());
+        for (p, c) in self
+            .packed
+            .borrow_mut()
+            .iter_mut()
+            .zip(rays.chunks_exact(4))
+        {
+            *p = Ray4::from_rays([c[0], c[1], c[2], c[3]]);
+        }
+        for (l, r) in self
+            .local
+            .borrow_mut()
+            .iter_mut()
+            .zip(local(&rays, self.at))
+        {
+            *l = r;
+        }
+    }
+}
 
 /// A routine's interleaved passes, in ns: the fastest, the one least
 /// disturbed by load from elsewhere, and the median, which a routine
@@ -121,19 +185,33 @@ struct Passes {
 impl<'a> Paired<'a> {
     /// Times `routine` under `group/id` with criterion, and keeps it, unless
     /// criterion's filter skipped it (criterion then never calls the
-    /// closure that times it).
+    /// closure that times it). Before each pass over a shuffled `set`, the
+    /// set's fresh order, untimed.
     fn bench<T>(
         &mut self,
         g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
         group: &str,
         id: &'static str,
+        set: Option<&'a RaySet>,
         mut routine: impl FnMut() -> T + 'a,
     ) {
         let (f, p) = id.split_once('/').expect("variant/way");
         let mut timed = false;
         g.bench_function(BenchmarkId::new(f, p), |b| {
             timed = true;
-            b.iter(&mut routine)
+            match set.filter(|s| s.fresh.is_some()) {
+                None => b.iter(&mut routine),
+                Some(set) => b.iter_custom(|iters| {
+                    let mut t = Duration::ZERO;
+                    for _ in 0..iters {
+                        set.prepare();
+                        let start = Instant::now();
+                        black_box(routine());
+                        t += start.elapsed();
+                    }
+                    t
+                }),
+            }
         });
         if !timed {
             self.filtered += 1;
@@ -145,6 +223,7 @@ impl<'a> Paired<'a> {
             Box::new(move || {
                 black_box(routine());
             }),
+            set,
         ));
     }
 
@@ -154,8 +233,11 @@ impl<'a> Paired<'a> {
     fn run(mut self, rounds: usize) -> (Vec<(String, &'static str, Passes)>, bool) {
         let mut times = vec![Vec::with_capacity(rounds); self.routines.len()];
         for _ in 0..rounds {
-            for (t, (_, _, r)) in times.iter_mut().zip(&mut self.routines) {
-                let start = std::time::Instant::now();
+            for (t, (_, _, r, set)) in times.iter_mut().zip(&mut self.routines) {
+                if let Some(set) = set {
+                    set.prepare();
+                }
+                let start = Instant::now();
                 r();
                 t.push(start.elapsed().as_nanos() as f64);
             }
@@ -172,7 +254,7 @@ impl<'a> Paired<'a> {
             .routines
             .into_iter()
             .zip(passes)
-            .map(|((g, id, _), t)| (g, id, t))
+            .map(|((g, id, _, _), t)| (g, id, t))
             .collect();
         (passes, complete)
     }
@@ -183,8 +265,7 @@ fn bench_group<'a, P: Copy + 'a>(
     c: &mut Criterion,
     paired: &mut Paired<'a>,
     name: &str,
-    rays: &'a [Ray],
-    packed: &'a [Ray4],
+    set: &'a RaySet,
     prim: P,
     scalar: impl Fn(&Ray, &P) -> Option<f32> + Copy + 'a,
     baseline: impl Fn(&Ray, &P) -> Option<f32> + 'a,
@@ -193,38 +274,42 @@ fn bench_group<'a, P: Copy + 'a>(
     mut batch: impl FnMut(&[Ray4]) -> f32x4 + 'a,
 ) {
     let mut g = c.benchmark_group(name);
-    g.throughput(Throughput::Elements(rays.len() as u64));
-    paired.bench(&mut g, name, "reference/per-ray", move || {
+    g.throughput(Throughput::Elements(set.rays.borrow().len() as u64));
+    let (rays, packed) = (&set.rays, &set.packed);
+    let s = Some(set);
+    paired.bench(&mut g, name, "reference/per-ray", s, move || {
         let mut acc = 0.0f32;
-        for r in rays {
+        for r in rays.borrow().iter() {
             acc += black_box(scalar(black_box(r), &prim)).unwrap_or(0.0);
         }
         acc
     });
-    paired.bench(&mut g, name, "reference/slice", move || {
-        black_box(rays)
+    paired.bench(&mut g, name, "reference/slice", s, move || {
+        black_box(&rays.borrow()[..])
             .iter()
             .map(|r| scalar(r, &prim).unwrap_or(0.0))
             .sum::<f32>()
     });
-    paired.bench(&mut g, name, "x4/packed", move || {
+    paired.bench(&mut g, name, "x4/packed", s, move || {
         let mut acc = f32x4::ZERO;
-        for r in black_box(packed) {
+        for r in black_box(&packed.borrow()[..]) {
             acc += simd(r);
         }
         acc
     });
-    paired.bench(&mut g, name, "x4/baseline", move || {
+    paired.bench(&mut g, name, "x4/baseline", s, move || {
         let mut acc = f32x4::ZERO;
-        for r in black_box(packed) {
+        for r in black_box(&packed.borrow()[..]) {
             acc += base(r);
         }
         acc
     });
-    paired.bench(&mut g, name, "x4/batch", move || batch(black_box(packed)));
-    paired.bench(&mut g, name, "f64/per-ray", move || {
+    paired.bench(&mut g, name, "x4/batch", s, move || {
+        batch(black_box(&packed.borrow()[..]))
+    });
+    paired.bench(&mut g, name, "f64/per-ray", s, move || {
         let mut acc = 0.0f32;
-        for r in rays {
+        for r in rays.borrow().iter() {
             acc += black_box(baseline(black_box(r), &prim)).unwrap_or(0.0);
         }
         acc
@@ -239,13 +324,14 @@ fn bench_peer<'a, S: parry3d::query::RayCast + 'a>(
     paired: &mut Paired<'a>,
     name: &str,
     shape: &'a S,
-    local: &'a [parry3d::query::Ray],
+    set: &'a RaySet,
 ) {
     let mut g = c.benchmark_group(name);
-    g.throughput(Throughput::Elements(local.len() as u64));
-    paired.bench(&mut g, name, "parry3d/per-ray", move || {
+    let local = &set.local;
+    g.throughput(Throughput::Elements(local.borrow().len() as u64));
+    paired.bench(&mut g, name, "parry3d/per-ray", Some(set), move || {
         let mut acc = 0.0f32;
-        for r in local {
+        for r in local.borrow().iter() {
             acc += black_box(shape.cast_local_ray(black_box(r), f32::MAX, false)).unwrap_or(0.0);
         }
         acc
@@ -263,14 +349,6 @@ fn local(rays: &[Ray], at: Vec3) -> Vec<parry3d::query::Ray> {
         .collect()
 }
 
-/// The same rays in a seeded random order.
-fn shuffled(rays: &[Ray]) -> Vec<Ray> {
-    use rand::seq::SliceRandom;
-    let mut v = rays.to_vec();
-    v.shuffle(&mut SmallRng::seed_from_u64(0x5_4ff1e));
-    v
-}
-
 /// Runs every group with criterion, then the interleaved passes
 /// ([`Paired`]); returns the fastest and the median pass of each routine
 /// that ran, and whether all did.
@@ -285,11 +363,9 @@ fn benches(c: &mut Criterion) -> (Vec<(String, &'static str, Passes)>, bool) {
     let s4 = sphere::x4::Sphere4::splat(&s);
     let ball = parry3d::shape::Ball::new(s.radius);
     let sets = [
-        ("sphere", rays.clone()),
-        ("sphere-shuffled", shuffled(&rays)),
+        ("sphere", RaySet::new(rays.clone(), s.center, false)),
+        ("sphere-shuffled", RaySet::new(rays.clone(), s.center, true)),
     ];
-    let sphere_packed = sets.each_ref().map(|(_, r)| pack(r));
-    let sphere_local = sets.each_ref().map(|(_, r)| local(r, s.center));
     let mut sphere_out =
         [(); 2].map(|_| vec![sphere::x4::intersect(&Ray4::splat(rays[0]), &s4); N / 4]);
 
@@ -298,30 +374,24 @@ fn benches(c: &mut Criterion) -> (Vec<(String, &'static str, Passes)>, bool) {
     let mut plane_out = vec![plane::x4::intersect(&Ray4::splat(rays[0]), &p4); N / 4];
     let n = p.normal.normalize().to_array();
     let half = parry3d::shape::HalfSpace::new(parry3d::math::Vector::new(n[0], n[1], n[2]));
-    let plane_local = local(&rays, p.point);
+    let plane_set = RaySet::new(rays.clone(), p.point, false);
 
     // A one-sheet hyperboloid x² + z² − y² = 0.5, tilted by the mix of terms.
     let q = Quadric::new([1.0, -1.0, 1.0, 0.1, 0.0, 0.05, 0.0, 0.2, 0.0, -0.5]);
     let q4 = quadric::x4::Quadric4::splat(&q);
     let mut quadric_out = vec![quadric::x4::intersect(&Ray4::splat(rays[0]), &q4); N / 4];
-    let packed = pack(&rays);
+    let quadric_set = RaySet::new(rays.clone(), Vec3::ZERO, false);
 
     let cam = camera();
     let cam64 = rayoracle::camera::plain::Camera::new(&cam.params).expect("valid camera");
 
     let mut paired = Paired::default();
-    for ((((name, rays), packed), local), out) in sets
-        .iter()
-        .zip(&sphere_packed)
-        .zip(&sphere_local)
-        .zip(&mut sphere_out)
-    {
+    for ((name, set), out) in sets.iter().zip(&mut sphere_out) {
         bench_group(
             c,
             &mut paired,
             name,
-            rays,
-            packed,
+            set,
             s,
             |r, s| sphere::reference::intersect(r, s).nearest(0.0, f32::INFINITY),
             |r, s| sphere::plain::intersect(r, s).nearest(0.0, f32::INFINITY),
@@ -343,15 +413,14 @@ fn benches(c: &mut Criterion) -> (Vec<(String, &'static str, Passes)>, bool) {
                 acc
             },
         );
-        bench_peer(c, &mut paired, name, &ball, local);
+        bench_peer(c, &mut paired, name, &ball, set);
     }
 
     bench_group(
         c,
         &mut paired,
         "plane",
-        &rays,
-        &packed,
+        &plane_set,
         p,
         |r, p| plane::reference::intersect(r, p).nearest(0.0, f32::INFINITY),
         |r, p| plane::plain::intersect(r, p).nearest(0.0, f32::INFINITY),
@@ -373,14 +442,13 @@ fn benches(c: &mut Criterion) -> (Vec<(String, &'static str, Passes)>, bool) {
             acc
         },
     );
-    bench_peer(c, &mut paired, "plane", &half, &plane_local);
+    bench_peer(c, &mut paired, "plane", &half, &plane_set);
 
     bench_group(
         c,
         &mut paired,
         "quadric",
-        &rays,
-        &packed,
+        &quadric_set,
         q,
         |r, q| quadric::reference::intersect(r, q).nearest(0.0, f32::INFINITY),
         |r, q| quadric::plain::intersect(r, q).nearest(0.0, f32::INFINITY),
@@ -407,26 +475,26 @@ fn benches(c: &mut Criterion) -> (Vec<(String, &'static str, Passes)>, bool) {
     let (cam, cam64) = (&cam, &cam64);
     let mut g = c.benchmark_group("camera");
     g.throughput(Throughput::Elements(N as u64));
-    paired.bench(&mut g, "camera", "reference/per-ray", move || {
+    paired.bench(&mut g, "camera", "reference/per-ray", None, move || {
         let mut acc = 0.0f32;
         for i in 0..N as u32 {
             acc += black_box(cam.ray(black_box(i % 64), i / 64)).dir.x;
         }
         acc
     });
-    paired.bench(&mut g, "camera", "reference/slice", move || {
+    paired.bench(&mut g, "camera", "reference/slice", None, move || {
         (0..N as u32)
             .map(|i| cam.ray(i % 64, i / 64).dir.x)
             .sum::<f32>()
     });
-    paired.bench(&mut g, "camera", "x4/packed", move || {
+    paired.bench(&mut g, "camera", "x4/packed", None, move || {
         let mut acc = f32x4::ZERO;
         for i in (0..N as u32).step_by(4) {
             acc += black_box(cam.ray4_row(black_box(i % 64), i / 64)).dir[0];
         }
         acc
     });
-    paired.bench(&mut g, "camera", "f64/per-ray", move || {
+    paired.bench(&mut g, "camera", "f64/per-ray", None, move || {
         let mut acc = 0.0f32;
         for i in 0..N as u32 {
             acc += black_box(cam64.ray(black_box(i % 64), i / 64)).dir.x;
