@@ -1,25 +1,29 @@
-//! Eight `f64` lanes in one AVX-512 register, for the quadric's batch
-//! path (`quadric::x4::intersect_packets`), chosen at run time on x86-64.
+//! Eight `f64` lanes in one AVX-512 register, for the batch paths
+//! (`intersect_packets` of the plane, the sphere and the quadric), chosen
+//! at run time on x86-64.
 //!
 //! The batch paths run two packets at a time as eight lanes
 //! ([`Real8`]): on CPUs with AVX2 as a [`Pair`](super::real::Pair) of
 //! `Avx4`, two 256-bit registers per value. Where [`Avx512::detect`]
-//! finds AVX-512 (F, DQ and VL), the quadric's runs on one 512-bit
-//! register, `Avx8`, with its comparisons in mask registers, and
-//! finishes each packet on a 256-bit half. Every operation of [`Real`] is
-//! one correctly rounded IEEE-754 operation per lane, as in
-//! [`super::avx`] (no FMA contraction), so every copy gives the same bits.
+//! finds AVX-512 (F, DQ and VL), they run on one 512-bit register,
+//! `Avx8`, with their comparisons in mask registers, and finish each
+//! packet on a 256-bit half. Every operation of [`Real`] is one correctly
+//! rounded IEEE-754 operation per lane, as in [`super::avx`] (no FMA
+//! contraction), so every copy gives the same bits.
 //!
-//! In the kernels bench (`cargo bench --bench kernels`, default build,
-//! 4,096 jittered primary rays of a 64×64 camera, AMD EPYC with AVX-512,
-//! two runs each, alternated, on a shared machine), `x4/batch` took, on
-//! AVX-512 against pairs of AVX2 registers: quadric 37.9 against
-//! 50.1 µs, which is what the `unsafe` blocks of this module and of the
-//! quadric's entry point buy; the plane 10.0 against 9.5 µs, the sphere
-//! 8.1 against 8.4 µs and, shuffled, 14.4 against 14.0 µs. A 512-bit
-//! operation is two 256-bit ones on that CPU, so only the quadric, whose
-//! long chains of operations leave the most to the saved instructions,
-//! gains; the plane and the sphere stay on AVX2.
+//! The `unsafe` blocks of this module and of the batch dispatch
+//! (`num::batch`) are justified by the kernels bench (`cargo bench
+//! --bench kernels`, default build, 4,096 jittered primary rays of a
+//! 64×64 camera, shared machines). `x4/batch` took, its fastest
+//! interleaved pass, on AVX-512 against pairs of AVX2 registers:
+//!
+//! * Intel Xeon with AVX-512, two runs each, alternated: the plane 12.6
+//!   and 13.5 µs against 16.8 and 15.3; the sphere 11.1 and 11.5 against
+//!   14.8 and 14.7; shuffled, 20.0 and 20.9 against 24.0 and 25.3.
+//! * AMD EPYC with AVX-512, where a 512-bit operation is two 256-bit
+//!   ones, two runs each, alternated: the quadric 37.9 against 50.1 µs;
+//!   the plane 10.0 against 9.5, the sphere 8.1 against 8.4 and,
+//!   shuffled, 14.4 against 14.0, so within a few percent either way.
 //!
 //! `Avx8` is crate-private for the reason `Avx4` is: its methods run
 //! AVX-512 instructions without a target feature of their own, so the

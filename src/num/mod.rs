@@ -27,8 +27,13 @@ pub use lane::Lane;
 pub use real::Real;
 #[cfg(target_arch = "x86_64")]
 pub mod avx;
-#[cfg(all(target_arch = "x86_64", feature = "quadric"))]
+#[cfg(all(
+    target_arch = "x86_64",
+    any(feature = "plane", feature = "sphere", feature = "quadric")
+))]
 pub mod avx512;
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+pub(crate) mod batch;
 pub mod certify;
 pub mod dd;
 pub mod real;

@@ -6,7 +6,7 @@ use super::{Plane, PlaneHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, flush_prone4, results_stand, subnormals_work};
-use crate::num::real::{F64x4, Pair, Real, Real4, Real8};
+use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::class::{ALL, NONE, ONE};
 use crate::ray4::{Ray4, gather3, scatter3};
 use wide::bytemuck::cast;
@@ -138,7 +138,9 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 
 /// [`intersect`] over many packets: `out[i] = intersect(&rays[i], p)` for
 /// every `i` below the shorter length, two packets at a time as eight
-/// lanes ([`Pair`]), with the floating-point environment read once.
+/// lanes (one AVX-512 register where the CPU has it, else a
+/// [`Pair`](crate::num::real::Pair) of four-lane values), with the
+/// floating-point environment read once.
 ///
 /// ```
 /// use rayoracle::{Ray, ray4::Ray4, plane::{Plane, x4}};
@@ -152,17 +154,7 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 /// }
 /// ```
 pub fn intersect_packets(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
-    #[cfg(target_arch = "x86_64")]
-    if let Some(avx2) = Avx2::detect() {
-        #[target_feature(enable = "avx2,fma")]
-        fn run(_: Avx2, rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
-            packets_in::<Pair<Avx4>>(rays, p, out)
-        }
-        // SAFETY: the token exists only where AVX2 and FMA were detected.
-        // Justified by the kernels bench figures in `crate::num::avx`.
-        return unsafe { run(avx2, rays, p, out) };
-    }
-    packets_in::<Pair<F64x4>>(rays, p, out)
+    crate::num::batch::packets_dispatch!(packets_in, rays, p: Plane4, out: PlaneHit4)
 }
 
 /// [`intersect_packets`] over any eight-lane [`Real8`].
@@ -337,10 +329,14 @@ impl PlaneHit4 {
 mod tests {
     use super::*;
     use crate::hit::same_bits;
+    #[cfg(target_arch = "x86_64")]
+    use crate::num::avx512::{Avx8, Avx512};
+    use crate::num::real::Pair;
 
-    /// Both copies of the batch (pairs of [`F64x4`], and where the CPU
-    /// has AVX2 pairs of AVX registers, which [`intersect_packets`] takes)
-    /// give what the baseline one-packet kernel gives, odd tails included.
+    /// Every copy of the batch (pairs of [`F64x4`], pairs of AVX
+    /// registers where the CPU has AVX2, one AVX-512 register where it has
+    /// AVX-512, which [`intersect_packets`] takes) gives what the baseline
+    /// one-packet kernel gives, odd tails included.
     #[test]
     fn every_batch_copy_equals_one_packet_at_a_time() {
         let p = Plane4::from_planes(
@@ -368,10 +364,20 @@ mod tests {
             fn pairs(_: Avx2, r: &[Ray4], x: &Plane4, o: &mut [PlaneHit4]) {
                 packets_in::<Pair<Avx4>>(r, x, o)
             }
+            #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+            fn wide(_: Avx512, r: &[Ray4], x: &Plane4, o: &mut [PlaneHit4]) {
+                packets_in::<Avx8>(r, x, o)
+            }
             if let Some(t) = Avx2::detect() {
                 let mut o = outs[0].clone();
                 // SAFETY: the token proves the features `pairs` needs.
                 unsafe { pairs(t, &rays, &p, &mut o) };
+                outs.push(o);
+            }
+            if let Some(t) = Avx512::detect() {
+                let mut o = outs[0].clone();
+                // SAFETY: the token proves the features `wide` needs.
+                unsafe { wide(t, &rays, &p, &mut o) };
                 outs.push(o);
             }
         }

@@ -5,10 +5,8 @@
 use super::{Quadric, QuadricHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
-#[cfg(target_arch = "x86_64")]
-use crate::num::avx512::{Avx8, Avx512};
 use crate::num::certify::{certify, flush_prone4, results_stand, subnormals_work};
-use crate::num::real::{F64x4, Pair, Real, Real4, Real8};
+use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::Ray4;
 use crate::ray4::class::{ALL, NONE, ONE, TWO};
 use wide::bytemuck::cast;
@@ -142,7 +140,9 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
 
 /// [`intersect`] over many packets: `out[i] = intersect(&rays[i], q)` for
 /// every `i` below the shorter length, two packets at a time as eight
-/// lanes ([`Pair`]), with the floating-point environment read once.
+/// lanes (one AVX-512 register where the CPU has it, else a
+/// [`Pair`](crate::num::real::Pair) of four-lane values), with the
+/// floating-point environment read once.
 ///
 /// ```
 /// use rayoracle::{Ray, ray4::Ray4, quadric::{Quadric, x4}};
@@ -156,28 +156,7 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
 /// }
 /// ```
 pub fn intersect_packets(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
-    #[cfg(target_arch = "x86_64")]
-    if let Some(avx512) = Avx512::detect() {
-        #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-        fn run(_: Avx512, rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
-            packets_in::<Avx8>(rays, q, out)
-        }
-        // SAFETY: the token exists only where AVX-512 F, DQ and VL, AVX2
-        // and FMA were detected. Justified by the kernels bench figures in
-        // `crate::num::avx512`.
-        return unsafe { run(avx512, rays, q, out) };
-    }
-    #[cfg(target_arch = "x86_64")]
-    if let Some(avx2) = Avx2::detect() {
-        #[target_feature(enable = "avx2,fma")]
-        fn run(_: Avx2, rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
-            packets_in::<Pair<Avx4>>(rays, q, out)
-        }
-        // SAFETY: the token exists only where AVX2 and FMA were detected.
-        // Justified by the kernels bench figures in `crate::num::avx`.
-        return unsafe { run(avx2, rays, q, out) };
-    }
-    packets_in::<Pair<F64x4>>(rays, q, out)
+    crate::num::batch::packets_dispatch!(packets_in, rays, q: Quadric4, out: QuadricHit4)
 }
 
 /// The ten coefficients widened, written out: `map` over ten lanes is not
@@ -402,6 +381,9 @@ impl QuadricHit4 {
 mod tests {
     use super::*;
     use crate::hit::same_bits;
+    #[cfg(target_arch = "x86_64")]
+    use crate::num::avx512::{Avx8, Avx512};
+    use crate::num::real::Pair;
 
     /// Every copy of the batch (pairs of [`F64x4`], and where the CPU has
     /// them pairs of AVX2 registers and AVX-512 registers, of which

@@ -7,7 +7,7 @@ use crate::Ray;
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{certify, flush_prone4, results_stand, subnormals_work};
-use crate::num::real::{F64x4, Pair, Real, Real4, Real8};
+use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::class::{NONE, ONE, TWO};
 use crate::ray4::{Ray4, gather3};
 use wide::bytemuck::cast;
@@ -144,8 +144,10 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 
 /// [`intersect`] over many packets: `out[i] = intersect(&rays[i], s)` for
 /// every `i` below the shorter length. The packets go through two at a
-/// time as eight lanes ([`Pair`]), which interleaves two independent
-/// chains of operations, and the floating-point environment is read once.
+/// time as eight lanes, which interleaves two independent chains of
+/// operations: one AVX-512 register where the CPU has it, else a
+/// [`Pair`](crate::num::real::Pair) of four-lane values. The
+/// floating-point environment is read once.
 ///
 /// ```
 /// use rayoracle::{Ray, ray4::Ray4, sphere::{Sphere, x4}};
@@ -159,17 +161,7 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 /// }
 /// ```
 pub fn intersect_packets(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
-    #[cfg(target_arch = "x86_64")]
-    if let Some(avx2) = Avx2::detect() {
-        #[target_feature(enable = "avx2,fma")]
-        fn run(_: Avx2, rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
-            packets_in::<Pair<Avx4>>(rays, s, out)
-        }
-        // SAFETY: the token exists only where AVX2 and FMA were detected.
-        // Justified by the kernels bench figures in `crate::num::avx`.
-        return unsafe { run(avx2, rays, s, out) };
-    }
-    packets_in::<Pair<F64x4>>(rays, s, out)
+    crate::num::batch::packets_dispatch!(packets_in, rays, s: Sphere4, out: SphereHit4)
 }
 
 /// [`intersect_packets`] over any eight-lane [`Real8`].
@@ -451,10 +443,14 @@ pub fn intersect_slice(rays: &[crate::Ray], sphere: &Sphere) -> Vec<SphereHit> {
 mod tests {
     use super::*;
     use crate::hit::same_bits;
+    #[cfg(target_arch = "x86_64")]
+    use crate::num::avx512::{Avx8, Avx512};
+    use crate::num::real::Pair;
 
-    /// Both copies of the batch (pairs of [`F64x4`], and where the CPU
-    /// has AVX2 pairs of AVX registers, which [`intersect_packets`] takes)
-    /// give what the baseline one-packet kernel gives, odd tails included.
+    /// Every copy of the batch (pairs of [`F64x4`], pairs of AVX
+    /// registers where the CPU has AVX2, one AVX-512 register where it has
+    /// AVX-512, which [`intersect_packets`] takes) gives what the baseline
+    /// one-packet kernel gives, odd tails included.
     #[test]
     fn every_batch_copy_equals_one_packet_at_a_time() {
         let s = Sphere4::from_spheres(
@@ -476,10 +472,20 @@ mod tests {
             fn pairs(_: Avx2, r: &[Ray4], x: &Sphere4, o: &mut [SphereHit4]) {
                 packets_in::<Pair<Avx4>>(r, x, o)
             }
+            #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+            fn wide(_: Avx512, r: &[Ray4], x: &Sphere4, o: &mut [SphereHit4]) {
+                packets_in::<Avx8>(r, x, o)
+            }
             if let Some(t) = Avx2::detect() {
                 let mut o = outs[0].clone();
                 // SAFETY: the token proves the features `pairs` needs.
                 unsafe { pairs(t, &rays, &s, &mut o) };
+                outs.push(o);
+            }
+            if let Some(t) = Avx512::detect() {
+                let mut o = outs[0].clone();
+                // SAFETY: the token proves the features `wide` needs.
+                unsafe { wide(t, &rays, &s, &mut o) };
                 outs.push(o);
             }
         }
