@@ -146,29 +146,15 @@ impl RaySet {
         }
     }
 
-    /// A fresh order for a shuffled set, written in place (nothing for
-    /// the others).
+    /// A fresh order for a shuffled set, and its packets and parry3d rays
+    /// formed again from it (nothing for the others).
     fn prepare(&self) {
         use rand::seq::SliceRandom;
         let Some(rng) = &self.fresh else { return };
         let mut rays = self.rays.borrow_mut();
         rays.shuffle(&mut *rng.borrow_mut());
-        for (p, c) in self
-            .packed
-            .borrow_mut()
-            .iter_mut()
-            .zip(rays.chunks_exact(4))
-        {
-            *p = Ray4::from_rays([c[0], c[1], c[2], c[3]]);
-        }
-        for (l, r) in self
-            .local
-            .borrow_mut()
-            .iter_mut()
-            .zip(local(&rays, self.at))
-        {
-            *l = r;
-        }
+        *self.packed.borrow_mut() = pack(&rays);
+        *self.local.borrow_mut() = local(&rays, self.at);
     }
 }
 
