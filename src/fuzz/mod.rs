@@ -9,7 +9,9 @@
 //! For every input:
 //!
 //! 1. each x4 lane equals the reference bit for bit (class, roots, and
-//!    `nearest` over a fuzzer-chosen interval);
+//!    `nearest` over a fuzzer-chosen interval), and the batch entry point
+//!    (`intersect_packets`) equals x4 on the input's packet and on its rays
+//!    turned by one lane;
 //! 2. each reference answer is the exact oracle's ([`crate::check`]: the
 //!    exact class and every root's bits; the camera's direction bits);
 //! 3. for spheres, when the quadric is compiled in too, the same sphere
@@ -346,16 +348,24 @@ fn sphere_accepts(ray: &Ray, s: &Sphere, got: &sphere::SphereHit) -> bool {
     }
 }
 
-/// The two implementations a target compares: the scalar one and the
-/// four-lane one. Each target is a one-line call of its `*_with` function
-/// with the shipped pair; the tests (`fuzz/wrong_kernels.rs`) pass in wrong
-/// ones, to show that every check a target makes fires on a wrong kernel.
+/// The implementations a target compares: the scalar one, the four-lane
+/// one and, for a primitive, the batch entry point. Each target is a
+/// one-line call of its `*_with` function with the shipped kernels; the
+/// tests (`fuzz/wrong_kernels.rs`) pass in wrong ones, to show that every
+/// check a target makes fires on a wrong kernel.
 #[derive(Clone, Copy)]
-pub(crate) struct Kernels<R, X> {
+pub(crate) struct Kernels<R, X, B = ()> {
     /// The scalar kernel, judged against the exact oracle.
     pub(crate) reference: R,
     /// The four-lane kernel, compared bit for bit with `reference`.
     pub(crate) x4: X,
+    /// The batch kernel, compared bit for bit with `x4`, packet by packet
+    /// (`()` for the camera, which has none).
+    #[cfg_attr(
+        not(any(feature = "plane", feature = "sphere", feature = "quadric")),
+        allow(dead_code)
+    )]
+    pub(crate) batch: B,
 }
 
 /// The kernels of a primitive's target.
@@ -363,6 +373,7 @@ pub(crate) struct Kernels<R, X> {
 pub(crate) type PrimitiveKernels<P> = Kernels<
     fn(&Ray, &P) -> <P as Primitive>::Hit,
     fn(&Ray4, &<P as Primitive>::Packet) -> <P as Primitive>::Hit4,
+    fn(&[Ray4], &<P as Primitive>::Packet, &mut [<P as Primitive>::Hit4]),
 >;
 /// The camera kernels a target can be given: one pixel's ray, four pixels'.
 pub(crate) type CameraKernels =
@@ -401,6 +412,7 @@ pub fn primitive<P: Target>(data: &[u8]) -> Result<(), Failure> {
         Kernels {
             reference: P::reference,
             x4: P::x4,
+            batch: P::batch,
         },
     )
 }
@@ -427,10 +439,11 @@ pub(crate) fn primitive_with<P: Target>(
         return Ok(());
     };
     let reference = cases.map(|(r, p)| (k.reference)(&r, &p));
-    let h4 = (k.x4)(
-        &Ray4::from_rays(cases.map(|c| c.0)),
-        &P::pack(cases.map(|c| c.1)),
+    let (rays, packet) = (
+        Ray4::from_rays(cases.map(|c| c.0)),
+        P::pack(cases.map(|c| c.1)),
     );
+    let h4 = (k.x4)(&rays, &packet);
     let (lo, hi) = interval4(interval);
     x4_matches(
         P::lanes(&h4),
@@ -441,6 +454,37 @@ pub(crate) fn primitive_with<P: Target>(
     for (i, (r, p)) in cases.iter().enumerate() {
         if !P::accepts(r, p, &reference[i]) {
             judged(i, &(r, p), P::check(r, p, reference[i]))?;
+        }
+    }
+    batch_matches::<P>(&k, cases.map(|c| c.0), &packet, h4)
+}
+
+/// Compares the batch kernel with x4, packet by packet, on two packets:
+/// the rays of the input, and the same rays turned by one lane (against the
+/// same primitives, so new cases), which makes a batch of eight lanes.
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+fn batch_matches<P: Target>(
+    k: &PrimitiveKernels<P>,
+    r: [Ray; 4],
+    packet: &P::Packet,
+    h4: P::Hit4,
+) -> Result<(), Failure> {
+    let (rays, turned) = (
+        Ray4::from_rays(r),
+        Ray4::from_rays([r[1], r[2], r[3], r[0]]),
+    );
+    let want = [P::lanes(&h4), P::lanes(&(k.x4)(&turned, packet))];
+    let mut out = [h4; 2];
+    (k.batch)(&[rays, turned], packet, &mut out);
+    for (j, (got, want)) in out.iter().zip(&want).enumerate() {
+        let got = P::lanes(got);
+        for i in 0..4 {
+            if !crate::hit::same_bits(&got[i], &want[i]) {
+                return Err(Failure(format!(
+                    "packet {j} lane {i}: batch {:?} but x4 {:?}",
+                    got[i], want[i]
+                )));
+            }
         }
     }
     Ok(())
@@ -461,6 +505,7 @@ pub fn camera(data: &[u8]) -> Result<(), Failure> {
         Kernels {
             reference: Camera::ray,
             x4: Camera::ray4,
+            batch: (),
         },
     )
 }

@@ -7,7 +7,8 @@
 //! wrong kernels are `fn` items, as the targets take them: a lane swap, a
 //! shifted root (with an x4 shifted the same way, so that the bit-identity
 //! check passes and the exact oracle has to catch it), the textbook
-//! sphere, a camera ray wrong at one pixel, and broken `eval` outputs.
+//! sphere, a batch that leaves its last packet out, a camera ray wrong at
+//! one pixel, and broken `eval` outputs.
 
 use super::{Failure, camera, camera_with, encode_f32, eval_line, eval_line_with};
 use crate::Ray;
@@ -86,12 +87,27 @@ mod plane {
         }
     }
 
+    /// A batch that leaves its last packet out.
+    fn first_only(r: &[Ray4], p: &x4::Plane4, out: &mut [x4::PlaneHit4]) {
+        x4::intersect_packets(&r[..1], p, &mut out[..1])
+    }
+
     #[test]
-    fn the_plane_target_catches_swapped_lanes_and_a_wrong_root() {
+    fn the_plane_target_catches_swapped_lanes_a_wrong_root_and_a_short_batch() {
+        let short: PrimitiveKernels<Plane> = Kernels {
+            reference: reference::intersect,
+            x4: x4::intersect,
+            batch: first_only,
+        };
+        assert_eq!(
+            head(primitive_with::<Plane>(&input(), short)),
+            "packet 1 lane 0: batch Hit(1.0) but x4 Hit(2.0)"
+        );
         assert_eq!(crate::fuzz::primitive::<Plane>(&input()), Ok(()));
         let swap: PrimitiveKernels<Plane> = Kernels {
             reference: reference::intersect,
             x4: swapped,
+            batch: x4::intersect_packets,
         };
         assert_eq!(
             head(primitive_with::<Plane>(&input(), swap)),
@@ -100,6 +116,7 @@ mod plane {
         let shift: PrimitiveKernels<Plane> = Kernels {
             reference: shifted,
             x4: shifted4,
+            batch: x4::intersect_packets,
         };
         let e = head(primitive_with::<Plane>(&input(), shift));
         assert!(
@@ -165,12 +182,27 @@ mod sphere {
         }
     }
 
+    /// A batch that leaves its last packet out.
+    fn first_only(r: &[Ray4], p: &x4::Sphere4, out: &mut [x4::SphereHit4]) {
+        x4::intersect_packets(&r[..1], p, &mut out[..1])
+    }
+
     #[test]
-    fn the_sphere_target_catches_swapped_lanes_and_the_textbook_formula() {
+    fn the_sphere_target_catches_swapped_lanes_the_textbook_formula_and_a_short_batch() {
+        let short: PrimitiveKernels<Sphere> = Kernels {
+            reference: reference::intersect,
+            x4: x4::intersect,
+            batch: first_only,
+        };
+        assert_eq!(
+            head(primitive_with::<Sphere>(&input(), short)),
+            "packet 1 lane 0: batch Two(9999.0, 10001.0) but x4 Two(5.0, 7.0)"
+        );
         assert_eq!(crate::fuzz::primitive::<Sphere>(&input()), Ok(()));
         let swap: PrimitiveKernels<Sphere> = Kernels {
             reference: reference::intersect,
             x4: swapped,
+            batch: x4::intersect_packets,
         };
         assert_eq!(
             head(primitive_with::<Sphere>(&input(), swap)),
@@ -179,6 +211,7 @@ mod sphere {
         let seed: PrimitiveKernels<Sphere> = Kernels {
             reference: textbook::intersect,
             x4: textbook4,
+            batch: x4::intersect_packets,
         };
         let e = head(primitive_with::<Sphere>(&input(), seed));
         assert!(
@@ -232,12 +265,27 @@ mod quadric {
         }
     }
 
+    /// A batch that leaves its last packet out.
+    fn first_only(r: &[Ray4], p: &x4::Quadric4, out: &mut [x4::QuadricHit4]) {
+        x4::intersect_packets(&r[..1], p, &mut out[..1])
+    }
+
     #[test]
-    fn the_quadric_target_catches_swapped_lanes_and_wrong_roots() {
+    fn the_quadric_target_catches_swapped_lanes_wrong_roots_and_a_short_batch() {
+        let short: PrimitiveKernels<Quadric> = Kernels {
+            reference: reference::intersect,
+            x4: x4::intersect,
+            batch: first_only,
+        };
+        assert_eq!(
+            head(primitive_with::<Quadric>(&input(), short)),
+            "packet 1 lane 0: batch Two(4.0, 6.0) but x4 Two(5.0, 7.0)"
+        );
         assert_eq!(crate::fuzz::primitive::<Quadric>(&input()), Ok(()));
         let swap: PrimitiveKernels<Quadric> = Kernels {
             reference: reference::intersect,
             x4: swapped,
+            batch: x4::intersect_packets,
         };
         assert_eq!(
             head(primitive_with::<Quadric>(&input(), swap)),
@@ -246,6 +294,7 @@ mod quadric {
         let shift: PrimitiveKernels<Quadric> = Kernels {
             reference: shifted,
             x4: shifted4,
+            batch: x4::intersect_packets,
         };
         let e = head(primitive_with::<Quadric>(&input(), shift));
         assert!(
@@ -306,11 +355,13 @@ fn the_camera_target_catches_a_wrong_lane_and_checks_the_wrapped_pixel() {
     let dir_off: CameraKernels = Kernels {
         reference: Camera::ray,
         x4: |c: &Camera, p| lane_changed(c.ray4(p), 2, |x| x + 1.0),
+        batch: (),
     };
     assert!(head(camera_with(&camera_input(px), dir_off)).starts_with("lane 2: x4 Ray"));
     let nan: CameraKernels = Kernels {
         reference: Camera::ray,
         x4: |c: &Camera, p| lane_changed(c.ray4(p), 1, |_| f32::NAN),
+        batch: (),
     };
     assert!(head(camera_with(&camera_input(px), nan)).starts_with("lane 1: x4 Ray"));
     // A kernel wrong only at column 2 and row 3, bit-identical in x4: the
@@ -319,6 +370,7 @@ fn the_camera_target_catches_a_wrong_lane_and_checks_the_wrapped_pixel() {
     let wrong: CameraKernels = Kernels {
         reference: wrong_at_2_3,
         x4: wrong_at_2_3_x4,
+        batch: (),
     };
     assert_eq!(camera_with(&camera_input([[1, 1]; 4]), wrong), Ok(()));
     assert_eq!(camera_with(&camera_input([[3, 4]; 4]), wrong), Ok(()));

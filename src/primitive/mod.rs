@@ -60,6 +60,10 @@ pub trait Primitive: Copy + core::fmt::Debug + PartialEq + Sized + 'static {
     fn pack(p: [Self; 4]) -> Self::Packet;
     /// The four-lane kernel (`*::x4::intersect`).
     fn x4(ray: &Ray4, p: &Self::Packet) -> Self::Hit4;
+    /// The batch entry point (`*::x4::intersect_packets`): packet `i` of
+    /// `rays` against `p` into `out[i]`, eight lanes at a time where the
+    /// CPU allows.
+    fn batch(rays: &[Ray4], p: &Self::Packet, out: &mut [Self::Hit4]);
     /// The four answers of a packet.
     fn lanes(h: &Self::Hit4) -> [Self::Hit; 4];
     /// Per lane, whether there is a solution in `[t_min, t_max]` (a mask)
@@ -86,7 +90,7 @@ pub trait Primitive: Copy + core::fmt::Debug + PartialEq + Sized + 'static {
 }
 
 /// The kernel entry points of a [`Primitive`] impl ([`Primitive::reference`],
-/// `staged`, `textbook`, `plain`, `exact`, `x4`, `lanes`, `nearest4`), each
+/// `staged`, `textbook`, `plain`, `exact`, `x4`, `batch`, `lanes`, `nearest4`), each
 /// the function of the same role in the primitive's module: the modules
 /// `reference`, `textbook`, `plain`, `exact` and `x4` must be in scope
 /// where it is invoked.
@@ -110,6 +114,9 @@ macro_rules! kernels {
         }
         fn x4(ray: &$crate::ray4::Ray4, p: &Self::Packet) -> Self::Hit4 {
             x4::intersect(ray, p)
+        }
+        fn batch(rays: &[$crate::ray4::Ray4], p: &Self::Packet, out: &mut [Self::Hit4]) {
+            x4::intersect_packets(rays, p, out)
         }
         fn lanes(h: &Self::Hit4) -> [Self::Hit; 4] {
             h.lanes()
