@@ -37,3 +37,77 @@ macro_rules! packets_dispatch {
 }
 
 pub(crate) use packets_dispatch;
+
+/// The rays of [`every_copy_agrees!`]: seven packets from one point below
+/// the origin, fanning out, so that each primitive's test meets more than
+/// one class and an odd tail.
+#[cfg(test)]
+pub(crate) fn test_rays() -> Vec<crate::ray4::Ray4> {
+    let origin = glam::Vec3::new(0.1, -3.0, 0.0);
+    (0..7)
+        .map(|i| {
+            let d = [0, 1, 2, 3]
+                .map(|k| glam::Vec3::new(0.1 * (i + k) as f32 - 0.3, 1.0 - 0.2 * k as f32, 0.05));
+            crate::ray4::Ray4::from_rays(d.map(|d| crate::Ray::new(origin, d)))
+        })
+        .collect()
+}
+
+/// A test body: every copy of the batch `$packets_in` this CPU can run
+/// (pairs of [`F64x4`](crate::num::real::F64x4), pairs of AVX registers
+/// where it has AVX2, one AVX-512 register where it has AVX-512) gives, on
+/// [`test_rays`] against `$prim`, what the one-packet kernel `$one` gives,
+/// bit for bit, and the answers span at least two classes.
+#[cfg(test)]
+macro_rules! every_copy_agrees {
+    ($packets_in:ident, $one:ident, $prim:ident: $P:ty, $H:ty) => {{
+        use $crate::num::real::{F64x4, Pair};
+        use $crate::ray4::Ray4;
+        let rays = $crate::num::batch::test_rays();
+        let mut outs = vec![vec![$one(&rays[0], &$prim); rays.len()]];
+        $packets_in::<Pair<F64x4>>(&rays, &$prim, &mut outs[0]);
+        #[cfg(target_arch = "x86_64")]
+        {
+            use $crate::num::{
+                avx::{Avx2, Avx4},
+                avx512::{Avx8, Avx512},
+            };
+            #[target_feature(enable = "avx2,fma")]
+            fn pairs(_: Avx2, r: &[Ray4], x: &$P, o: &mut [$H]) {
+                $packets_in::<Pair<Avx4>>(r, x, o)
+            }
+            #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+            fn wide(_: Avx512, r: &[Ray4], x: &$P, o: &mut [$H]) {
+                $packets_in::<Avx8>(r, x, o)
+            }
+            if let Some(t) = Avx2::detect() {
+                let mut o = outs[0].clone();
+                // SAFETY: the token proves the features `pairs` needs.
+                unsafe { pairs(t, &rays, &$prim, &mut o) };
+                outs.push(o);
+            }
+            if let Some(t) = Avx512::detect() {
+                let mut o = outs[0].clone();
+                // SAFETY: the token proves the features `wide` needs.
+                unsafe { wide(t, &rays, &$prim, &mut o) };
+                outs.push(o);
+            }
+        }
+        let mut classes = std::collections::BTreeSet::new();
+        for (r, h) in outs.iter().flat_map(|out| rays.iter().zip(out)) {
+            let want = $one(r, &$prim).lanes();
+            assert!(
+                h.lanes()
+                    .iter()
+                    .zip(&want)
+                    .all(|(x, y)| $crate::hit::same_bits(x, y)),
+                "{r:?}"
+            );
+            classes.extend(want.map(|w| format!("{w:?}").chars().take(3).collect::<String>()));
+        }
+        assert!(classes.len() >= 2, "{classes:?}");
+    }};
+}
+
+#[cfg(test)]
+pub(crate) use every_copy_agrees;

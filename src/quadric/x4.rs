@@ -380,10 +380,6 @@ impl QuadricHit4 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::hit::same_bits;
-    #[cfg(target_arch = "x86_64")]
-    use crate::num::avx512::{Avx8, Avx512};
-    use crate::num::real::Pair;
 
     /// Every copy of the batch (pairs of [`F64x4`], and where the CPU has
     /// them pairs of AVX2 registers and AVX-512 registers, of which
@@ -395,48 +391,6 @@ mod tests {
             [-1.0, 0.0, 1.0, 1e-30]
                 .map(|j| Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, j])),
         );
-        let rays: Vec<Ray4> = (0..7)
-            .map(|i| {
-                let d = [0, 1, 2, 3].map(|k| {
-                    glam::Vec3::new(0.1 * (i + k) as f32 - 0.3, 1.0 - 0.2 * k as f32, 0.05)
-                });
-                Ray4::from_rays(d.map(|d| crate::Ray::new(glam::Vec3::new(0.1, -3.0, 0.0), d)))
-            })
-            .collect();
-        let mut outs = vec![vec![intersect_baseline(&rays[0], &q); rays.len()]];
-        packets_in::<Pair<F64x4>>(&rays, &q, &mut outs[0]);
-        #[cfg(target_arch = "x86_64")]
-        {
-            #[target_feature(enable = "avx2,fma")]
-            fn pairs(_: Avx2, r: &[Ray4], x: &Quadric4, o: &mut [QuadricHit4]) {
-                packets_in::<Pair<Avx4>>(r, x, o)
-            }
-            #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-            fn wide(_: Avx512, r: &[Ray4], x: &Quadric4, o: &mut [QuadricHit4]) {
-                packets_in::<Avx8>(r, x, o)
-            }
-            if let Some(t) = Avx2::detect() {
-                let mut o = outs[0].clone();
-                // SAFETY: the token proves the features `pairs` needs.
-                unsafe { pairs(t, &rays, &q, &mut o) };
-                outs.push(o);
-            }
-            if let Some(t) = Avx512::detect() {
-                let mut o = outs[0].clone();
-                // SAFETY: the token proves the features `wide` needs.
-                unsafe { wide(t, &rays, &q, &mut o) };
-                outs.push(o);
-            }
-        }
-        let mut classes = std::collections::BTreeSet::new();
-        for (r, h) in outs.iter().flat_map(|out| rays.iter().zip(out)) {
-            let want = intersect_baseline(r, &q).lanes();
-            assert!(
-                h.lanes().iter().zip(&want).all(|(x, y)| same_bits(x, y)),
-                "{r:?}"
-            );
-            classes.extend(want.map(|w| format!("{w:?}").chars().take(3).collect::<String>()));
-        }
-        assert!(classes.len() >= 2, "{classes:?}");
+        crate::num::batch::every_copy_agrees!(packets_in, intersect_baseline, q: Quadric4, QuadricHit4);
     }
 }

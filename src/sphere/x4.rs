@@ -443,8 +443,6 @@ pub fn intersect_slice(rays: &[crate::Ray], sphere: &Sphere) -> Vec<SphereHit> {
 mod tests {
     use super::*;
     use crate::hit::same_bits;
-    #[cfg(target_arch = "x86_64")]
-    use crate::num::avx512::{Avx8, Avx512};
     use crate::num::real::Pair;
 
     /// Every copy of the batch (pairs of [`F64x4`], pairs of AVX
@@ -456,49 +454,7 @@ mod tests {
         let s = Sphere4::from_spheres(
             [0.5, 1.0, 2.0, 1e-30].map(|r| Sphere::new(glam::Vec3::new(0.0, 0.5, 0.0), r)),
         );
-        let rays: Vec<Ray4> = (0..7)
-            .map(|i| {
-                let d = [0, 1, 2, 3].map(|k| {
-                    glam::Vec3::new(0.1 * (i + k) as f32 - 0.3, 1.0 - 0.2 * k as f32, 0.05)
-                });
-                Ray4::from_rays(d.map(|d| crate::Ray::new(glam::Vec3::new(0.1, -3.0, 0.0), d)))
-            })
-            .collect();
-        let mut outs = vec![vec![intersect_baseline(&rays[0], &s); rays.len()]];
-        packets_in::<Pair<F64x4>>(&rays, &s, &mut outs[0]);
-        #[cfg(target_arch = "x86_64")]
-        {
-            #[target_feature(enable = "avx2,fma")]
-            fn pairs(_: Avx2, r: &[Ray4], x: &Sphere4, o: &mut [SphereHit4]) {
-                packets_in::<Pair<Avx4>>(r, x, o)
-            }
-            #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-            fn wide(_: Avx512, r: &[Ray4], x: &Sphere4, o: &mut [SphereHit4]) {
-                packets_in::<Avx8>(r, x, o)
-            }
-            if let Some(t) = Avx2::detect() {
-                let mut o = outs[0].clone();
-                // SAFETY: the token proves the features `pairs` needs.
-                unsafe { pairs(t, &rays, &s, &mut o) };
-                outs.push(o);
-            }
-            if let Some(t) = Avx512::detect() {
-                let mut o = outs[0].clone();
-                // SAFETY: the token proves the features `wide` needs.
-                unsafe { wide(t, &rays, &s, &mut o) };
-                outs.push(o);
-            }
-        }
-        let mut classes = std::collections::BTreeSet::new();
-        for (r, h) in outs.iter().flat_map(|out| rays.iter().zip(out)) {
-            let want = intersect_baseline(r, &s).lanes();
-            assert!(
-                h.lanes().iter().zip(&want).all(|(x, y)| same_bits(x, y)),
-                "{r:?}"
-            );
-            classes.extend(want.map(|w| format!("{w:?}").chars().take(3).collect::<String>()));
-        }
-        assert!(classes.len() >= 2, "{classes:?}");
+        crate::num::batch::every_copy_agrees!(packets_in, intersect_baseline, s: Sphere4, SphereHit4);
     }
 
     /// Packets whose lanes all miss skip the roots, one packet at a time
