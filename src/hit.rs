@@ -181,6 +181,7 @@ impl Roots {
     /// ```
     /// assert_eq!(rayoracle::hit::Roots::one(3.0).as_slice(), &[3.0]);
     /// ```
+    #[inline]
     pub fn as_slice(&self) -> &[f32] {
         &self.vals[..self.len as usize]
     }
