@@ -70,32 +70,58 @@ pub fn intersect_shrunk(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, 
         return (SphereHit::None, Stage::Filter);
     }
     // An undecided class (a near or exact tangent) has no roots to try.
-    if k.two {
-        // The sorted roots first, as x4 does (two divisions rather than
-        // three); the quotient form where the root near 0 cancels.
-        let g = stages::sorted(k, shrink);
-        if certify(g.lo, g.r, g.a) && certify(g.hi, g.r, g.a) {
-            if needs_probe(&[], &[g.lo, g.hi]) && !subnormals_work() {
-                return (exact_stage(ray, sphere), Stage::Exact);
-            }
-            return (SphereHit::Two(g.lo as f32, g.hi as f32), Stage::Filter);
-        }
-        let f = stages::filter_from(k, shrink);
-        if certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
-            if needs_probe(&[], &[f.t0, f.t1]) && !subnormals_work() {
-                return (exact_stage(ray, sphere), Stage::Exact);
-            }
-            // Disjoint enclosures are in the exact order; overlapping ones
-            // round to the same f32.
-            let (t0, t1) = if f.t0 <= f.t1 {
-                (f.t0, f.t1)
-            } else {
-                (f.t1, f.t0)
-            };
-            return (SphereHit::Two(t0 as f32, t1 as f32), Stage::Filter);
-        }
+    // The classes go to the later stages by value, both masks known clear,
+    // so that the fast path tests them by branches and keeps the rest in
+    // registers, rather than store them all for a call it rarely makes.
+    if !k.two {
+        return later(ray, sphere, (o, d, c, r), k.open(), shrink);
     }
-    later(ray, sphere, (o, d, c, r), &k, shrink)
+    // The sorted roots first, as x4 does (two divisions rather than
+    // three); the quotient form where the root near 0 cancels.
+    let g = stages::sorted(k, shrink);
+    if certify(g.lo, g.r, g.a) && certify(g.hi, g.r, g.a) {
+        if needs_probe(&[], &[g.lo, g.hi]) && !subnormals_work() {
+            return (exact_stage(ray, sphere), Stage::Exact);
+        }
+        return (SphereHit::Two(g.lo as f32, g.hi as f32), Stage::Filter);
+    }
+    let f = stages::filter_from(k, shrink);
+    if certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
+        if needs_probe(&[], &[f.t0, f.t1]) && !subnormals_work() {
+            return (exact_stage(ray, sphere), Stage::Exact);
+        }
+        // Disjoint enclosures are in the exact order; overlapping ones
+        // round to the same f32.
+        let (t0, t1) = if f.t0 <= f.t1 {
+            (f.t0, f.t1)
+        } else {
+            (f.t1, f.t0)
+        };
+        return (SphereHit::Two(t0 as f32, t1 as f32), Stage::Filter);
+    }
+    uncertified(ray, sphere, shrink)
+}
+
+/// [`later`] for a line whose two roots the filter left undecided: the
+/// inputs widened and the classes formed again, rather than kept from the
+/// fast path, which would hold them there past the roots on every call.
+/// With this and the classes passed by value above, the kernels bench
+/// (4,096 primary rays, one `--quick` run each way) put the reference at
+/// 104.1 Mrays/s (criterion's median) and 107.1 (the fastest interleaved
+/// pass), against 89.2 and 90.4; `rayoracle report` (four runs each,
+/// alternated) kept every stiff sphere family within a few per cent of
+/// its time before.
+#[cold]
+#[inline(never)]
+fn uncertified(ray: &Ray, sphere: &Sphere, shrink: f64) -> (SphereHit, Stage) {
+    let (o, d, c, r) = widen(ray, sphere);
+    later(
+        ray,
+        sphere,
+        (o, d, c, r),
+        stages::classes(o, d, c, r, shrink),
+        shrink,
+    )
 }
 
 /// The stages after the filter: f64 arithmetic proven exact by the data's
@@ -117,7 +143,7 @@ pub(crate) fn escalate(ray: &Ray, sphere: &Sphere, env: bool) -> (SphereHit, Sta
     }
     let (o, d, c, r) = widen(ray, sphere);
     let k = stages::classes(o, d, c, r, 1.0);
-    later(ray, sphere, (o, d, c, r), &k, 1.0)
+    later(ray, sphere, (o, d, c, r), k, 1.0)
 }
 
 /// The line and the sphere in f64: `o`, `d`, `C` and `R`.
@@ -135,8 +161,9 @@ fn widen(ray: &Ray, sphere: &Sphere) -> Wide {
 }
 
 /// [`escalate`] on inputs already widened and probed, with the filter's
-/// classes `k` and the bounds of its stages multiplied by `shrink`; on a
-/// CPU with FMA ([`Fma`](crate::num::dd::Fma)), a copy compiled for it,
+/// classes `k` (by value: see [`uncertified`]) and the bounds of its
+/// stages multiplied by `shrink`; on a CPU with FMA
+/// ([`Fma`](crate::num::dd::Fma)), a copy compiled for it,
 /// whose double-word stage finds the products' errors by fused
 /// multiply-adds ([`Fused`](crate::num::dd::Fused)): the same exact pairs,
 /// so the same bits.
@@ -146,9 +173,10 @@ fn later(
     ray: &Ray,
     sphere: &Sphere,
     wide: Wide,
-    k: &stages::Classes<f64>,
+    k: stages::Classes<f64>,
     shrink: f64,
 ) -> (SphereHit, Stage) {
+    let k = &k;
     #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
     if let Some(fma) = Fma::detect() {
         #[target_feature(enable = "fma")]

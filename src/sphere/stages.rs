@@ -149,6 +149,19 @@ pub(crate) struct Classes<L: Real> {
     pub(crate) two: L::Mask,
 }
 
+impl Classes<f64> {
+    /// The same classes, with the class known to be open (neither mask
+    /// set), as the caller has just tested.
+    #[inline(always)]
+    pub(crate) fn open(self) -> Classes<f64> {
+        Classes {
+            none: false,
+            two: false,
+            ..self
+        }
+    }
+}
+
 #[inline(always)]
 pub(crate) fn classes<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Classes<L> {
     let Dots {
