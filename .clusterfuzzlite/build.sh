@@ -15,13 +15,21 @@ mkdir -p "$OUT"
 # Absolute, because the corpus zip below is written from inside the corpus dir.
 OUT=$(cd "$OUT" && pwd)
 if [ -n "${SANITIZER:-}" ] && [ "${SANITIZER}" != "none" ]; then
-  cargo fuzz build -O --sanitizer "$SANITIZER" ${CARGO_FUZZ_ARGS:-}
+  args=(--sanitizer "$SANITIZER" ${CARGO_FUZZ_ARGS:-})
 else
-  cargo fuzz build -O --sanitizer none
+  args=(--sanitizer none)
 fi
+# The binaries are those `cargo fuzz run` builds (.ci/run, fuzz/campaign):
+# optimised, with debug assertions and overflow checks (-O -a); the kernel
+# targets without the compare hooks, in their own target directory
+# (fuzz/kernel-targets), the parsing targets with them. So the fuzz step of
+# .ci/run rebuilds nothing.
 triple=$(rustc -vV | sed -n 's/^host: //p')
 for target in $(cargo fuzz list); do
-  cp "fuzz/target/$triple/release/$target" "$OUT/$target"
+  flags=$(fuzz/kernel-targets "$target")
+  dir=$(sed -n 's/.*--target-dir \([^ ]*\).*/\1/p' <<<"$flags")
+  (cd fuzz && cargo fuzz build -O -a "${args[@]}" $flags "$target")
+  cp "fuzz/${dir:-target}/$triple/release/$target" "$OUT/$target"
   if [ -d "fuzz/corpus/$target" ]; then
     (cd "fuzz/corpus/$target" && python3 -m zipfile -c "$OUT/${target}_seed_corpus.zip" .)
     test -s "$OUT/${target}_seed_corpus.zip"
