@@ -317,34 +317,29 @@ impl ExactTerms {
     }
 }
 
-/// The weight of the lowest set bit of a nonzero finite `x`, `2ᵉ` for
-/// `|x| = m·2ᵉ` with `m` odd, and `+∞` for 0 (which lies on every grid);
-/// meaningless, but harmless, for a non-finite `x`, whose terms make every
-/// sum NaN. Clearing the lowest set bit of `|x|`'s fraction takes `2ᵉ`
-/// away, and the difference is exact; where the fraction is 0, nothing is
-/// taken away, and `|x|`, a power of two, is its own lowest bit. On f32
-/// and with no branch or bit scan, so that [`grid`]'s sixteen inputs are
-/// taken four or eight at a time.
+/// The exponent of the lowest set bit of a nonzero finite `x`
+/// (`x = m·2ᵉ` with `m` odd), and a large number for 0 (which lies on every
+/// grid); meaningless, but harmless, for a non-finite `x`, whose terms
+/// make every sum NaN.
 #[inline(always)]
-fn low_bit(x: f32) -> f32 {
-    let b = x.to_bits() & !(1 << 31);
-    let f = b & ((1 << 23) - 1);
-    let v = f32::from_bits(b);
-    let d = v - f32::from_bits(b ^ (f & f.wrapping_neg()));
-    let low = if d == 0.0 { v } else { d };
-    if v == 0.0 { f32::INFINITY } else { low }
+fn low_bit(x: f64) -> i32 {
+    // Without a branch on 0, which the data's zero coefficients would
+    // mispredict: ±0 gives −1075 + 52 here, moved to 2000.
+    let b = x.to_bits() & !(1 << 63);
+    let m = (b & ((1 << 52) - 1)) | (1 << 52);
+    let low = (b >> 52) as i32 - 1075 + m.trailing_zeros() as i32;
+    low + 3023 * i32::from(b == 0)
 }
 
-/// A power of two `g` that divides every term `k·x·y` of α, β and γ, for
-/// f32 data (every value exact in f32, as everywhere in this module): with
+/// A power of two `g` that divides every term `k·x·y` of α, β and γ: with
 /// `2^κ` the least lowest set bit of the coefficients and `2^ν` that of
 /// the origin, the direction and 1, every term is a multiple of `2^(κ +
 /// 2ν)` (`ν ≤ 0`, and a term has at most two factors besides its
 /// coefficient; a zero factor makes the term 0, on every grid). The
-/// product of the three powers of two is exact, at least `2⁻¹⁴⁹·³`; it is
-/// kept within `[2⁻¹⁰⁰⁰, 2⁴⁰⁰]`, where the upper end only applies where
-/// every coefficient is 0 (then every term is, and any grid holds them) or
-/// not finite (then every sum is NaN), so that `g²` is a normal f64 too.
+/// exponent is at least `−149·3` for f32 data; it is capped at 400, which
+/// only applies where every coefficient is 0 (then every term is, and any
+/// grid holds them) or not finite (then every sum is NaN), so that `g²`
+/// is a normal f64 too.
 ///
 /// ```
 /// # use rayoracle::quadric::stages::grid;
@@ -355,17 +350,16 @@ fn low_bit(x: f32) -> f32 {
 #[doc(hidden)]
 #[inline(always)]
 pub fn grid(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> f64 {
-    let x = [
-        k[0], k[1], k[2], k[3], k[4], k[5], k[6], k[7], k[8], k[9], o[0], o[1], o[2], d[0], d[1],
-        d[2],
-    ];
-    let low = x.map(|v| low_bit(v as f32));
-    // The least, as `minss` takes it (a NaN is passed over).
-    let least = |v: &[f32], start: f32| v.iter().fold(start, |m, &x| if x < m { x } else { m });
-    let (kappa, nu) = (least(&low[..10], f32::INFINITY), least(&low[10..], 1.0));
-    let g = f64::from(kappa) * f64::from(nu) * f64::from(nu);
-    // `max` and `min` pass over a NaN.
-    g.max(2f64.powi(-1000)).min(2f64.powi(400))
+    let mut kappa = 2000;
+    for &c in k {
+        kappa = kappa.min(low_bit(c));
+    }
+    let mut nu = 0;
+    for &x in o.iter().chain(&d) {
+        nu = nu.min(low_bit(x));
+    }
+    let e = (kappa + 2 * nu).clamp(-1000, 400);
+    f64::from_bits(((1023 + e) as u64) << 52)
 }
 
 /// The second stage: α, β, γ and `β² − 4αγ` tracked for exactness
@@ -788,8 +782,9 @@ mod tests {
         }
     }
 
-    /// The lowest set bit: both zeros, the extremes of the range, and
-    /// every other kind of f32 value at random.
+    /// The lowest set bit of the values f32 data widens to: both zeros,
+    /// the extremes of the range, and every other kind of f32 value at
+    /// random, against a bit scan of the f32 encoding.
     #[test]
     fn low_bit_finds_the_lowest_set_bit() {
         let cases = [
@@ -802,34 +797,39 @@ mod tests {
             (f32::from_bits(1), -149),
             (-f32::from_bits(6), -148),
             (f32::MIN_POSITIVE, -126),
+            (0.0, 2000),
+            (-0.0, 2000),
         ];
         for (x, want) in cases {
-            assert_eq!(f64::from(low_bit(x)), pow2(want), "{x:e}");
-            assert_eq!(low_exponent(x), want, "{x:e}");
+            assert_eq!(low_bit(f64::from(x)), want, "{x:e}");
         }
-        assert_eq!(low_bit(0.0), f32::INFINITY);
-        assert_eq!(low_bit(-0.0), f32::INFINITY);
         let mut rng = SmallRng::seed_from_u64(0x10_b17);
         for _ in 0..100_000 {
             let x = f32::from_bits(
                 rng.random::<u32>() & !(0xff << 23) | rng.random_range(0..0xff) << 23,
             );
             if x != 0.0 {
-                assert_eq!(f64::from(low_bit(x)), pow2(low_exponent(x)), "{x:e}");
+                assert_eq!(low_bit(f64::from(x)), low_exponent(x), "{x:e}");
             }
         }
     }
 
     /// The grid is `2^(κ + 2ν)` with the exponents found by bit scans, on
-    /// f32 data of every magnitude, zeros and subnormals among it.
+    /// f32 data of every magnitude, zeros, subnormals and values just above
+    /// the least normal f32 among it (whose lowest bits are subnormal f32
+    /// weights); the same under flush-to-zero, in which the later stages
+    /// run, and under denormals-are-zero too where no input is subnormal
+    /// (a subnormal input sends the reference to the oracle there).
     #[test]
     fn grid_is_the_least_lowest_bits() {
+        type Case = ([f64; 10], [f64; 3], [f64; 3]);
         let mut rng = SmallRng::seed_from_u64(0x6_21d);
-        let f = |rng: &mut SmallRng| match rng.random_range(0..8) {
+        let f = |rng: &mut SmallRng| match rng.random_range(0..9) {
             0 => 0.0,
             1 => f64::from(f32::from_bits(rng.random_range(1..1 << 23))),
-            2 => 2f64.powi(rng.random_range(-149..128)),
-            3 => f64::from(rng.random_range(-64i32..64)),
+            2 => f64::from(f32::from_bits(rng.random_range(1 << 23..27 << 23))),
+            3 => 2f64.powi(rng.random_range(-149..128)),
+            4 => f64::from(rng.random_range(-64i32..64)),
             _ => {
                 let x = f32::from_bits(
                     rng.random::<u32>() & !(0xff << 23) | rng.random_range(0..0xff) << 23,
@@ -837,20 +837,47 @@ mod tests {
                 f64::from(x)
             }
         };
-        for _ in 0..20_000 {
-            let k: [f64; 10] = core::array::from_fn(|_| f(&mut rng));
-            let (o, d) = ([0; 3].map(|_| f(&mut rng)), [0; 3].map(|_| f(&mut rng)));
-            let scan = |x: f64| {
-                if x == 0.0 {
-                    2000
-                } else {
-                    low_exponent(x as f32)
+        let cases: Vec<Case> = (0..20_000)
+            .map(|_| {
+                let k: [f64; 10] = core::array::from_fn(|_| f(&mut rng));
+                (k, [0; 3].map(|_| f(&mut rng)), [0; 3].map(|_| f(&mut rng)))
+            })
+            .collect();
+        let want: Vec<f64> = cases
+            .iter()
+            .map(|(k, o, d)| {
+                let scan = |x: f64| {
+                    if x == 0.0 {
+                        2000
+                    } else {
+                        low_exponent(x as f32)
+                    }
+                };
+                let kappa = k.iter().map(|&c| scan(c)).min().unwrap();
+                let nu = o.iter().chain(d).map(|&x| scan(x)).min().unwrap().min(0);
+                pow2((kappa + 2 * nu).clamp(-1000, 400))
+            })
+            .collect();
+        let grids = |c: &[Case]| {
+            c.iter()
+                .map(|(k, o, d)| grid(k, *o, *d))
+                .collect::<Vec<_>>()
+        };
+        let check = |got: Vec<f64>, daz: bool, mode: &str| {
+            for ((c, g), w) in cases.iter().zip(got).zip(&want) {
+                let subnormal = |x: &f64| *x != 0.0 && x.abs() < f64::from(f32::MIN_POSITIVE);
+                if daz && c.0.iter().chain(&c.1).chain(&c.2).any(subnormal) {
+                    continue;
                 }
-            };
-            let kappa = k.iter().map(|&c| scan(c)).min().unwrap();
-            let nu = o.iter().chain(&d).map(|&x| scan(x)).min().unwrap().min(0);
-            let want = pow2((kappa + 2 * nu).clamp(-1000, 400));
-            assert_eq!(grid(&k, o, d), want, "{k:?} {o:?} {d:?}");
+                assert_eq!(g, *w, "{mode}: {c:?}");
+            }
+        };
+        check(grids(&cases), false, "default");
+        #[cfg(target_arch = "x86_64")]
+        for (ftz, daz) in [(true, false), (true, true)] {
+            let c = cases.clone();
+            let got = crate::num::certify::in_environment(ftz, daz, move || grids(&c));
+            check(got, daz, &format!("FTZ {ftz}, DAZ {daz}"));
         }
     }
 
