@@ -40,6 +40,14 @@
 //!   camera), one `black_box`ed call per ray.
 //! * `parry3d/per-ray` (sphere, plane): `Ball::cast_local_ray` and
 //!   `HalfSpace::cast_local_ray`, one `black_box`ed call per ray.
+//!
+//! The scalar closures are `#[inline(always)]`, as a kernel called
+//! directly in a renderer's loop is inlined (`intersect` carries
+//! `#[inline]`): each runs inlined into the loop over the rays, with the
+//! primitive's loop-invariant work hoisted out of it. Without that, the
+//! optimiser inlines a closure by its size alone: the plain variant's, and
+//! not the reference's, so the comparison would be of call overheads as
+//! much as of kernels.
 
 use criterion::{BenchmarkId, Criterion, Throughput};
 use glam::Vec3;
@@ -379,7 +387,9 @@ fn benches(c: &mut Criterion) -> (Vec<(String, &'static str, Passes)>, bool) {
             name,
             set,
             s,
+            #[inline(always)]
             |r, s| sphere::reference::intersect(r, s).nearest(0.0, f32::INFINITY),
+            #[inline(always)]
             |r, s| sphere::plain::intersect(r, s).nearest(0.0, f32::INFINITY),
             |r| {
                 let (m, t) = sphere::x4::intersect(r, &s4).nearest(t_min, t_max);
@@ -408,7 +418,9 @@ fn benches(c: &mut Criterion) -> (Vec<(String, &'static str, Passes)>, bool) {
         "plane",
         &plane_set,
         p,
+        #[inline(always)]
         |r, p| plane::reference::intersect(r, p).nearest(0.0, f32::INFINITY),
+        #[inline(always)]
         |r, p| plane::plain::intersect(r, p).nearest(0.0, f32::INFINITY),
         |r| {
             let (m, t) = plane::x4::intersect(r, &p4).nearest(t_min, t_max);
@@ -436,7 +448,9 @@ fn benches(c: &mut Criterion) -> (Vec<(String, &'static str, Passes)>, bool) {
         "quadric",
         &quadric_set,
         q,
+        #[inline(always)]
         |r, q| quadric::reference::intersect(r, q).nearest(0.0, f32::INFINITY),
+        #[inline(always)]
         |r, q| quadric::plain::intersect(r, q).nearest(0.0, f32::INFINITY),
         |r| {
             let (m, t) = quadric::x4::intersect(r, &q4).nearest(t_min, t_max);
