@@ -2,10 +2,10 @@
 //!
 //! Every kernel evaluates in stages, each certifying only what it can
 //! prove and passing the rest on: a filter in f64 with a bound from
-//! magnitude sums (written once for one lane or four; the x4 kernels of
-//! the plane and the sphere first run a variant whose longest chain of
+//! magnitude sums (written once for one lane or four; the plane's kernels
+//! and the sphere's x4 kernels first run a variant whose longest chain of
 //! dependent operations is shorter, and the full filter only for the
-//! lanes it leaves: `plane::stages::filter_direct`,
+//! lanes it leaves: `plane::stages::filter_relative`,
 //! `sphere::stages::filter_sorted`); the filter's
 //! arithmetic checked to be exact, operation by operation (which settles
 //! the exact zeros of small-integer and dyadic data); a tight stage in a

@@ -50,6 +50,14 @@ fn w(v: Vec3) -> [f64; 3] {
     v.to_array().map(f64::from)
 }
 
+fn plane_first(c: &Case, s: f64) -> Option<Answer> {
+    let Case::Plane(r, p) = c else { return None };
+    let (o, d, a, n) = (w(r.origin), w(r.dir), w(p.point), w(p.normal));
+    let f = plane::stages::filter_relative(o, d, a, n, s);
+    let (certified, end) = rayoracle::num::certify::certify_relative(f.t, f.r);
+    (f.hit && certified).then(|| answer(&plane::PlaneHit::Hit(end as f32)))
+}
+
 fn plane_tight(c: &Case, s: f64) -> Option<Answer> {
     let Case::Plane(r, p) = c else { return None };
     let (o, d, a, n) = (w(r.origin), w(r.dir), w(p.point), w(p.normal));
@@ -80,7 +88,12 @@ fn quadric_double_word(c: &Case, s: f64) -> Option<Answer> {
     quadric::stages::double_word(&k, w(r.origin), w(r.dir), s).map(|h| answer(&h))
 }
 
-const STAGES: [Staged; 5] = [
+const STAGES: [Staged; 6] = [
+    Staged {
+        kind: "plane",
+        name: "first",
+        run: plane_first,
+    },
     Staged {
         kind: "plane",
         name: "tight",
@@ -116,7 +129,8 @@ const STAGES: [Staged; 5] = [
 /// roundings, so only where the stage's arithmetic cancels; the plane's
 /// double-word stage, whose sums are exact or within a few `u`, is never
 /// wrong that way, and is not listed.
-const CAUGHT_AT: [(&str, f64); 5] = [
+const CAUGHT_AT: [(&str, f64); 6] = [
+    ("bounds/plane/first", 1.0 / 16.0),
     ("bounds/plane/tight", 0.125),
     ("bounds/sphere/tight", 1.0 / 16.0),
     ("bounds/sphere/compensated", 1.0 / 32.0),
@@ -159,7 +173,7 @@ impl Staged {
 }
 
 /// Planes whose `(a − o)·n = L + sm − L` rounds once, in `fl(L + sm)`,
-/// by up to `2⁻²³`, then cancels to `sm`, and `d·n = k ∈ [1, 2)`: the
+/// by up to `ulp(L)/2`, then cancels to `sm`, and `d·n = k ∈ [1, 2)`: the
 /// root `sm/k` is near 10, where f32 rounding midpoints are `2⁻²⁰` apart,
 /// so one seed in thirty or so has its computed root across one from the
 /// exact root. (With `k` a power of two the midpoints would lie on the
@@ -171,6 +185,28 @@ fn plane_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
             let k = mant(rng, 0);
             let ray = Ray::new(Vec3::ZERO, Vec3::new(k, 0.0, 0.0));
             Case::Plane(ray, Plane::new(Vec3::new(l, s, -l), Vec3::new(1.0, m, 1.0)))
+        })
+        .collect()
+}
+
+/// Planes for the first pass, whose sums cancel by less than `2¹⁰`:
+/// with `o = (−x, ε, 0)`, `d = (0, 1, 0)`, `a = (C, 2⁻²⁴, −Ck)` and `n =
+/// (k, k, 1)`, `d·n = k` (odd, so that the root's f32 rounding midpoints
+/// do not lie on the grid of its numerator's roundings) and `(a − o)·n =
+/// (C + x)k + (2⁻²⁴ − ε)k − Ck`: the root is `x + 2⁻²⁴ − ε`, a midpoint
+/// moved by `ε` (`2⁻⁵⁵` to `2⁻⁴⁵`), while `(C + x)k` rounds by up to
+/// `2ᵉ⁻⁵²` for `C = 2ᵉ` (`e` from 4 to 9), enough to cross it.
+fn plane_first_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
+    (0..n)
+        .map(|_| {
+            let x = mant(rng, 0);
+            let k = f32::from_bits(mant(rng, 0).to_bits() | 1);
+            let c = 2f32.powi(rng.random_range(4..10));
+            let (e, sign) = (rng.random_range(-55..-45), rng.random::<bool>());
+            let eps = if sign { mant(rng, e) } else { -mant(rng, e) };
+            let ray = Ray::new(Vec3::new(-x, eps, 0.0), Vec3::Y);
+            let plane = Plane::new(Vec3::new(c, 2f32.powi(-24), -c * k), Vec3::new(k, k, 1.0));
+            Case::Plane(ray, plane)
         })
         .collect()
 }
@@ -240,9 +276,10 @@ fn committed() -> Vec<(String, Case)> {
 /// The seeds of a stage: generated, the stiff catalogue's cases of its
 /// kind, and the committed cases of every stage of that kind.
 fn seeds(st: &Staged, rng: &mut SmallRng, n: usize) -> Vec<Case> {
-    let mut out = match st.kind {
-        "plane" => [plane_seeds(rng, n), bounds_search::plane_seeds(rng, n)].concat(),
-        "sphere" => [sphere_seeds(rng, n), bounds_search::sphere_seeds(rng, n)].concat(),
+    let mut out = match (st.kind, st.name) {
+        ("plane", "first") => plane_first_seeds(rng, n),
+        ("plane", _) => [plane_seeds(rng, n), bounds_search::plane_seeds(rng, n)].concat(),
+        ("sphere", _) => [sphere_seeds(rng, n), bounds_search::sphere_seeds(rng, n)].concat(),
         _ => [quadric_seeds(rng, n), bounds_search::quadric_seeds(rng, n)].concat(),
     };
     let cat = rayoracle::report::Catalogue::builtin().expect("the built-in catalogue");

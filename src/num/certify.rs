@@ -50,9 +50,48 @@ pub const SLACK: f64 = 1.0 + 1.0 / (1u64 << 30) as f64;
 /// ```
 #[inline(always)]
 pub fn certify<L: Real>(t: L, r: L, a: L) -> L::Mask {
+    certify_end(t, r, a).0
+}
+
+/// [`certify`], and the first end of the enclosure, which rounds to
+/// `t`'s `f32` wherever the mask is set: a caller that narrows it, rather
+/// than `t`, shares the conversion [`certify`] makes anyway.
+///
+/// ```
+/// use rayoracle::num::certify::{certify, certify_end};
+/// let (ok, end) = certify_end(-1.0 / 3.0, 2f64.powi(-40), 1e-15);
+/// assert!(ok && ok == certify(-1.0 / 3.0, 2f64.powi(-40), 1e-15));
+/// assert_eq!(end as f32, -1.0f32 / 3.0);
+/// ```
+#[inline(always)]
+pub fn certify_end<L: Real>(t: L, r: L, a: L) -> (L::Mask, L) {
     let (one, w) = (L::splat(1.0), r + L::splat(2f64.powi(-51)));
     let a = a.copysign(t);
-    L::same_f32(t * (one - w) - a, t * (one + w) + a)
+    let lo = t * (one - w) - a;
+    (L::same_f32(lo, t * (one + w) + a), lo)
+}
+
+/// [`certify_end`] with a relative bound alone, `e = |t|·r`: the ends are
+/// `t(1 − w)` and `t(1 + w)`, two products after `t`. `t` must be finite
+/// where the caller uses the mask (an infinite `t` has ends that round
+/// alike).
+///
+/// ```
+/// use rayoracle::num::certify::{certify, certify_relative};
+/// let (ok, end) = certify_relative(1.0 / 3.0, 2f64.powi(-40));
+/// assert!(ok && end as f32 == 1.0f32 / 3.0);
+/// assert_eq!(certify_relative(0.1, 2f64.powi(-30)).0, certify(0.1, 2f64.powi(-30), 0.0));
+/// // An exact 0 certifies, with its sign.
+/// assert_eq!(certify_relative(0.0, 2f64.powi(-30)), (true, 0.0));
+/// let mid = 1.0 + f32::EPSILON as f64 / 2.0;
+/// assert!(!certify_relative(mid, 2f64.powi(-50)).0);
+/// assert!(!certify_relative(f64::NAN, 0.0).0);
+/// ```
+#[inline(always)]
+pub fn certify_relative<L: Real>(t: L, r: L) -> (L::Mask, L) {
+    let (one, w) = (L::splat(1.0), r + L::splat(2f64.powi(-51)));
+    let lo = t * (one - w);
+    (L::same_f32(lo, t * (one + w)), lo)
 }
 
 /// The bound on a quotient, in the two parts [`certify`] takes. For `t̂ =

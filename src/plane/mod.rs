@@ -19,9 +19,13 @@
 //! [`reference::intersect`](mod@reference) and [`x4`] return the exact class
 //! and the root correctly rounded to `f32`, for every finite input: the
 //! [filter](stages) evaluates both dot products in f64 with a proven error
-//! bound and certifies what the bound decides; a line parallel in exact
-//! arithmetic but not term by term, or a root too close to a rounding
-//! boundary, goes to the exact oracle ([`exact`]).
+//! bound and certifies what the bound decides. Its first pass
+//! ([`stages::filter_relative`]) bounds the root relatively by a constant
+//! wherever neither sum cancels by `2¹⁰` or more, so that nothing but the
+//! certificate waits on the division; the full bound takes the rest. A
+//! line parallel in exact arithmetic but not term by term, or a root too
+//! close to a rounding boundary, goes on to the later [stages](stages)
+//! and, last, to the exact oracle ([`exact`]).
 
 pub mod exact;
 pub mod plain;

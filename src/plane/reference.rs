@@ -5,7 +5,9 @@
 use super::{Plane, PlaneHit, exact, stages};
 use crate::Ray;
 use crate::hit::Intersection;
-use crate::num::certify::{certify, denormals_are_zero, flush_prone, needs_probe, subnormals_work};
+use crate::num::certify::{
+    certify, certify_relative, denormals_are_zero, flush_prone, needs_probe, subnormals_work,
+};
 use crate::stage::Stage;
 
 /// Intersects a line with a plane: the exact class over `t ∈ ℝ`, and the
@@ -47,21 +49,34 @@ pub fn intersect_staged(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
     // The environment meets an input only through DAZ, and a result only
-    // through FTZ where it is subnormal ([`needs_probe`]): the inputs are
-    // scanned only under DAZ, and the register read only for such a
-    // result.
-    let inputs = inputs(ray, plane);
-    if denormals_are_zero() && needs_probe(&inputs, &[]) {
+    // through FTZ where it is subnormal ([`needs_probe`]): under DAZ, and
+    // for a root that is subnormal, the answer comes from the cold path,
+    // which scans the inputs and reads the register.
+    if denormals_are_zero() && needs_probe(&inputs(ray, plane), &[]) {
         return (exact_stage(ray, plane), Stage::Exact);
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
-    // The direct bound first, as x4 does: three operations after the
-    // division; the full quotient bound only for lines near parallel.
-    let mut f = stages::filter_direct(o, d, a, n, shrink);
-    if !f.hit {
-        f = stages::filter(o, d, a, n, shrink);
+    // The first pass, whose bound needs nothing after the division; the
+    // full filter only for what it leaves.
+    let f = stages::filter_relative(o, d, a, n, shrink);
+    let (certified, end) = certify_relative(f.t, f.r);
+    if f.hit & certified && !needs_probe(&[], &[f.t]) {
+        return (PlaneHit::Hit(end as f32), Stage::Filter);
     }
+    filter_then_escalate(ray, plane, shrink)
+}
+
+/// The full [filter](stages::filter), for a line the first pass leaves
+/// (sums that cancel, a parallel line, a root near a rounding boundary or
+/// subnormal), then the later stages. The inputs are known to stand: DAZ
+/// is off or none is subnormal.
+#[cold]
+#[inline(never)]
+fn filter_then_escalate(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
+    let f = stages::filter(o, d, a, n, shrink);
     if f.hit && certify(f.t, f.r, f.a) {
         if needs_probe(&[], &[f.t]) && !subnormals_work() {
             return (exact_stage(ray, plane), Stage::Exact);
@@ -72,7 +87,6 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
     } else if f.in_plane {
         (PlaneHit::InPlane, Stage::Filter)
     } else {
-        // The inputs were probed above.
         escalate_shrunk(ray, plane, shrink, false)
     }
 }

@@ -27,6 +27,14 @@
 //! line in the plane. A root exactly 0 (`m_num = 0`) is `+0`, as the oracle
 //! rounds it. The rest, such as a line parallel in exact arithmetic but not
 //! term by term, goes to the next stage.
+//!
+//! # Two passes
+//!
+//! Both kernels first run [`filter_relative`]: where neither sum cancels
+//! by a factor of [`K`] or more, the bound above becomes a constant
+//! relative to `t̂`, and nothing but the certificate's two products waits
+//! on the division. [`filter`], with the full quotient bound, takes the
+//! lines it leaves.
 
 use super::PlaneHit;
 use crate::num::certify::{SLACK, U, quotient_bound};
@@ -76,59 +84,113 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) 
     }
 }
 
-/// [`filter`] with the root's bound in a form that waits less on the
-/// quotient, for the x4 kernels: certified only where `x = E_den/|d̂en| ≤
-/// 2⁻¹⁰`, which leaves out lines within about `2⁻⁴¹` of parallel (those go
-/// to the scalar stages). There `1/(1 − x) ≤ 1 + 2⁻⁹ = G`, and the
-/// [module](self)'s bound, with `x|t̂| ≤ E_den|n̂um|/d̂en²` (to the
-/// roundings of `t̂` and of the reciprocal, which the slack covers),
-/// becomes `e = 6u|t̂| + G·|1/d̂en|·(E_den|n̂um|·|1/d̂en| + E_num)`: after
-/// the reciprocal, three operations rather than the ten of
-/// [`quotient_bound`].
+/// The largest cancellation the [first pass](filter_relative) accepts in
+/// either sum, `K = 2¹⁰`: a sum's magnitude sum `m̂` may be up to `K` times
+/// its value.
+pub const K: f64 = 1024.0;
+
+/// The first pass of both kernels: the filter's sums, and the root `t̂ =
+/// fl(n̂um/d̂en)` with a bound relative to it, where neither sum cancels by
+/// a factor of [`K`] or more. No part of the bound waits on the
+/// division: after it come the two products of
+/// [`certify_relative`](crate::num::certify::certify_relative) and
+/// nothing else.
 ///
-/// The product `E_den|n̂um|/d̂en²` may underflow. A nonzero `n̂um` is at
-/// least `2⁻³⁵⁰` (a sum of f64 values of at least `2⁻²⁹⁸`) and `|d̂en| ≤
-/// 2²⁵⁸`, so a nonzero `t̂` is at least `2⁻⁶⁰⁸` and `6u|t̂|` at least
-/// `2⁻⁶⁵⁹`: what an underflow loses (below `2⁻¹⁰²²`) is far inside the
-/// slack of `e`. A zero `n̂um` makes `E_num` and the product 0 exactly.
+/// # The bound
+///
+/// In the notation of the [module](self), with `m̂` the computed
+/// magnitude sums (within `γ₂` of the exact ones), `|n̂um − num| ≤
+/// γ₄(1 + γ₂)m̂_num < 4.01u m̂_num` and `|d̂en − den| ≤ γ₂(1 + γ₂)m̂_den <
+/// 2.01u m̂_den`. Where `m̂_den < K|d̂en|` and `m̂_num < K|n̂um|` or
+/// `m̂_num = 0`:
+///
+/// * `x = E_den/|d̂en| < 2.01uK < 1`: one hit, certain;
+/// * `E_num/|d̂en| < 4.01uK|n̂um/d̂en|`, so the quotient's bound of the
+///   module is at most `|n̂um/d̂en|(2.01uK + 4.01uK)/(1 − x) <
+///   6.03uK|n̂um/d̂en|`;
+/// * the division rounds once, `|t̂ − n̂um/d̂en| ≤ u|n̂um/d̂en|`, and
+///   `|n̂um/d̂en| ≤ (1 + 2u)|t̂|`.
+///
+/// So `|t̂ − t| < (6.03K + 1.01)u|t̂|`, and the pass uses **`r = 13Ku`**,
+/// over twice the proof's constant: a constant, exact in f64, which no
+/// rounding of its own evaluation touches. `K|d̂en|` is exact (a scaling
+/// by a power of two, far from overflow). `m̂_num = 0` makes every term,
+/// and so the exact `num`, 0 (a nonzero `ŵᵢnᵢ` is at least `2⁻²⁹⁸`): the
+/// root is exactly 0, and `t̂ = ±0 + 0 = +0`, as the oracle rounds it.
+///
+/// A parallel line (`m̂_den = 0`), a NaN input and an infinite one fail
+/// the comparisons (`0 > 0`, `∞ > ∞` and any comparison with NaN are
+/// false), so no infinite or NaN `t̂` is certified. Every line the pass
+/// leaves goes to [`filter`]'s full quotient bound.
 ///
 /// ```
-/// use rayoracle::num::certify::certify;
-/// use rayoracle::plane::stages::{filter, filter_direct};
+/// use rayoracle::num::certify::certify_relative;
+/// use rayoracle::plane::stages::{filter, filter_relative};
 /// let (o, d, a, n) = ([0.0; 3], [0.1, 0.0, 3.0], [0.0, 0.0, 1.0], [0.0, 0.3, 1.0]);
-/// let (f, g) = (filter::<f64>(o, d, a, n, 1.0), filter_direct::<f64>(o, d, a, n, 1.0));
-/// assert!(g.hit && g.t == f.t && certify(g.t, g.r, g.a));
-/// // d·n = (1 + 2⁻²³)(1 − 2⁻²³) − 1 = −2⁻⁴⁶, parallel but for 2⁻⁴⁷ of
-/// // the terms: the class is certain, the quotient is left to `filter`.
+/// let (f, g) = (filter::<f64>(o, d, a, n, 1.0), filter_relative::<f64>(o, d, a, n, 1.0));
+/// assert!(g.hit && g.t == f.t && certify_relative(g.t, g.r).0);
+/// // d·n = (1 + 2⁻²³)(1 − 2⁻²³) − 1 = −2⁻⁴⁶ cancels 47 bits: the full
+/// // filter certifies the hit, the first pass leaves it.
 /// let e = 2f64.powi(-23);
 /// let (d, n) = ([1.0 + e, -1.0, 0.0], [1.0 - e, 1.0, 0.0]);
-/// assert!(filter::<f64>(o, d, a, n, 1.0).hit && !filter_direct::<f64>(o, d, a, n, 1.0).hit);
+/// assert!(filter::<f64>(o, d, a, n, 1.0).hit && !filter_relative::<f64>(o, d, a, n, 1.0).hit);
 /// ```
 #[inline(always)]
-pub fn filter_direct<L: Real>(
+pub fn filter_relative<L: Real>(
     o: [L; 3],
     d: [L; 3],
     a: [L; 3],
     n: [L; 3],
     shrink: f64,
-) -> Filtered<L> {
-    let x = sums(o, d, a, n, shrink);
-    let g = L::splat((1.0 + 2f64.powi(-9)) * SLACK);
-    let ia = x.inv.abs();
-    Filtered {
-        hit: x.den.abs().gt(x.e_den * L::splat(1024.0)),
-        parallel: x.parallel,
-        in_plane: x.in_plane,
-        t: x.t,
-        r: L::splat(6.0 * U * shrink),
-        a: ia * (x.e_den * g * x.num.abs() * ia + x.e_num * g),
+) -> Relative<L> {
+    let x = terms(o, d, a, n);
+    let k = L::splat(K);
+    // K|n̂um| + η > m̂_num: η = 2⁻¹⁰⁷⁴ is lost in any nonzero K|n̂um| (at
+    // least 2⁻³⁴⁰), and makes 0 > 0 true where both are 0.
+    let eta = L::splat(f64::from_bits(1));
+    Relative {
+        hit: (k * x.den.abs()).gt(x.m_den) & (k * x.num.abs() + eta).gt(x.m_num),
+        t: x.num / x.den + L::splat(0.0),
+        r: L::splat(13.0 * K * U * shrink),
     }
 }
 
-/// What both filters share: the sums, their bounds, the certified
-/// parallel classes, and the quotient.
-struct Sums<L: Real> {
+/// The [first pass](filter_relative)'s result.
+#[derive(Clone, Copy, Debug)]
+pub struct Relative<L: Real> {
+    /// Certified: one hit, with `t`'s error at most `|t|·r`; the root
+    /// still needs [`certify_relative`](crate::num::certify::certify_relative).
+    pub hit: L::Mask,
+    /// `num/den`, `+0` for an exact 0.
+    pub t: L,
+    /// The bound on `t`'s error, relative to `|t|`.
+    pub r: L,
+}
+
+/// The sums and their magnitude sums: `num = Σŵᵢnᵢ`, `den = Σdᵢnᵢ`.
+struct Terms<L: Real> {
     num: L,
+    den: L,
+    m_num: L,
+    m_den: L,
+}
+
+#[inline(always)]
+fn terms<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Terms<L> {
+    let w = [a[0] - o[0], a[1] - o[1], a[2] - o[2]];
+    let wn = [w[0] * n[0], w[1] * n[1], w[2] * n[2]];
+    let dn = [d[0] * n[0], d[1] * n[1], d[2] * n[2]];
+    Terms {
+        num: wn[0] + wn[1] + wn[2],
+        den: dn[0] + dn[1] + dn[2],
+        m_num: wn[0].abs() + wn[1].abs() + wn[2].abs(),
+        m_den: dn[0].abs() + dn[1].abs() + dn[2].abs(),
+    }
+}
+
+/// [`filter`]'s sums, their bounds, the certified parallel classes, and
+/// the quotient.
+struct Sums<L: Real> {
     den: L,
     e_num: L,
     e_den: L,
@@ -142,18 +204,16 @@ struct Sums<L: Real> {
 fn sums<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) -> Sums<L> {
     let k = |x: f64| L::splat(x * U * shrink);
     let zero = L::splat(0.0);
-    let w = [a[0] - o[0], a[1] - o[1], a[2] - o[2]];
-    let wn = [w[0] * n[0], w[1] * n[1], w[2] * n[2]];
-    let dn = [d[0] * n[0], d[1] * n[1], d[2] * n[2]];
-    let num = wn[0] + wn[1] + wn[2];
-    let den = dn[0] + dn[1] + dn[2];
-    let m_num = wn[0].abs() + wn[1].abs() + wn[2].abs();
-    let m_den = dn[0].abs() + dn[1].abs() + dn[2].abs();
+    let Terms {
+        num,
+        den,
+        m_num,
+        m_den,
+    } = terms(o, d, a, n);
     let (e_num, e_den) = (k(8.0) * m_num, k(4.0) * m_den);
     let den_zero = m_den.eq(zero);
     let inv = L::splat(1.0) / den;
     Sums {
-        num,
         den,
         e_num,
         e_den,

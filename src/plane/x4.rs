@@ -5,7 +5,9 @@
 use super::{Plane, PlaneHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
-use crate::num::certify::{certify, flush_prone4, results_stand, subnormals_work};
+use crate::num::certify::{
+    certify_end, certify_relative, flush_prone4, results_stand, subnormals_work,
+};
 use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::class::{ALL, NONE, ONE};
 use crate::ray4::{Ray4, gather3, scatter3};
@@ -74,8 +76,9 @@ pub struct PlaneHit4 {
 }
 
 /// Intersects four lines with four planes, lane by lane: the filter on
-/// four f64 lanes, with the root's bound of [`stages::filter_direct`], and
-/// the scalar stages for any lane it leaves undecided, so every lane equals
+/// four f64 lanes, first with the root's bound of
+/// [`stages::filter_relative`], then, for a packet with a lane it leaves,
+/// with [`stages::filter`]'s, and the scalar stages for any lane left undecided, so every lane equals
 /// [`super::reference::intersect`] bit for bit.
 ///
 /// ```
@@ -181,47 +184,30 @@ fn packets_in<W: Real8>(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
     }
 }
 
-/// What the lanes decide, before any conversion.
+/// What the first pass decides, before any conversion: the hits it
+/// certified, and where it did, a value that rounds to the root's `f32`.
 struct Decided<L: Real> {
     hit: L::Mask,
-    parallel: L::Mask,
-    done: L::Mask,
-    /// The root, NaN where there is none.
     t: L,
 }
 
 impl<W: Real8> Decided<W> {
     #[inline(always)]
     fn halves(self) -> [Decided<W::Half>; 2] {
-        let ([h0, h1], [p0, p1]) = (W::mask_halves(self.hit), W::mask_halves(self.parallel));
-        let ([d0, d1], [t0, t1]) = (W::mask_halves(self.done), self.t.halves());
-        [
-            Decided {
-                hit: h0,
-                parallel: p0,
-                done: d0,
-                t: t0,
-            },
-            Decided {
-                hit: h1,
-                parallel: p1,
-                done: d1,
-                t: t1,
-            },
-        ]
+        let ([h0, h1], [t0, t1]) = (W::mask_halves(self.hit), self.t.halves());
+        [Decided { hit: h0, t: t0 }, Decided { hit: h1, t: t1 }]
     }
 }
 
-/// The filter and [`certify`] over any [`Real`].
+/// The first pass ([`stages::filter_relative`]) and its certificate
+/// over any [`Real`].
 #[inline(always)]
 fn decide<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Decided<L> {
-    let f = stages::filter_direct(o, d, a, n, 1.0);
-    let hit = f.hit & certify(f.t, f.r, f.a);
+    let f = stages::filter_relative(o, d, a, n, 1.0);
+    let (certified, end) = certify_relative(f.t, f.r);
     Decided {
-        hit,
-        parallel: f.parallel,
-        done: hit | f.parallel | f.in_plane,
-        t: L::select(hit, f.t, L::splat(f64::NAN)),
+        hit: f.hit & certified,
+        t: end,
     }
 }
 
@@ -242,14 +228,47 @@ fn finish<L: Real4>(
             t,
         };
     }
-    let (h, par) = (L::mask_i32(x.hit), L::mask_i32(x.parallel));
+    finish_full(L::mask_i32(x.hit), t, env, ray, p)
+}
+
+/// [`finish`] for a packet with a lane the first pass left (`hit` the
+/// lanes it certified, with their roots in `t`): the full filter
+/// ([`stages::filter`]) on the packet, on the baseline lanes (the same
+/// bits on any), then the scalar stages for what it leaves.
+#[cold]
+#[inline(never)]
+fn finish_full(
+    hit: i32x4,
+    t: f32x4,
+    env: impl Fn(bool) -> bool,
+    ray: &Ray4,
+    p: &Plane4,
+) -> PlaneHit4 {
+    let w = F64x4::widen;
+    let (o, d, a, n) = (
+        ray.origin.map(w),
+        ray.dir.map(w),
+        p.point.map(w),
+        p.normal.map(w),
+    );
+    let f = stages::filter(o, d, a, n, 1.0);
+    let (certified, end) = certify_end(f.t, f.r, f.a);
+    let m = F64x4::mask_i32;
+    // Where both passes certify a hit, both give the one correctly rounded
+    // root; a hit of the first pass is never parallel (its d·n cancels
+    // less than K times, so is not 0).
+    let h = hit | m(f.hit & certified);
+    let t = hit.bitselect(cast(t), cast(end.narrow()));
+    let t: f32x4 = cast(h.bitselect(t, cast(f32x4::splat(f32::NAN))));
+    let par = m(f.parallel);
+    let done = h | par | m(f.in_plane);
     // ONE where hit, NONE where parallel (never both), else ALL.
     let k = i32x4::splat;
     let class = k(ALL) + (h & k(ONE - ALL)) + (par & k(NONE - ALL));
-    if L::all(x.done) && env(flush_prone4(t)) {
+    if done.all() && env(flush_prone4(t)) {
         PlaneHit4 { class, t }
     } else {
-        PlaneHit4::settle([class, cast(t)], L::mask_i32(x.done), ray, p)
+        PlaneHit4::settle([class, cast(t)], done, ray, p)
     }
 }
 
@@ -347,11 +366,11 @@ mod tests {
         crate::num::batch::every_copy_agrees!(packets_in, intersect_baseline, p: Plane4, PlaneHit4);
     }
 
-    /// A line within `2⁻⁴⁶` of parallel: the class is certain, but the
-    /// x4 filter leaves its quotient to the scalar stages, which give the
-    /// reference's root.
+    /// A line within `2⁻⁴⁶` of parallel: the first pass leaves it, the
+    /// full filter certifies its hit, and the packet gives the
+    /// reference's answers.
     #[test]
-    fn nearly_parallel_lanes_go_to_the_scalar_stages() {
+    fn nearly_parallel_lanes_go_to_the_full_filter() {
         let e = f32::EPSILON;
         let p = Plane::new(
             glam::Vec3::new(0.0, 0.0, 1.0),
@@ -372,12 +391,10 @@ mod tests {
             p4.point.map(w),
             p4.normal.map(w),
         );
-        let (plain, direct) = (
-            stages::filter(o, d, a, n, 1.0),
-            stages::filter_direct(o, d, a, n, 1.0),
-        );
-        assert_eq!(plain.hit.lanes(), [true, false, true, true]);
-        assert_eq!(direct.hit.lanes(), [false, false, true, true]);
+        let (first, full) = (decide(o, d, a, n), stages::filter(o, d, a, n, 1.0));
+        assert_eq!(first.hit.lanes(), [false, false, true, true]);
+        assert_eq!(full.hit.lanes(), [true, false, true, true]);
+        assert_eq!(full.in_plane.lanes(), [false, true, false, false]);
         let want = rays.map(|r| reference::intersect(&r, &p));
         assert!(matches!(want[0], PlaneHit::Hit(_)), "{want:?}");
         assert_eq!(intersect_baseline(&r4, &p4).lanes(), want);
