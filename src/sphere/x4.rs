@@ -6,7 +6,7 @@ use super::{Sphere, SphereHit, reference, stages};
 use crate::Ray;
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
-use crate::num::certify::{certify, flush_prone4, results_stand, subnormals_work};
+use crate::num::certify::{certify, certify_end, flush_prone4, results_stand, subnormals_work};
 use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::class::{NONE, ONE, TWO};
 use crate::ray4::{Ray4, gather3};
@@ -233,16 +233,19 @@ impl<W: Real8> Decided<W> {
 /// The first pass over any [`Real`]: [`certify`] on the roots of
 /// [`stages::filter_sorted`], which decides every lane but those with a
 /// root near 0 against the other (and those the filter leaves undecided).
+/// The roots kept are the enclosures' first ends, which round to the
+/// roots' `f32` values where `two`.
 #[inline(always)]
 fn decide_sorted<L: Real>(f: stages::Sorted<L>) -> Decided<L> {
-    let two = f.two & certify(f.lo, f.r, f.a) & certify(f.hi, f.r, f.a);
-    let nan = L::splat(f64::NAN);
+    let (ok_lo, lo) = certify_end(f.lo, f.r, f.a);
+    let (ok_hi, hi) = certify_end(f.hi, f.r, f.a);
+    let two = f.two & ok_lo & ok_hi;
     Decided {
         two,
         done: f.none | two,
         open: f.two & !two,
-        lo: L::select(two, f.lo, nan),
-        hi: L::select(two, f.hi, nan),
+        lo,
+        hi,
     }
 }
 
@@ -255,22 +258,30 @@ fn decide_quotients<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L
     // Disjoint enclosures are in the exact order; overlapping ones round
     // to the same f32.
     let swap = f.t0.gt(f.t1);
-    let nan = L::splat(f64::NAN);
     Decided {
         two,
         done: f.none | two,
         open: f.two & !two,
-        lo: L::select(two, L::select(swap, f.t1, f.t0), nan),
-        hi: L::select(two, L::select(swap, f.t0, f.t1), nan),
+        lo: L::select(swap, f.t1, f.t0),
+        hi: L::select(swap, f.t0, f.t1),
     }
+}
+
+/// The roots of the lanes in `two` as `f32`, NaN elsewhere.
+#[inline(always)]
+fn roots<L: Real4>(x: &Decided<L>) -> (i32x4, f32x4, f32x4) {
+    let two = L::mask_i32(x.two);
+    let nan: i32x4 = cast(f32x4::splat(f32::NAN));
+    let root = |t: L| -> f32x4 { cast(two.bitselect(cast(t.narrow()), nan)) };
+    (two, root(x.lo), root(x.hi))
 }
 
 /// The results of one packet; `env(prone)` says whether they stand in the
 /// floating-point environment, `prone` where a root is 0 or subnormal
 /// ([`results_stand`]; asked only where every lane is done).
-/// Lanes the first pass leaves with the class two go to the second; what
-/// is left (an undecided class, an undecided root) goes to the scalar
-/// stages.
+/// Lanes the first pass leaves with the class two go to the second
+/// ([`finish_open`]); what is left (an undecided class, an undecided
+/// root) goes to the scalar stages.
 #[inline(always)]
 fn finish<L: Real4>(
     x: Decided<L>,
@@ -278,26 +289,54 @@ fn finish<L: Real4>(
     ray: &Ray4,
     s: &Sphere4,
 ) -> SphereHit4 {
-    let x = if L::all(!x.open) {
-        x
-    } else {
-        let (o, d, c, r) = widened::<L>(ray, s);
-        let y = decide_quotients(o, d, c, r);
-        Decided {
-            two: x.two | (y.two & !x.done),
-            done: x.done | y.done,
-            open: y.open,
-            lo: L::select(x.done, x.lo, y.lo),
-            hi: L::select(x.done, x.hi, y.hi),
-        }
-    };
-    let class = L::mask_i32(x.two) & i32x4::splat(TWO);
-    let (t0, t1) = (x.lo.narrow(), x.hi.narrow());
-    if L::all(x.done) && env(flush_prone4(t0) || flush_prone4(t1)) {
+    let (two, t0, t1) = roots(&x);
+    let done = L::mask_i32(x.done);
+    if !L::all(!x.open) {
+        return finish_open(two, done, [t0, t1], env, ray, s);
+    }
+    finish_done(two, done, [t0, t1], env, ray, s)
+}
+
+/// The packet's results from the lanes `two` with roots `t`, the lanes
+/// `done`, and the scalar stages for the rest.
+#[inline(always)]
+fn finish_done(
+    two: i32x4,
+    done: i32x4,
+    [t0, t1]: [f32x4; 2],
+    env: impl FnOnce(bool) -> bool,
+    ray: &Ray4,
+    s: &Sphere4,
+) -> SphereHit4 {
+    let class = two & i32x4::splat(TWO);
+    if done.all() && env(flush_prone4(t0) || flush_prone4(t1)) {
         SphereHit4 { class, t0, t1 }
     } else {
-        SphereHit4::settle([class, cast(t0), cast(t1)], L::mask_i32(x.done), ray, s)
+        SphereHit4::settle([class, cast(t0), cast(t1)], done, ray, s)
     }
+}
+
+/// [`finish`] for a packet with a lane whose class is two but whose roots
+/// the first pass left: the second pass ([`decide_quotients`]) on the
+/// packet, on the baseline lanes (the same bits on any), for the lanes
+/// not done.
+#[cold]
+#[inline(never)]
+fn finish_open(
+    two: i32x4,
+    done: i32x4,
+    [t0, t1]: [f32x4; 2],
+    env: impl FnOnce(bool) -> bool,
+    ray: &Ray4,
+    s: &Sphere4,
+) -> SphereHit4 {
+    let (o, d, c, r) = widened::<F64x4>(ray, s);
+    let y = decide_quotients(o, d, c, r);
+    let (two_y, u0, u1) = roots(&y);
+    let keep = |a: f32x4, b: f32x4| -> f32x4 { cast(done.bitselect(cast(a), cast(b))) };
+    let two = two | (two_y & !done);
+    let done = done | F64x4::mask_i32(y.done);
+    finish_done(two, done, [keep(t0, u0), keep(t1, u1)], env, ray, s)
 }
 
 /// The kernel over any four-lane [`Real4`].
