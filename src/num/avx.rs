@@ -33,6 +33,7 @@
 use super::real::{Real, Real4};
 use core::arch::x86_64::*;
 use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
+use core::sync::atomic::{AtomicU8, Ordering};
 use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
 
@@ -43,8 +44,9 @@ pub struct Avx2(());
 
 impl Avx2 {
     /// The token, where the CPU has AVX2 and FMA (and the OS saves the
-    /// AVX registers). The answer is cached by the standard library: a
-    /// load and a test per call.
+    /// AVX registers). The answer is cached in one byte: a load and a
+    /// comparison per call, where the standard library's cache, asked for
+    /// two features, takes two loads and four tests.
     ///
     /// ```
     /// let on = rayoracle::num::avx::Avx2::detect().is_some();
@@ -52,9 +54,29 @@ impl Avx2 {
     /// ```
     #[inline(always)]
     pub fn detect() -> Option<Avx2> {
-        (is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma")).then_some(Avx2(()))
+        match DETECTED.load(Ordering::Relaxed) {
+            YES => Some(Avx2(())),
+            NO => None,
+            _ => Avx2::detect_first(),
+        }
+    }
+
+    /// [`Avx2::detect`]'s first call: asks the standard library, and keeps
+    /// the answer.
+    #[cold]
+    #[inline(never)]
+    fn detect_first() -> Option<Avx2> {
+        let on = is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma");
+        DETECTED.store(if on { YES } else { NO }, Ordering::Relaxed);
+        on.then_some(Avx2(()))
     }
 }
+
+/// [`Avx2::detect`]'s answer once known: [`YES`], [`NO`], or 0 before the
+/// first call. A race stores the same answer twice.
+static DETECTED: AtomicU8 = AtomicU8::new(0);
+const YES: u8 = 2;
+const NO: u8 = 1;
 
 /// Four `f64` lanes in one `__m256d`. Crate-private: see the module
 /// documentation for the rule that makes its `unsafe` blocks sound.
