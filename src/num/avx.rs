@@ -234,6 +234,12 @@ impl Real for Avx4 {
         let m = avx!(_mm_and_si128(bits, _mm_castps_si128(_mm_cmpeq_ps(a, b))));
         AvxMask(avx!(_mm256_castsi256_pd(_mm256_cvtepi32_epi64(m))))
     }
+    #[inline(always)]
+    fn equal_f32(lo: Avx4, hi: Avx4) -> AvxMask {
+        let (a, b) = avx!((_mm256_cvtpd_ps(lo.0), _mm256_cvtpd_ps(hi.0)));
+        let m = avx!(_mm_castps_si128(_mm_cmpeq_ps(a, b)));
+        AvxMask(avx!(_mm256_castsi256_pd(_mm256_cvtepi32_epi64(m))))
+    }
 }
 
 impl Real4 for Avx4 {
@@ -291,6 +297,10 @@ mod tests {
                 let mask = |m: AvxMask| Avx4::mask_i32(m).to_array();
                 let wmask = |m| F64x4::mask_i32(m).to_array();
                 assert_eq!(mask(Avx4::same_f32(va, vb)), wmask(F64x4::same_f32(wa, wb)));
+                assert_eq!(
+                    mask(Avx4::equal_f32(va, vb)),
+                    wmask(F64x4::equal_f32(wa, wb))
+                );
                 assert_eq!(mask(va.gt(vb)), wmask(wa.gt(wb)));
                 assert_eq!(mask(!va.eq(vb)), wmask(!wa.eq(wb)));
                 assert_eq!(Avx4::all(va.eq(vb)), F64x4::all(wa.eq(wb)));

@@ -189,6 +189,11 @@ impl Real for Avx8 {
         ));
         Avx8Mask(bits & avx512!(_mm256_cmp_ps_mask::<_CMP_EQ_OQ>(a, b)))
     }
+    #[inline(always)]
+    fn equal_f32(lo: Avx8, hi: Avx8) -> Avx8Mask {
+        let (a, b) = avx512!((_mm512_cvtpd_ps(lo.0), _mm512_cvtpd_ps(hi.0)));
+        Avx8Mask(avx512!(_mm256_cmp_ps_mask::<_CMP_EQ_OQ>(a, b)))
+    }
 }
 
 impl Real8 for Avx8 {
@@ -280,6 +285,7 @@ mod tests {
         );
         assert_eq!(masks(Avx8::same_f32(a, b)), want_m(Pair::same_f32(p, q)));
         assert_eq!(masks(Avx8::same_f32(a, a)), want_m(Pair::same_f32(p, p)));
+        assert_eq!(masks(Avx8::equal_f32(a, b)), want_m(Pair::equal_f32(p, q)));
         let m = a.gt(b);
         assert_eq!(
             bits(Avx8::select(m, a, b).halves()),

@@ -72,9 +72,9 @@ pub fn certify_end<L: Real>(t: L, r: L, a: L) -> (L::Mask, L) {
 }
 
 /// [`certify_end`] with a relative bound alone, `e = |t|·r`: the ends are
-/// `t(1 − w)` and `t(1 + w)`, two products after `t`. `t` must be finite
-/// where the caller uses the mask (an infinite `t` has ends that round
-/// alike).
+/// `t(1 − w)` and `t(1 + w)`, two products after `t`, for `r < 1/2`.
+/// `t` must be finite where the caller uses the mask (an infinite `t` has
+/// ends that round alike).
 ///
 /// ```
 /// use rayoracle::num::certify::{certify, certify_relative};
@@ -91,7 +91,9 @@ pub fn certify_end<L: Real>(t: L, r: L, a: L) -> (L::Mask, L) {
 pub fn certify_relative<L: Real>(t: L, r: L) -> (L::Mask, L) {
     let (one, w) = (L::splat(1.0), r + L::splat(2f64.powi(-51)));
     let lo = t * (one - w);
-    (L::same_f32(lo, t * (one + w)), lo)
+    // Both ends have t's sign (w < 1), so equal as floats is the same
+    // f32, bit for bit.
+    (L::equal_f32(lo, t * (one + w)), lo)
 }
 
 /// The bound on a quotient, in the two parts [`certify`] takes. For `t̂ =

@@ -53,6 +53,11 @@ pub trait Real:
     /// Whether `lo` and `hi` round to the same `f32`, bit for bit (so −0
     /// and +0 differ, and a NaN never matches).
     fn same_f32(lo: Self, hi: Self) -> Self::Mask;
+    /// Whether `lo` and `hi` round to equal `f32` values, compared as
+    /// floats: a NaN never matches, and −0 matches +0. The same as
+    /// [`Real::same_f32`] where `lo` and `hi` cannot have different signs,
+    /// at one comparison instead of two.
+    fn equal_f32(lo: Self, hi: Self) -> Self::Mask;
     /// [`denormals_are_zero`](crate::num::certify::denormals_are_zero),
     /// probed in this type's instruction encoding (VEX for the AVX types).
     #[inline(always)]
@@ -95,6 +100,10 @@ impl Real for f64 {
     #[inline(always)]
     fn same_f32(lo: f64, hi: f64) -> bool {
         (lo as f32).to_bits() == (hi as f32).to_bits() && !lo.is_nan()
+    }
+    #[inline(always)]
+    fn equal_f32(lo: f64, hi: f64) -> bool {
+        lo as f32 == hi as f32
     }
 }
 
@@ -266,6 +275,10 @@ impl<L: Real> Real for Pair<L> {
     #[inline(always)]
     fn same_f32(lo: Pair<L>, hi: Pair<L>) -> Pair<L::Mask> {
         Pair(L::same_f32(lo.0, hi.0), L::same_f32(lo.1, hi.1))
+    }
+    #[inline(always)]
+    fn equal_f32(lo: Pair<L>, hi: Pair<L>) -> Pair<L::Mask> {
+        Pair(L::equal_f32(lo.0, hi.0), L::equal_f32(lo.1, hi.1))
     }
 }
 
@@ -551,6 +564,10 @@ impl Real for F64x4 {
             .simd_eq(wide::bytemuck::cast::<f32x4, i32x4>(b));
         widen_mask(bits & wide::bytemuck::cast::<f32x4, i32x4>(a.simd_eq(b)))
     }
+    #[inline(always)]
+    fn equal_f32(lo: F64x4, hi: F64x4) -> M4 {
+        widen_mask(wide::bytemuck::cast(lo.narrow().simd_eq(hi.narrow())))
+    }
 }
 
 #[cfg(test)]
@@ -567,6 +584,9 @@ mod tests {
                 let (va, vb) = (F64x4::splat(a), F64x4::splat(b));
                 let want = <f64 as Real>::same_f32(a, b);
                 assert_eq!(F64x4::same_f32(va, vb).lanes(), [want; 4], "{a} {b}");
+                let eq = a as f32 == b as f32;
+                assert_eq!(<f64 as Real>::equal_f32(a, b), eq, "{a} {b}");
+                assert_eq!(F64x4::equal_f32(va, vb).lanes(), [eq; 4], "{a} {b}");
                 assert_eq!(va.gt(vb).lanes(), [a > b; 4], "{a} {b}");
                 assert_eq!(va.eq(vb).lanes(), [a == b; 4], "{a} {b}");
                 let c = F64x4::copysign(va, vb).to_array()[0];

@@ -60,8 +60,9 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
     // The first pass, whose bound needs nothing after the division; the
     // full filter only for what it leaves.
     let f = stages::filter_relative(o, d, a, n, shrink);
+    // A root the pass certifies is normal as an f32: no flush to ask about.
     let (certified, end) = certify_relative(f.t, f.r);
-    if f.hit & certified && !needs_probe(&[], &[f.t]) {
+    if f.hit & certified {
         return (PlaneHit::Hit(end as f32), Stage::Filter);
     }
     filter_then_escalate(ray, plane, shrink)

@@ -101,8 +101,7 @@ pub const K: f64 = 1024.0;
 /// In the notation of the [module](self), with `m̂` the computed
 /// magnitude sums (within `γ₂` of the exact ones), `|n̂um − num| ≤
 /// γ₄(1 + γ₂)m̂_num < 4.01u m̂_num` and `|d̂en − den| ≤ γ₂(1 + γ₂)m̂_den <
-/// 2.01u m̂_den`. Where `m̂_den < K|d̂en|` and `m̂_num < K|n̂um|` or
-/// `m̂_num = 0`:
+/// 2.01u m̂_den`. Where `m̂_den < K|d̂en|` and `m̂_num < K|n̂um|`:
 ///
 /// * `x = E_den/|d̂en| < 2.01uK < 1`: one hit, certain;
 /// * `E_num/|d̂en| < 4.01uK|n̂um/d̂en|`, so the quotient's bound of the
@@ -114,14 +113,20 @@ pub const K: f64 = 1024.0;
 /// So `|t̂ − t| < (6.03K + 1.01)u|t̂|`, and the pass uses **`r = 13Ku`**,
 /// over twice the proof's constant: a constant, exact in f64, which no
 /// rounding of its own evaluation touches. `K|d̂en|` is exact (a scaling
-/// by a power of two, far from overflow). `m̂_num = 0` makes every term,
-/// and so the exact `num`, 0 (a nonzero `ŵᵢnᵢ` is at least `2⁻²⁹⁸`): the
-/// root is exactly 0, and `t̂ = ±0 + 0 = +0`, as the oracle rounds it.
+/// by a power of two, far from overflow).
 ///
-/// A parallel line (`m̂_den = 0`), a NaN input and an infinite one fail
-/// the comparisons (`0 > 0`, `∞ > ∞` and any comparison with NaN are
-/// false), so no infinite or NaN `t̂` is certified. Every line the pass
-/// leaves goes to [`filter`]'s full quotient bound.
+/// A parallel line (`m̂_den = 0`), a root exactly 0 (`m̂_num = 0`, whose
+/// `t̂` may be −0 where the oracle's answer is +0), a NaN input and an
+/// infinite one fail the comparisons (`0 > 0`, `∞ > ∞` and any comparison
+/// with NaN are false), so no zero, infinite or NaN `t̂` is certified.
+/// Nor is a root below `2⁻¹²⁵` in magnitude: the pass also asks
+/// `|n̂um| > 2⁻¹²⁵|d̂en|` (the product exact, at least `2⁻⁴²³`), so that,
+/// rounding being monotone, `|t̂| ≥ 2⁻¹²⁵`, its `f32` is normal, and
+/// flush-to-zero, which acts only on subnormal results, cannot touch it
+/// ([`needs_probe`](crate::num::certify::needs_probe)): a kernel need not
+/// ask the environment for a root this pass certifies, only probe for
+/// denormals-are-zero. Every line the pass leaves goes to [`filter`]'s
+/// full quotient bound.
 ///
 /// ```
 /// use rayoracle::num::certify::certify_relative;
@@ -144,13 +149,11 @@ pub fn filter_relative<L: Real>(
     shrink: f64,
 ) -> Relative<L> {
     let x = terms(o, d, a, n);
-    let k = L::splat(K);
-    // K|n̂um| + η > m̂_num: η = 2⁻¹⁰⁷⁴ is lost in any nonzero K|n̂um| (at
-    // least 2⁻³⁴⁰), and makes 0 > 0 true where both are 0.
-    let eta = L::splat(f64::from_bits(1));
+    let (k, tiny) = (L::splat(K), L::splat(2f64.powi(-125)));
+    let (num, den) = (x.num.abs(), x.den.abs());
     Relative {
-        hit: (k * x.den.abs()).gt(x.m_den) & (k * x.num.abs() + eta).gt(x.m_num),
-        t: x.num / x.den + L::splat(0.0),
+        hit: (k * den).gt(x.m_den) & (k * num).gt(x.m_num) & num.gt(tiny * den),
+        t: x.num / x.den,
         r: L::splat(13.0 * K * U * shrink),
     }
 }
@@ -158,10 +161,11 @@ pub fn filter_relative<L: Real>(
 /// The [first pass](filter_relative)'s result.
 #[derive(Clone, Copy, Debug)]
 pub struct Relative<L: Real> {
-    /// Certified: one hit, with `t`'s error at most `|t|·r`; the root
-    /// still needs [`certify_relative`](crate::num::certify::certify_relative).
+    /// Certified: one hit, with `t`'s error at most `|t|·r` and `|t| ≥
+    /// 2⁻¹²⁵`; the root still needs
+    /// [`certify_relative`](crate::num::certify::certify_relative).
     pub hit: L::Mask,
-    /// `num/den`, `+0` for an exact 0.
+    /// `num/den`.
     pub t: L,
     /// The bound on `t`'s error, relative to `|t|`.
     pub r: L,
