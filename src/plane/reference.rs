@@ -58,26 +58,35 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
     // The first pass, whose bound needs nothing after the division; the
-    // full filter only for what it leaves.
-    let f = stages::filter_relative(o, d, a, n, shrink);
+    // full filter only for what it leaves, from the same sums.
+    let x = stages::terms(o, d, a, n);
+    let f = stages::relative_terms(&x, shrink);
     // A root the pass certifies is normal as an f32: no flush to ask about.
     let (certified, end) = certify_relative(f.t, f.r);
     if f.hit & certified {
         return (PlaneHit::Hit(end as f32), Stage::Filter);
     }
-    filter_then_escalate(ray, plane, shrink)
+    filter_then_escalate(ray, plane, x, shrink)
 }
 
 /// The full [filter](stages::filter), for a line the first pass leaves
 /// (sums that cancel, a parallel line, a root near a rounding boundary or
 /// subnormal), then the later stages. The inputs are known to stand: DAZ
-/// is off or none is subnormal.
+/// is off or none is subnormal. A line whose `d·n` cancels so far that
+/// the filter cannot certify its root ([`stages::Terms::hopeless`]) goes
+/// straight to the later stages.
 #[cold]
 #[inline(never)]
-fn filter_then_escalate(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
-    let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
-    let f = stages::filter(o, d, a, n, shrink);
+fn filter_then_escalate(
+    ray: &Ray,
+    plane: &Plane,
+    x: stages::Terms<f64>,
+    shrink: f64,
+) -> (PlaneHit, Stage) {
+    if x.hopeless(shrink) {
+        return later_stages(ray, plane, shrink);
+    }
+    let f = stages::filter_terms(x, shrink);
     if f.hit && certify(f.t, f.r, f.a) {
         if needs_probe(&[], &[f.t]) && !subnormals_work() {
             return (exact_stage(ray, plane), Stage::Exact);
@@ -88,7 +97,7 @@ fn filter_then_escalate(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
     } else if f.in_plane {
         (PlaneHit::InPlane, Stage::Filter)
     } else {
-        escalate_shrunk(ray, plane, shrink, false)
+        later_stages(ray, plane, shrink)
     }
 }
 
@@ -102,17 +111,16 @@ fn filter_then_escalate(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
 #[cold]
 #[inline(never)]
 pub(crate) fn escalate(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
-    escalate_shrunk(ray, plane, 1.0, true)
-}
-
-/// [`escalate`] with the bounds of its stages multiplied by `shrink`, and
-/// the inputs probed for subnormals only if `probe`.
-#[cold]
-#[inline(never)]
-fn escalate_shrunk(ray: &Ray, plane: &Plane, shrink: f64, probe: bool) -> (PlaneHit, Stage) {
-    if probe && denormals_are_zero() && needs_probe(&inputs(ray, plane), &[]) {
+    if denormals_are_zero() && needs_probe(&inputs(ray, plane), &[]) {
         return (exact_stage(ray, plane), Stage::Exact);
     }
+    later_stages(ray, plane, 1.0)
+}
+
+/// The stages after the filter, their bounds multiplied by `shrink`, for
+/// inputs known to stand (DAZ off, or no input subnormal).
+#[inline(always)]
+fn later_stages(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
     let staged = (stages::tight(o, d, a, n, shrink).map(|h| (h, Stage::Tight)))

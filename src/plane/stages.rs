@@ -72,7 +72,13 @@ pub struct Filtered<L: Real> {
 /// ```
 #[inline(always)]
 pub fn filter<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) -> Filtered<L> {
-    let x = sums(o, d, a, n, shrink);
+    filter_terms(terms(o, d, a, n), shrink)
+}
+
+/// [`filter`] from the [`terms`] already computed.
+#[inline(always)]
+pub(crate) fn filter_terms<L: Real>(x: Terms<L>, shrink: f64) -> Filtered<L> {
+    let x = sums(x, shrink);
     let (r, a) = quotient_bound(x.e_den, x.e_num, x.inv, 6.0 * U * shrink);
     Filtered {
         hit: x.den.abs().gt(x.e_den),
@@ -148,7 +154,12 @@ pub fn filter_relative<L: Real>(
     n: [L; 3],
     shrink: f64,
 ) -> Relative<L> {
-    let x = terms(o, d, a, n);
+    relative_terms(&terms(o, d, a, n), shrink)
+}
+
+/// [`filter_relative`] from the [`terms`] already computed.
+#[inline(always)]
+pub(crate) fn relative_terms<L: Real>(x: &Terms<L>, shrink: f64) -> Relative<L> {
     let (k, tiny) = (L::splat(K), L::splat(2f64.powi(-125)));
     let (num, den) = (x.num.abs(), x.den.abs());
     Relative {
@@ -172,15 +183,34 @@ pub struct Relative<L: Real> {
 }
 
 /// The sums and their magnitude sums: `num = Σŵᵢnᵢ`, `den = Σdᵢnᵢ`.
-struct Terms<L: Real> {
+#[derive(Clone, Copy)]
+pub(crate) struct Terms<L: Real> {
     num: L,
     den: L,
     m_num: L,
     m_den: L,
 }
 
+impl Terms<f64> {
+    /// Whether `d·n` cancels so far that [`filter`], its bounds multiplied
+    /// by `shrink`, cannot certify the line's nonzero root: where
+    /// `shrink·m̂_den > 2²⁹|d̂en|`, its bound is over `x|t̂| = 4u
+    /// shrink·m̂_den/|d̂en|·|t̂| > 2⁻²²|t̂|`, an enclosure wider than the
+    /// gaps between f32 rounding midpoints near any normal root. It
+    /// decides no class without its root (parallel and in-plane lines have
+    /// `m̂_den = 0`), and an exact root 0 (`m̂_num = 0`) is left to it. A
+    /// kernel may go straight to the later stages, which decide every line
+    /// the filter could (only a root whose `f32` is infinite or subnormal
+    /// could have certified there).
+    #[inline(always)]
+    pub(crate) fn hopeless(&self, shrink: f64) -> bool {
+        shrink * self.m_den > 2f64.powi(29) * self.den.abs() && self.m_num > 0.0
+    }
+}
+
+/// Both passes' sums, computed once by a kernel that may run both.
 #[inline(always)]
-fn terms<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Terms<L> {
+pub(crate) fn terms<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Terms<L> {
     let w = [a[0] - o[0], a[1] - o[1], a[2] - o[2]];
     let wn = [w[0] * n[0], w[1] * n[1], w[2] * n[2]];
     let dn = [d[0] * n[0], d[1] * n[1], d[2] * n[2]];
@@ -205,7 +235,7 @@ struct Sums<L: Real> {
 }
 
 #[inline(always)]
-fn sums<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) -> Sums<L> {
+fn sums<L: Real>(x: Terms<L>, shrink: f64) -> Sums<L> {
     let k = |x: f64| L::splat(x * U * shrink);
     let zero = L::splat(0.0);
     let Terms {
@@ -213,7 +243,7 @@ fn sums<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], shrink: f64) -> Sum
         den,
         m_num,
         m_den,
-    } = terms(o, d, a, n);
+    } = x;
     let (e_num, e_den) = (k(8.0) * m_num, k(4.0) * m_den);
     let den_zero = m_den.eq(zero);
     let inv = L::splat(1.0) / den;
