@@ -61,10 +61,16 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
     // full filter only for what it leaves, from the same sums.
     let x = stages::terms(o, d, a, n);
     let f = stages::relative_terms(&x, shrink);
-    // A root the pass certifies is normal as an f32: no flush to ask about.
-    let (certified, end) = certify_relative(f.t, f.r);
-    if f.hit & certified {
-        return (PlaneHit::Hit(end as f32), Stage::Filter);
+    // The pass's class is known before its quotient: a line it leaves
+    // does not wait on the division (which the CPU starts anyway, on the
+    // predicted path).
+    if f.hit {
+        // A root the pass certifies is normal as an f32: no flush to ask
+        // about.
+        let (certified, end) = certify_relative(f.t, f.r);
+        if certified {
+            return (PlaneHit::Hit(end as f32), Stage::Filter);
+        }
     }
     filter_then_escalate(ray, plane, x, shrink)
 }
