@@ -24,7 +24,7 @@
 //! wherever neither sum cancels by `2¹⁰` or more, so that nothing but the
 //! certificate waits on the division; the full bound takes the rest. A
 //! line parallel in exact arithmetic but not term by term, or a root too
-//! close to a rounding boundary, goes on to the later [stages](stages)
+//! close to a rounding boundary, goes on to the later [stages]
 //! and, last, to the exact oracle ([`exact`]).
 
 pub mod exact;

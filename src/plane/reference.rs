@@ -49,9 +49,9 @@ pub fn intersect_staged(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
     // The environment meets an input only through DAZ, and a result only
-    // through FTZ where it is subnormal ([`needs_probe`]): under DAZ, and
-    // for a root that is subnormal, the answer comes from the cold path,
-    // which scans the inputs and reads the register.
+    // through FTZ where it is subnormal ([`needs_probe`]): the inputs are
+    // scanned only under DAZ; the first pass certifies no subnormal root,
+    // and the full filter reads the register only for one.
     if denormals_are_zero() && needs_probe(&inputs(ray, plane), &[]) {
         return (exact_stage(ray, plane), Stage::Exact);
     }

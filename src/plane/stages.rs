@@ -139,7 +139,8 @@ pub const K: f64 = 1024.0;
 /// use rayoracle::plane::stages::{filter, filter_relative};
 /// let (o, d, a, n) = ([0.0; 3], [0.1, 0.0, 3.0], [0.0, 0.0, 1.0], [0.0, 0.3, 1.0]);
 /// let (f, g) = (filter::<f64>(o, d, a, n, 1.0), filter_relative::<f64>(o, d, a, n, 1.0));
-/// assert!(g.hit && g.t == f.t && certify_relative(g.t, g.r).0);
+/// let (certified, end) = certify_relative(g.t, g.r);
+/// assert!(g.hit && certified && end as f32 == f.t as f32);
 /// // d·n = (1 + 2⁻²³)(1 − 2⁻²³) − 1 = −2⁻⁴⁶ cancels 47 bits: the full
 /// // filter certifies the hit, the first pass leaves it.
 /// let e = 2f64.powi(-23);

@@ -78,8 +78,9 @@ pub struct PlaneHit4 {
 /// Intersects four lines with four planes, lane by lane: the filter on
 /// four f64 lanes, first with the root's bound of
 /// [`stages::filter_relative`], then, for a packet with a lane it leaves,
-/// with [`stages::filter`]'s, and the scalar stages for any lane left undecided, so every lane equals
-/// [`super::reference::intersect`] bit for bit.
+/// with [`stages::filter`]'s, and the scalar stages for any lane left
+/// undecided, so every lane equals [`super::reference::intersect`] bit
+/// for bit.
 ///
 /// ```
 /// use rayoracle::{Ray, ray4::Ray4, plane::{Plane, PlaneHit, reference, x4}};

@@ -195,8 +195,9 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
 
 /// What the lanes decide, before any conversion: the certified two-root
 /// lanes, the lanes done, the lanes whose class is two but whose roots are
-/// not certified yet (the only ones the second pass can decide), and the
-/// sorted roots (NaN where none).
+/// not certified yet (the only ones the second pass can decide), and, in
+/// the lanes `two`, values that round to the sorted roots' `f32` values
+/// (anything elsewhere: [`roots`] puts NaN there).
 struct Decided<L: Real> {
     two: L::Mask,
     done: L::Mask,
@@ -291,10 +292,11 @@ fn finish<L: Real4>(
 ) -> SphereHit4 {
     let (two, t0, t1) = roots(&x);
     let done = L::mask_i32(x.done);
-    if !L::all(!x.open) {
-        return finish_open(two, done, [t0, t1], env, ray, s);
+    if L::all(!x.open) {
+        finish_done(two, done, [t0, t1], env, ray, s)
+    } else {
+        finish_open(two, done, [t0, t1], env, ray, s)
     }
-    finish_done(two, done, [t0, t1], env, ray, s)
 }
 
 /// The packet's results from the lanes `two` with roots `t`, the lanes
