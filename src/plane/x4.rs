@@ -246,13 +246,7 @@ fn finish_full(
     ray: &Ray4,
     p: &Plane4,
 ) -> PlaneHit4 {
-    let w = F64x4::widen;
-    let (o, d, a, n) = (
-        ray.origin.map(w),
-        ray.dir.map(w),
-        p.point.map(w),
-        p.normal.map(w),
-    );
+    let (o, d, a, n) = widened::<F64x4>(ray, p);
     let f = stages::filter(o, d, a, n, 1.0);
     let (certified, end) = certify_end(f.t, f.r, f.a);
     let m = F64x4::mask_i32;
@@ -277,14 +271,20 @@ fn finish_full(
 /// The kernel over any four-lane [`Real4`].
 #[inline(always)]
 fn intersect_in<L: Real4>(ray: &Ray4, p: &Plane4, env: impl Fn(bool) -> bool) -> PlaneHit4 {
+    let (o, d, a, n) = widened::<L>(ray, p);
+    finish(decide(o, d, a, n), env, ray, p)
+}
+
+/// A packet's inputs in f64 lanes.
+#[inline(always)]
+fn widened<L: Real4>(ray: &Ray4, p: &Plane4) -> ([L; 3], [L; 3], [L; 3], [L; 3]) {
     let w = L::widen;
-    let x = decide(
+    (
         ray.origin.map(w),
         ray.dir.map(w),
         p.point.map(w),
         p.normal.map(w),
-    );
-    finish(x, env, ray, p)
+    )
 }
 
 impl PlaneHit4 {
@@ -386,13 +386,7 @@ mod tests {
         ]
         .map(|d| crate::Ray::new(glam::Vec3::new(0.25, 0.0, 0.5), d));
         let (r4, p4) = (Ray4::from_rays(rays), Plane4::splat(&p));
-        let w = F64x4::widen;
-        let (o, d, a, n) = (
-            r4.origin.map(w),
-            r4.dir.map(w),
-            p4.point.map(w),
-            p4.normal.map(w),
-        );
+        let (o, d, a, n) = widened::<F64x4>(&r4, &p4);
         let (first, full) = (decide(o, d, a, n), stages::filter(o, d, a, n, 1.0));
         assert_eq!(first.hit.lanes(), [false, false, true, true]);
         assert_eq!(full.hit.lanes(), [true, false, true, true]);
