@@ -1,10 +1,13 @@
-//! The bounds of each stage after the filter, shrunk on their own. The
-//! shrunk reference of `bounds.rs` mostly goes wrong in its filter, which
-//! answers first; a stage reached only where the filter gives up needs its
-//! own cases. Each stage that certifies with a bound (the plane's tight
-//! and double-word stages; the sphere's tight, compensated and
-//! double-word stages; the quadric's double-word stage) is called alone,
-//! every bound it uses multiplied by a factor `s < 1`, on the cases of
+//! The bounds of each stage after the filter, and of the plane's first
+//! pass, shrunk on their own. The shrunk reference of `bounds.rs` mostly
+//! goes wrong in its filter, which answers first; a stage reached only
+//! where the filter gives up needs its own cases, and so does the plane's
+//! first pass, whose errors the search of `bounds.rs` leaves behind for
+//! the larger ones of the full filter. Each stage that certifies with a
+//! bound (the plane's first pass, tight and double-word stages; the
+//! sphere's tight, compensated and double-word stages; the quadric's
+//! double-word stage) is called alone, every bound it uses multiplied by
+//! a factor `s < 1`, on the cases of
 //! `fixtures/bounds/stages.jsonl`. A seeded hill-climb found them by
 //! maximising the largest `s` at which the stage answers wrong (its
 //! *critical factor*), from seeds whose exact root lies next to an f32
@@ -173,7 +176,7 @@ impl Staged {
 }
 
 /// Planes whose `(a − o)·n = L + sm − L` rounds once, in `fl(L + sm)`,
-/// by up to `ulp(L)/2`, then cancels to `sm`, and `d·n = k ∈ [1, 2)`: the
+/// by up to `2⁻²³`, then cancels to `sm`, and `d·n = k ∈ [1, 2)`: the
 /// root `sm/k` is near 10, where f32 rounding midpoints are `2⁻²⁰` apart,
 /// so one seed in thirty or so has its computed root across one from the
 /// exact root. (With `k` a power of two the midpoints would lie on the
