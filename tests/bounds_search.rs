@@ -223,6 +223,28 @@ pub fn plane_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
         .collect()
 }
 
+/// Planes for the first pass, whose sums cancel by less than `2¹⁰`:
+/// with `o = (−x, ε, 0)`, `d = (0, 1, 0)`, `a = (C, 2⁻²⁴, −Ck)` and `n =
+/// (k, k, 1)`, `d·n = k` (odd, so that the root's f32 rounding midpoints
+/// do not lie on the grid of its numerator's roundings) and `(a − o)·n =
+/// (C + x)k + (2⁻²⁴ − ε)k − Ck`: the root is `x + 2⁻²⁴ − ε`, a midpoint
+/// moved by `ε` (`2⁻⁵⁵` to `2⁻⁴⁵`), while `(C + x)k` rounds by up to
+/// `2ᵉ⁻⁵²` for `C = 2ᵉ` (`e` from 4 to 9), enough to cross it.
+pub fn plane_first_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
+    (0..n)
+        .map(|_| {
+            let x = mant(rng, 0);
+            let k = f32::from_bits(mant(rng, 0).to_bits() | 1);
+            let c = 2f32.powi(rng.random_range(4..10));
+            let (e, sign) = (rng.random_range(-55..-45), rng.random::<bool>());
+            let eps = if sign { mant(rng, e) } else { -mant(rng, e) };
+            let ray = Ray::new(Vec3::new(-x, eps, 0.0), Vec3::Y);
+            let plane = Plane::new(Vec3::new(c, 2f32.powi(-24), -c * k), Vec3::new(k, k, 1.0));
+            Case::Plane(ray, plane)
+        })
+        .collect()
+}
+
 /// Spheres grazed at a relative miss distance of 10⁻² to 10⁻⁹, from
 /// distances of 1 to 10⁶ radii; and exact tangents: `f = o − C = (R, 0,
 /// z)` along `d = (0, 0, d_z)`, where `Δ = 0` but `|f|²` rounds, and
@@ -318,7 +340,7 @@ pub fn quadric_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
 /// (if `go_on`) the committed ones.
 pub fn seeds(kind: &str, rng: &mut SmallRng, n: usize, go_on: bool) -> Vec<Case> {
     let mut out = match kind {
-        "plane" => plane_seeds(rng, n),
+        "plane" => [plane_seeds(rng, n), plane_first_seeds(rng, n)].concat(),
         "sphere" => sphere_seeds(rng, n),
         _ => quadric_seeds(rng, n),
     };

@@ -4,7 +4,7 @@
 //! where the filter gives up needs its own cases, and so does the plane's
 //! first pass, whose errors the search of `bounds.rs` leaves behind for
 //! the larger ones of the full filter. Each stage that certifies with a
-//! bound (the plane's first pass, tight and double-word stages; the
+//! bound (the plane's first and second passes, tight and double-word stages; the
 //! sphere's tight, compensated and double-word stages; the quadric's
 //! double-word stage) is called alone, every bound it uses multiplied by
 //! a factor `s < 1`, on the cases of
@@ -61,6 +61,18 @@ fn plane_first(c: &Case, s: f64) -> Option<Answer> {
     (f.hit && certified).then(|| answer(&plane::PlaneHit::Hit(end as f32)))
 }
 
+fn plane_second(c: &Case, s: f64) -> Option<Answer> {
+    let Case::Plane(r, p) = c else { return None };
+    let (o, d, a, n) = (w(r.origin), w(r.dir), w(p.point), w(p.normal));
+    let f = plane::stages::filter_compensated(o, d, a, n, s);
+    let (certified, end) = rayoracle::num::certify::certify_relative(f.relative.t, f.relative.r);
+    if f.relative.hit && certified {
+        Some(answer(&plane::PlaneHit::Hit(end as f32)))
+    } else {
+        f.parallel.then(|| answer(&plane::PlaneHit::Parallel))
+    }
+}
+
 fn plane_tight(c: &Case, s: f64) -> Option<Answer> {
     let Case::Plane(r, p) = c else { return None };
     let (o, d, a, n) = (w(r.origin), w(r.dir), w(p.point), w(p.normal));
@@ -91,11 +103,16 @@ fn quadric_double_word(c: &Case, s: f64) -> Option<Answer> {
     quadric::stages::double_word(&k, w(r.origin), w(r.dir), s).map(|h| answer(&h))
 }
 
-const STAGES: [Staged; 6] = [
+const STAGES: [Staged; 7] = [
     Staged {
         kind: "plane",
         name: "first",
         run: plane_first,
+    },
+    Staged {
+        kind: "plane",
+        name: "second",
+        run: plane_second,
     },
     Staged {
         kind: "plane",
@@ -132,8 +149,9 @@ const STAGES: [Staged; 6] = [
 /// roundings, so only where the stage's arithmetic cancels; the plane's
 /// double-word stage, whose sums are exact or within a few `u`, is never
 /// wrong that way, and is not listed.
-const CAUGHT_AT: [(&str, f64); 6] = [
+const CAUGHT_AT: [(&str, f64); 7] = [
     ("bounds/plane/first", 1.0 / 16.0),
+    ("bounds/plane/second", 1.0 / 16.0),
     ("bounds/plane/tight", 0.125),
     ("bounds/sphere/tight", 1.0 / 16.0),
     ("bounds/sphere/compensated", 1.0 / 32.0),
@@ -192,26 +210,18 @@ fn plane_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
         .collect()
 }
 
-/// Planes for the first pass, whose sums cancel by less than `2¹⁰`:
-/// with `o = (−x, ε, 0)`, `d = (0, 1, 0)`, `a = (C, 2⁻²⁴, −Ck)` and `n =
-/// (k, k, 1)`, `d·n = k` (odd, so that the root's f32 rounding midpoints
-/// do not lie on the grid of its numerator's roundings) and `(a − o)·n =
-/// (C + x)k + (2⁻²⁴ − ε)k − Ck`: the root is `x + 2⁻²⁴ − ε`, a midpoint
-/// moved by `ε` (`2⁻⁵⁵` to `2⁻⁴⁵`), while `(C + x)k` rounds by up to
-/// `2ᵉ⁻⁵²` for `C = 2ᵉ` (`e` from 4 to 9), enough to cross it.
-fn plane_first_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
-    (0..n)
-        .map(|_| {
-            let x = mant(rng, 0);
-            let k = f32::from_bits(mant(rng, 0).to_bits() | 1);
-            let c = 2f32.powi(rng.random_range(4..10));
-            let (e, sign) = (rng.random_range(-55..-45), rng.random::<bool>());
-            let eps = if sign { mant(rng, e) } else { -mant(rng, e) };
-            let ray = Ray::new(Vec3::new(-x, eps, 0.0), Vec3::Y);
-            let plane = Plane::new(Vec3::new(c, 2f32.powi(-24), -c * k), Vec3::new(k, k, 1.0));
-            Case::Plane(ray, plane)
-        })
-        .collect()
+/// Planes for the second pass: [`bounds_search::plane_first_seeds`], and the same
+/// numerators over `d = (1, −1, k·2⁻ʲ)`, so that `d·n = k − k + k·2⁻ʲ`
+/// cancels by `2ʲ⁺¹` (`j` from 10 to 40), past the first pass, and the
+/// root, scaled by `2ʲ`, is still a midpoint moved by `ε·2ʲ`.
+fn plane_second_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
+    let mut out = bounds_search::plane_first_seeds(rng, n);
+    for c in bounds_search::plane_first_seeds(rng, n) {
+        let Case::Plane(r, p) = c else { continue };
+        let k = p.normal.x * 2f32.powi(-rng.random_range(10..41));
+        out.push(Case::Plane(Ray::new(r.origin, Vec3::new(1.0, -1.0, k)), p));
+    }
+    out
 }
 
 /// Spheres crossed along `−x` from `(x₀, y, z)` whose near root `x₀ −
@@ -280,7 +290,8 @@ fn committed() -> Vec<(String, Case)> {
 /// kind, and the committed cases of every stage of that kind.
 fn seeds(st: &Staged, rng: &mut SmallRng, n: usize) -> Vec<Case> {
     let mut out = match (st.kind, st.name) {
-        ("plane", "first") => plane_first_seeds(rng, n),
+        ("plane", "first") => bounds_search::plane_first_seeds(rng, n),
+        ("plane", "second") => plane_second_seeds(rng, n),
         ("plane", _) => [plane_seeds(rng, n), bounds_search::plane_seeds(rng, n)].concat(),
         ("sphere", _) => [sphere_seeds(rng, n), bounds_search::sphere_seeds(rng, n)].concat(),
         _ => [quadric_seeds(rng, n), bounds_search::quadric_seeds(rng, n)].concat(),

@@ -22,10 +22,12 @@
 //! bound and certifies what the bound decides. Its first pass
 //! ([`stages::filter_relative`]) bounds the root relatively by a constant
 //! wherever neither sum cancels by `2¹⁰` or more, so that nothing but the
-//! certificate waits on the division; the full bound takes the rest. A
-//! line parallel in exact arithmetic but not term by term, or a root too
-//! close to a rounding boundary, goes on to the later [stages]
-//! and, last, to the exact oracle ([`exact`]).
+//! certificate waits on the division; the second
+//! ([`stages::filter_compensated`]) keeps that bound for a line near
+//! parallel to the plane, and sees a `d·n` of exactly 0; the full bound
+//! takes the rest. A root too close to a rounding boundary, or a line
+//! whose sums defeat all three, goes on to the later [stages] and, last,
+//! to the exact oracle ([`exact`]).
 
 pub mod exact;
 pub mod plain;

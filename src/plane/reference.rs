@@ -58,7 +58,8 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
     // The first pass, whose bound needs nothing after the division; the
-    // full filter only for what it leaves, from the same sums.
+    // second pass and the full filter only for what it leaves, from the
+    // same sums.
     let x = stages::terms(o, d, a, n);
     let f = stages::relative_terms(&x, shrink);
     // The pass's class is known before its quotient: a line it leaves
@@ -72,7 +73,69 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
             return (PlaneHit::Hit(end as f32), Stage::Filter);
         }
     }
-    filter_then_escalate(ray, plane, x, shrink)
+    second_pass(ray, plane, x.num, x.den, x.m_num, x.m_den, shrink)
+}
+
+/// The second pass, out of line (inlined, it slows the first pass by
+/// about a seventh), then the rest, out of line again. The sums come as
+/// four arguments, in registers, not as a struct in memory.
+#[inline(never)]
+fn second_pass(
+    ray: &Ray,
+    plane: &Plane,
+    num: f64,
+    den: f64,
+    m_num: f64,
+    m_den: f64,
+    shrink: f64,
+) -> (PlaneHit, Stage) {
+    let x = stages::Terms {
+        num,
+        den,
+        m_num,
+        m_den,
+    };
+    match compensated(ray, plane, &x, shrink) {
+        Some(hs) => hs,
+        None => filter_then_escalate(ray, plane, x, shrink),
+    }
+}
+
+/// The [second pass](stages::filter_compensated), from the first pass's
+/// sums: a hit certified with `d·n` summed once compensated, or a line
+/// with `d·n = 0` exactly, off the plane by the filter's bound or in it by
+/// [`stages::exact_num`]. A line whose terms of `d·n` are all 0, and of
+/// `(a − o)·n` too or off the plane by the bound, is counted to the filter,
+/// whose own rule decides it; the rest to the tight stage, whose exact sum
+/// this shortens.
+#[inline(always)]
+fn compensated(
+    ray: &Ray,
+    plane: &Plane,
+    x: &stages::Terms<f64>,
+    shrink: f64,
+) -> Option<(PlaneHit, Stage)> {
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let c = stages::compensated_terms(x, w(ray.dir), w(plane.normal), shrink);
+    let f = c.relative;
+    let stage = |filter: bool| if filter { Stage::Filter } else { Stage::Tight };
+    if f.hit {
+        let (certified, end) = certify_relative(f.t, f.r);
+        if certified {
+            return Some((PlaneHit::Hit(end as f32), Stage::Tight));
+        }
+    } else if c.parallel {
+        return Some((PlaneHit::Parallel, stage(x.m_den == 0.0)));
+    } else if c.den_zero {
+        let num = stages::exact_num(w(ray.origin), w(plane.point), w(plane.normal))?;
+        let filter = x.m_den == 0.0 && x.m_num == 0.0;
+        return Some(if num == 0.0 {
+            (PlaneHit::InPlane, stage(filter))
+        } else {
+            (PlaneHit::Parallel, stage(filter))
+        });
+    }
+    None
 }
 
 /// The full [filter](stages::filter), for a line the first pass leaves
@@ -119,6 +182,11 @@ fn filter_then_escalate(
 pub(crate) fn escalate(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
     if denormals_are_zero() && needs_probe(&inputs(ray, plane), &[]) {
         return (exact_stage(ray, plane), Stage::Exact);
+    }
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
+    if let Some(hs) = compensated(ray, plane, &stages::terms(o, d, a, n), 1.0) {
+        return hs;
     }
     later_stages(ray, plane, 1.0)
 }

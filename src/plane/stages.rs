@@ -28,13 +28,17 @@
 //! rounds it. The rest, such as a line parallel in exact arithmetic but not
 //! term by term, goes to the next stage.
 //!
-//! # Two passes
+//! # Passes
 //!
 //! Both kernels first run [`filter_relative`]: where neither sum cancels
 //! by a factor of [`K`] or more, the bound above becomes a constant
 //! relative to `t̂`, and nothing but the certificate's two products waits
-//! on the division. [`filter`], with the full quotient bound, takes the
-//! lines it leaves.
+//! on the division. A line it leaves goes to [`filter_compensated`],
+//! which sums `d·n` with one compensation: a line near parallel to the
+//! plane keeps the same constant bound, and a `d·n` of exactly 0 is seen
+//! as such, for [`exact_num`] to tell a line in the plane from one off it.
+//! [`filter`], with the full quotient bound, and the later stages take
+//! the rest.
 
 use super::PlaneHit;
 use crate::num::certify::{SLACK, U, quotient_bound};
@@ -170,6 +174,122 @@ pub(crate) fn relative_terms<L: Real>(x: &Terms<L>, shrink: f64) -> Relative<L> 
     }
 }
 
+/// The second pass: [`filter_relative`] over `d·n` summed with one
+/// compensation, so that a line near parallel to the plane, whose `d·n`
+/// cancels however far, still gets a relative bound known before the
+/// division wherever the compensation is smaller than the sum. `num` is
+/// the first pass's and must not cancel by [`K`] or more.
+///
+/// # The bound
+///
+/// The products `pᵢ = dᵢnᵢ` of f32 values are exact (and below `2²⁵⁶`, so
+/// no sum of them overflows). Knuth's TwoSum gives `(s₁, e₁) = TwoSum(p₀,
+/// p₁)` and `(s₂, e₂) = TwoSum(s₁, p₂)`, so `den = s₂ + e₁ + e₂` exactly.
+/// With `ĉ = fl(e₁ + e₂)` and `ĥ = fl(s₂ + ĉ)`, and round to nearest
+/// within `u` of its result (`|fl(x) − x| ≤ u|fl(x)|`, exact where it
+/// underflows),
+///
+/// `|ĥ − den| ≤ u|ĥ| + u|ĉ|`.
+///
+/// Where `|ĉ| < 4|ĥ|`, `E_den < 5u|ĥ|`: a bound relative to `ĥ` whatever
+/// the cancellation, with no magnitude sum at all. (`|ĉ|` may equal
+/// `|ĥ|`: where `p₁` is lost next to `p₀ = −p₂`, `s₂ = 0` and `ĥ = ĉ =
+/// e₁`.) With `num`'s bound of the first pass, `E_num < 4.01uK|n̂um|`,
+/// the quotient's bound of the [module](self) is at most `|n̂um/ĥ|(5 +
+/// 4.01K)u(1 + 11u)`, and with the division's own rounding `|t̂ − t| <
+/// (4.02K + 6.02)u|t̂|`: the first pass's **`r = 13Ku`** covers it. The
+/// first pass's other comparisons keep out zero, subnormal, infinite and
+/// NaN roots, and `ĥ = 0` fails `|ĉ| < 4|ĥ|`.
+///
+/// ```
+/// use rayoracle::num::certify::certify_relative;
+/// use rayoracle::plane::stages::{filter_compensated, filter_relative};
+/// // d·n = (1 + 2⁻²³)(1 − 2⁻²³) − 1 = −2⁻⁴⁶ cancels 47 bits; the root is 2⁴⁶.
+/// let e = 2f64.powi(-23);
+/// let (o, d, a, n) = ([0.0; 3], [1.0 + e, -1.0, 0.0], [1.0, 0.0, 0.0], [1.0 - e, 1.0, 0.0]);
+/// assert!(!filter_relative::<f64>(o, d, a, n, 1.0).hit);
+/// let g = filter_compensated::<f64>(o, d, a, n, 1.0).relative;
+/// let (certified, end) = certify_relative(g.t, g.r);
+/// assert!(g.hit && certified && end as f32 == -(2f32.powi(46) - 2f32.powi(23)));
+/// ```
+#[inline(always)]
+pub fn filter_compensated<L: Real>(
+    o: [L; 3],
+    d: [L; 3],
+    a: [L; 3],
+    n: [L; 3],
+    shrink: f64,
+) -> Compensated<L> {
+    compensated_terms(&terms(o, d, a, n), d, n, shrink)
+}
+
+/// [`filter_compensated`] from the [`terms`] already computed.
+#[inline(always)]
+pub(crate) fn compensated_terms<L: Real>(
+    x: &Terms<L>,
+    d: [L; 3],
+    n: [L; 3],
+    shrink: f64,
+) -> Compensated<L> {
+    let two_sum = |a: L, b: L| {
+        let s = a + b;
+        let bb = s - a;
+        (s, (a - (s - bb)) + (b - bb))
+    };
+    let (s1, e1) = two_sum(d[0] * n[0], d[1] * n[1]);
+    let (s2, e2) = two_sum(s1, d[2] * n[2]);
+    let c = e1 + e2;
+    let h = s2 + c;
+    let (k, tiny) = (L::splat(K), L::splat(2f64.powi(-125)));
+    let (num, den, zero) = (x.num.abs(), h.abs(), L::splat(0.0));
+    let den_zero = h.eq(zero) & c.eq(zero);
+    Compensated {
+        relative: Relative {
+            hit: (L::splat(4.0) * den).gt(c.abs()) & (k * num).gt(x.m_num) & num.gt(tiny * den),
+            t: x.num / h,
+            r: L::splat(13.0 * K * U * shrink),
+        },
+        den_zero,
+        parallel: den_zero & num.gt(L::splat(8.0 * U * SLACK * shrink) * x.m_num),
+    }
+}
+
+/// The [second pass](filter_compensated)'s result: its hits, and the
+/// lines it shows parallel in exact arithmetic.
+#[derive(Clone, Copy, Debug)]
+pub struct Compensated<L: Real> {
+    /// The hits, as [`filter_relative`] gives them.
+    pub relative: Relative<L>,
+    /// Certified: `d·n = 0` exactly. Where `ĉ = 0`, `e₁ + e₂ = 0` exactly
+    /// (a sum that rounds to 0 is 0), so `ĥ = s₂ = den`.
+    pub den_zero: L::Mask,
+    /// Certified: `d·n = 0` and `|n̂um| > 8u m̂_num`, the filter's `E_num`
+    /// (widened by `1 + 2⁻³⁰`): parallel and off the plane.
+    pub parallel: L::Mask,
+}
+
+/// `(a − o)·n` where it is exact: as `Σaᵢnᵢ − Σoᵢnᵢ`, six products of f32
+/// values, exact in f64, summed with every sum checked to be exact
+/// ([`Tracked`]). `None` where a sum rounded. Its zeros are the lines in
+/// the plane, for a line with `d·n = 0`.
+///
+/// ```
+/// use rayoracle::plane::stages::exact_num;
+/// assert_eq!(exact_num([0.0, 0.0, 3.0], [3.0, 0.0, 0.0], [1.0, -1.0, 1.0]), Some(0.0));
+/// assert_eq!(exact_num([0.0; 3], [1.0, 0.0, 0.0], [1.0, 2f64.powi(-60), 0.0]), Some(1.0));
+/// assert_eq!(exact_num([1e-30, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 0.0, 0.0]), None);
+/// ```
+#[inline(always)]
+pub fn exact_num(o: [f64; 3], a: [f64; 3], n: [f64; 3]) -> Option<f64> {
+    let mut x = Tracked::new();
+    let q0 = x.add(a[0] * n[0], -(o[0] * n[0]));
+    let q1 = x.add(a[1] * n[1], -(o[1] * n[1]));
+    let q2 = x.add(a[2] * n[2], -(o[2] * n[2]));
+    let s = x.add(q0, q1);
+    let s = x.add(s, q2);
+    x.exact().then_some(s)
+}
+
 /// The [first pass](filter_relative)'s result.
 #[derive(Clone, Copy, Debug)]
 pub struct Relative<L: Real> {
@@ -186,10 +306,10 @@ pub struct Relative<L: Real> {
 /// The sums and their magnitude sums: `num = Σŵᵢnᵢ`, `den = Σdᵢnᵢ`.
 #[derive(Clone, Copy)]
 pub(crate) struct Terms<L: Real> {
-    num: L,
-    den: L,
-    m_num: L,
-    m_den: L,
+    pub(crate) num: L,
+    pub(crate) den: L,
+    pub(crate) m_num: L,
+    pub(crate) m_den: L,
 }
 
 impl Terms<f64> {
@@ -297,6 +417,7 @@ fn sums<L: Real>(x: Terms<L>, shrink: f64) -> Sums<L> {
 /// let h = tight([0.0, 0.0, 3.0], [1.0, 1.0, 0.0], [3.0, 0.0, 0.0], [1.0, -1.0, 1.0], 1.0);
 /// assert_eq!(h, Some(PlaneHit::InPlane));
 /// ```
+#[inline(always)]
 pub fn tight(o: [f64; 3], d: [f64; 3], a: [f64; 3], n: [f64; 3], shrink: f64) -> Option<PlaneHit> {
     let (s1, e1) = two_sum(d[0] * n[0], d[1] * n[1]);
     let (s2, e2) = two_sum(s1, d[2] * n[2]);
@@ -312,7 +433,8 @@ pub fn tight(o: [f64; 3], d: [f64; 3], a: [f64; 3], n: [f64; 3], shrink: f64) ->
         }
         // In the plane or just off it: `num` again, proving itself exact.
         let mut x = Tracked::new();
-        let w = [0, 1, 2].map(|i| x.sub(a[i], o[i]));
+        // Not `map`: a closure holding `&mut x` is not inlined.
+        let w = [x.sub(a[0], o[0]), x.sub(a[1], o[1]), x.sub(a[2], o[2])];
         let num = x.dot(w, n);
         return x.exact().then_some(if num == 0.0 {
             PlaneHit::InPlane
