@@ -6,9 +6,9 @@
 //! error, measured in units of the bound, where it crosses a decision (a
 //! sign, or an f32 rounding boundary). A seeded hill-climb maximises it,
 //! from seeds that sit on the edge of a decision by construction (roots by
-//! an f32 rounding midpoint, margins `d·n`, `Δ`, `β² − 4αγ` near 0), by
-//! moving single inputs by a few ulps or by powers of two, keeping every
-//! move that does not lower the factor; exact sphere tangents, which no
+//! an f32 rounding midpoint, numerators that round next to one, margins
+//! `d·n`, `Δ`, `β² − 4αγ` near 0), by moving single inputs by a few ulps
+//! or by powers of two, keeping every move that does not lower the factor; exact sphere tangents, which no
 //! one-input move keeps tangent, are sampled instead. The committed cases
 //! are seeds too, so each run goes on from the best found so far.
 //!
