@@ -8,14 +8,15 @@
 //! from seeds that sit on the edge of a decision by construction (roots by
 //! an f32 rounding midpoint, numerators that round next to one, margins
 //! `d·n`, `Δ`, `β² − 4αγ` near 0), by moving single inputs by a few ulps
-//! or by powers of two, keeping every move that does not lower the factor; exact sphere tangents, which no
-//! one-input move keeps tangent, are sampled instead. The committed cases
-//! are seeds too, so each run goes on from the best found so far.
+//! or by powers of two, keeping every move that does not lower the
+//! factor; exact sphere tangents, which no one-input move keeps tangent,
+//! are sampled instead. The committed cases are seeds too, so each run
+//! goes on from the best found so far.
 //!
-//! Regenerate the cases (about ten minutes) with
+//! Regenerate the cases (about a minute with `--release`) with
 //!
 //! ```text
-//! RAYORACLE_BOUNDS_SEARCH=300000 cargo test --test all bounds_search -- --nocapture
+//! RAYORACLE_BOUNDS_SEARCH=300000 cargo test --release --test all bounds_search -- --nocapture
 //! ```
 //!
 //! which writes `fixtures/bounds/{plane,sphere,quadric}.jsonl`: the best
