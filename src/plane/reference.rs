@@ -118,21 +118,29 @@ fn compensated(
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let c = stages::compensated_terms(x, w(ray.dir), w(plane.normal), shrink);
     let f = c.relative;
-    let stage = |filter: bool| if filter { Stage::Filter } else { Stage::Tight };
+    if x.m_den == 0.0 && x.m_num == 0.0 {
+        // Every term of both sums is 0: the filter's rule, without the
+        // exact sum.
+        return Some((PlaneHit::InPlane, Stage::Filter));
+    }
     if f.hit {
         let (certified, end) = certify_relative(f.t, f.r);
         if certified {
             return Some((PlaneHit::Hit(end as f32), Stage::Tight));
         }
     } else if c.parallel {
-        return Some((PlaneHit::Parallel, stage(x.m_den == 0.0)));
+        let stage = if x.m_den == 0.0 {
+            Stage::Filter
+        } else {
+            Stage::Tight
+        };
+        return Some((PlaneHit::Parallel, stage));
     } else if c.den_zero {
         let num = stages::exact_num(w(ray.origin), w(plane.point), w(plane.normal))?;
-        let filter = x.m_den == 0.0 && x.m_num == 0.0;
         return Some(if num == 0.0 {
-            (PlaneHit::InPlane, stage(filter))
+            (PlaneHit::InPlane, Stage::Tight)
         } else {
-            (PlaneHit::Parallel, stage(filter))
+            (PlaneHit::Parallel, Stage::Tight)
         });
     }
     None
