@@ -248,4 +248,44 @@ mod tests {
             assert_eq!(intersect_staged(&r, &p), (want, Stage::Tight), "z = {z:e}");
         }
     }
+
+    /// The second pass decides every line of the stiff catalogue's
+    /// near-parallel and in-plane families (`d·n` cancelling by up to
+    /// `10³⁰`, or exactly 0), as the oracle does: none reaches the full
+    /// filter's later stages.
+    #[test]
+    fn the_second_pass_decides_the_stiff_plane_families() {
+        use crate::case::{Case, Kind, parse_line};
+        let mut seen = 0;
+        for line in crate::fixtures::stiff(Kind::Plane).lines() {
+            let c = parse_line(line).expect("a stiff case");
+            let family = c.family.unwrap_or_default();
+            if family != "plane/near-parallel" && family != "plane/in-plane" {
+                continue;
+            }
+            let Case::Plane(r, p) = c.case else {
+                panic!("{family}: not a plane")
+            };
+            let (h, stage) = intersect_staged(&r, &p);
+            assert_eq!(Ok(h), exact::intersect(&r, &p), "{family}: {r:?} {p:?}");
+            assert!(
+                matches!(stage, Stage::Filter | Stage::Tight),
+                "{family}: {stage:?}"
+            );
+            let (o, d, a, n) = (
+                r.origin.as_dvec3().to_array(),
+                r.dir.as_dvec3().to_array(),
+                p.point.as_dvec3().to_array(),
+                p.normal.as_dvec3().to_array(),
+            );
+            let x = stages::terms(o, d, a, n);
+            let first = stages::relative_terms(&x, 1.0);
+            assert!(
+                first.hit || compensated(&r, &p, &x, 1.0) == Some((h, stage)),
+                "{family}: {r:?} {p:?}"
+            );
+            seen += 1;
+        }
+        assert_eq!(seen, 512);
+    }
 }
