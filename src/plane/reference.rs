@@ -73,28 +73,13 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
             return (PlaneHit::Hit(end as f32), Stage::Filter);
         }
     }
-    second_pass(ray, plane, x.num, x.den, x.m_num, x.m_den, shrink)
+    second_pass(ray, plane, x, shrink)
 }
 
-/// The second pass, out of line (inlined, it slows the first pass by
-/// about a seventh), then the rest, out of line again. The sums come as
-/// four arguments, in registers, not as a struct in memory.
+/// The second pass, out of line (inlined, it slowed the first pass by
+/// about a seventh), then the rest, out of line again.
 #[inline(never)]
-fn second_pass(
-    ray: &Ray,
-    plane: &Plane,
-    num: f64,
-    den: f64,
-    m_num: f64,
-    m_den: f64,
-    shrink: f64,
-) -> (PlaneHit, Stage) {
-    let x = stages::Terms {
-        num,
-        den,
-        m_num,
-        m_den,
-    };
+fn second_pass(ray: &Ray, plane: &Plane, x: stages::Terms<f64>, shrink: f64) -> (PlaneHit, Stage) {
     match compensated(ray, plane, &x, shrink) {
         Some(hs) => hs,
         None => filter_then_escalate(ray, plane, x, shrink),
