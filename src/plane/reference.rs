@@ -121,7 +121,10 @@ fn compensated(
         };
         return Some((PlaneHit::Parallel, stage));
     } else if c.den_zero {
-        let num = stages::exact_num(w(ray.origin), w(plane.point), w(plane.normal))?;
+        let (exact, num) = stages::exact_num(w(ray.origin), w(plane.point), w(plane.normal));
+        if !exact {
+            return None;
+        }
         return Some(if num == 0.0 {
             (PlaneHit::InPlane, Stage::Tight)
         } else {

@@ -269,25 +269,32 @@ pub struct Compensated<L: Real> {
 }
 
 /// `(a − o)·n` where it is exact: as `Σaᵢnᵢ − Σoᵢnᵢ`, six products of f32
-/// values, exact in f64, summed with every sum checked to be exact
-/// ([`Tracked`]). `None` where a sum rounded. Its zeros are the lines in
-/// the plane, for a line with `d·n = 0`.
+/// values, exact in f64, summed with every sum checked to be exact by
+/// Knuth's TwoSum (its error is 0). The mask says where no sum rounded;
+/// there the value is exact, and its zeros are the lines in the plane,
+/// for a line with `d·n = 0`.
 ///
 /// ```
 /// use rayoracle::plane::stages::exact_num;
-/// assert_eq!(exact_num([0.0, 0.0, 3.0], [3.0, 0.0, 0.0], [1.0, -1.0, 1.0]), Some(0.0));
-/// assert_eq!(exact_num([0.0; 3], [1.0, 0.0, 0.0], [1.0, 2f64.powi(-60), 0.0]), Some(1.0));
-/// assert_eq!(exact_num([1e-30, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 0.0, 0.0]), None);
+/// assert_eq!(exact_num::<f64>([0.0, 0.0, 3.0], [3.0, 0.0, 0.0], [1.0, -1.0, 1.0]), (true, 0.0));
+/// assert_eq!(exact_num::<f64>([0.0; 3], [1.0, 0.0, 0.0], [1.0, 2f64.powi(-60), 0.0]), (true, 1.0));
+/// assert!(!exact_num::<f64>([1e-30, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 0.0, 0.0]).0);
 /// ```
 #[inline(always)]
-pub fn exact_num(o: [f64; 3], a: [f64; 3], n: [f64; 3]) -> Option<f64> {
-    let mut x = Tracked::new();
-    let q0 = x.add(a[0] * n[0], -(o[0] * n[0]));
-    let q1 = x.add(a[1] * n[1], -(o[1] * n[1]));
-    let q2 = x.add(a[2] * n[2], -(o[2] * n[2]));
-    let s = x.add(q0, q1);
-    let s = x.add(s, q2);
-    x.exact().then_some(s)
+pub fn exact_num<L: Real>(o: [L; 3], a: [L; 3], n: [L; 3]) -> (L::Mask, L) {
+    let zero = L::splat(0.0);
+    let two_sum = |a: L, b: L| {
+        let s = a + b;
+        let bb = s - a;
+        (s, (a - (s - bb)) + (b - bb))
+    };
+    let (q0, e0) = two_sum(a[0] * n[0], -(o[0] * n[0]));
+    let (q1, e1) = two_sum(a[1] * n[1], -(o[1] * n[1]));
+    let (q2, e2) = two_sum(a[2] * n[2], -(o[2] * n[2]));
+    let (s, e3) = two_sum(q0, q1);
+    let (s, e4) = two_sum(s, q2);
+    let exact = e0.eq(zero) & e1.eq(zero) & e2.eq(zero) & e3.eq(zero) & e4.eq(zero);
+    (exact, s)
 }
 
 /// The [first pass](filter_relative)'s result.

@@ -234,9 +234,11 @@ fn finish<L: Real4>(
 }
 
 /// [`finish`] for a packet with a lane the first pass left (`hit` the
-/// lanes it certified, with their roots in `t`): the full filter
-/// ([`stages::filter`]) on the packet, on the baseline lanes (the same
-/// bits on any), then the scalar stages for what it leaves.
+/// lanes it certified, with their roots in `t`): the second pass
+/// ([`stages::filter_compensated`], with [`stages::exact_num`] where `d·n`
+/// is exactly 0) and the full filter ([`stages::filter`]) on the packet,
+/// on the baseline lanes (the same bits on any), then the scalar stages
+/// for what they leave.
 #[cold]
 #[inline(never)]
 fn finish_full(
@@ -247,17 +249,29 @@ fn finish_full(
     p: &Plane4,
 ) -> PlaneHit4 {
     let (o, d, a, n) = widened::<F64x4>(ray, p);
-    let f = stages::filter(o, d, a, n, 1.0);
+    let x = stages::terms(o, d, a, n);
+    // The second pass: d·n summed once compensated.
+    let c = stages::compensated_terms(&x, d, n, 1.0);
+    let (second, end2) = certify_relative(c.relative.t, c.relative.r);
+    let f = stages::filter_terms(x, 1.0);
     let (certified, end) = certify_end(f.t, f.r, f.a);
     let m = F64x4::mask_i32;
-    // Where both passes certify a hit, both give the one correctly rounded
-    // root; a hit of the first pass is never parallel (its d·n cancels
-    // less than K times, so is not 0).
-    let h = hit | m(f.hit & certified);
-    let t = hit.bitselect(cast(t), cast(end.narrow()));
+    // Where passes certify a hit, each gives the one correctly rounded
+    // root; a hit is never parallel (its d·n is certainly not 0).
+    let h2 = m(c.relative.hit & second);
+    let h = hit | h2 | m(f.hit & certified);
+    let t = hit.bitselect(
+        cast(t),
+        cast(h2.bitselect(cast(end2.narrow()), cast(end.narrow()))),
+    );
     let t: f32x4 = cast(h.bitselect(t, cast(f32x4::splat(f32::NAN))));
-    let par = m(f.parallel);
-    let done = h | par | m(f.in_plane);
+    // Where d·n is exactly 0, (a − o)·n summed exactly, where it can be,
+    // tells a line in the plane from one off it.
+    let (exact, num) = stages::exact_num(o, a, n);
+    let zero = F64x4::splat(0.0);
+    let settled = c.den_zero & exact;
+    let par = m(f.parallel | c.parallel | (settled & !num.eq(zero)));
+    let done = h | par | m(f.in_plane | (settled & num.eq(zero)));
     // ONE where hit, NONE where parallel (never both), else ALL.
     let k = i32x4::splat;
     let class = k(ALL) + (h & k(ONE - ALL)) + (par & k(NONE - ALL));
