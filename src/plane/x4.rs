@@ -78,9 +78,9 @@ pub struct PlaneHit4 {
 /// Intersects four lines with four planes, lane by lane: the filter on
 /// four f64 lanes, first with the root's bound of
 /// [`stages::filter_relative`], then, for a packet with a lane it leaves,
-/// with [`stages::filter`]'s, and the scalar stages for any lane left
-/// undecided, so every lane equals [`super::reference::intersect`] bit
-/// for bit.
+/// with [`stages::filter_compensated`]'s and [`stages::filter`]'s, and
+/// the scalar stages for any lane left undecided, so every lane equals
+/// [`super::reference::intersect`] bit for bit.
 ///
 /// ```
 /// use rayoracle::{Ray, ray4::Ray4, plane::{Plane, PlaneHit, reference, x4}};
@@ -407,6 +407,42 @@ mod tests {
         assert_eq!(full.parallel.lanes(), [false, true, false, false]);
         let want = rays.map(|r| reference::intersect(&r, &p));
         assert!(matches!(want[0], PlaneHit::Hit(_)), "{want:?}");
+        assert_eq!(intersect_baseline(&r4, &p4).lanes(), want);
+        assert_eq!(intersect(&r4, &p4).lanes(), want);
+    }
+
+    /// Lines whose `d·n` cancels term by term: near parallel (`2⁻⁶⁰`,
+    /// past the full filter), in the plane, and off it. The packet's
+    /// second pass decides all three on its lanes, and the packet gives
+    /// the reference's answers.
+    #[test]
+    fn the_second_pass_decides_cancelling_lanes_on_the_packet() {
+        use glam::Vec3;
+        let p = Plane::new(Vec3::new(1.0, 2.0, 3.0), Vec3::ONE);
+        let rays = [
+            crate::Ray::new(Vec3::ZERO, Vec3::new(1.0, -1.0, 2f32.powi(-60))),
+            crate::Ray::new(Vec3::new(2.0, 1.0, 3.0), Vec3::new(1.0, -1.0, 0.0)),
+            crate::Ray::new(Vec3::ZERO, Vec3::new(1.0, -1.0, 0.0)),
+            crate::Ray::new(Vec3::ZERO, Vec3::Z),
+        ];
+        let (r4, p4) = (Ray4::from_rays(rays), Plane4::splat(&p));
+        let (o, d, a, n) = widened::<F64x4>(&r4, &p4);
+        let full = stages::filter(o, d, a, n, 1.0);
+        assert_eq!(full.hit.lanes(), [false, false, false, true]);
+        let c = stages::filter_compensated(o, d, a, n, 1.0);
+        assert_eq!(c.relative.hit.lanes(), [true, false, false, true]);
+        assert_eq!(c.den_zero.lanes(), [false, true, true, false]);
+        assert_eq!(c.parallel.lanes(), [false, false, true, false]);
+        let (exact, num) = stages::exact_num(o, a, n);
+        assert_eq!(exact.lanes(), [true; 4]);
+        assert_eq!(num.to_array(), [6.0, 0.0, 6.0, 6.0]);
+        let want = [
+            PlaneHit::Hit(6.0 * 2f32.powi(60)),
+            PlaneHit::InPlane,
+            PlaneHit::Parallel,
+            PlaneHit::Hit(6.0),
+        ];
+        assert_eq!(rays.map(|r| reference::intersect(&r, &p)), want);
         assert_eq!(intersect_baseline(&r4, &p4).lanes(), want);
         assert_eq!(intersect(&r4, &p4).lanes(), want);
     }
