@@ -105,4 +105,20 @@ proptest! {
         prop_assume!(d != Vec3::ZERO);
         judge(&Ray::new(o, d), &Plane::new(a, n))?;
     }
+
+    /// A line parallel to the plane term by term but for one tiny product:
+    /// `d = n × eᵢ` (scaled) with its zero component set to `ε`, so `d·n =
+    /// εnᵢ` exactly while the other two products cancel, as in the stiff
+    /// catalogue's near-parallel family, for `ε` from about 1 down to
+    /// subnormal. The plane's second pass decides most of these; the
+    /// answers of the reference and x4 are the oracle's.
+    #[test]
+    fn parallel_but_for_one_tiny_term(
+        n in unitish(), i in 0usize..3, m in 1u32..(1 << 24), e in -160i32..0,
+        o in vec_in(100.0), a in vec_in(100.0), s in log_uniform(-20.0, 20.0),
+    ) {
+        let mut d = n.cross(Vec3::AXES[i]) * s;
+        d[i] = (f64::from(m) * 2f64.powi(e - 24)) as f32;
+        judge(&Ray::new(o, d), &Plane::new(a, n))?;
+    }
 }
