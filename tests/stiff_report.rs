@@ -367,6 +367,13 @@ fn ftz_and_daz_change_no_answer() {
         Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1e10)),
         plane::Plane::new(Vec3::new(0.0, 0.0, 1e-30), Vec3::Z),
     ));
+    // A line parallel to the plane but for a subnormal term of d·n
+    // (1 − 1 + 10⁻⁴⁰), which the plane's second pass would sum to an exact
+    // 0 if DAZ read it as 0: a hit at t ≈ 10¹⁰.
+    cases.push(Case::Plane(
+        Ray::new(Vec3::ZERO, Vec3::new(1.0, -1.0, 1e-40)),
+        plane::Plane::new(Vec3::new(1e-30, 0.0, 0.0), Vec3::ONE),
+    ));
     cases.push(Case::Sphere(
         Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1e18)),
         sphere::Sphere::new(Vec3::new(0.0, 0.0, 1e-20), 1e-21),
