@@ -56,18 +56,20 @@
 //! ```
 
 use super::certify::{SLACK, U, certify, div, quotient_bound};
+use super::real::Real;
 
 /// Veltkamp's splitter for f64, `2²⁷ + 1`.
 const SPLITTER: f64 = 134_217_729.0;
 
-/// `a + b` and its rounding error, exactly (Knuth's TwoSum).
+/// `a + b` and its rounding error, exactly (Knuth's TwoSum), on one lane
+/// or on four.
 ///
 /// ```
 /// use rayoracle::num::dd::two_sum;
 /// assert_eq!(two_sum(1.0, 2f64.powi(-60)), (1.0, 2f64.powi(-60)));
 /// ```
 #[inline(always)]
-pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
+pub fn two_sum<L: Real>(a: L, b: L) -> (L, L) {
     let s = a + b;
     let bb = s - a;
     (s, (a - (s - bb)) + (b - bb))

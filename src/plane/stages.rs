@@ -231,11 +231,6 @@ pub(crate) fn compensated_terms<L: Real>(
     n: [L; 3],
     shrink: f64,
 ) -> Compensated<L> {
-    let two_sum = |a: L, b: L| {
-        let s = a + b;
-        let bb = s - a;
-        (s, (a - (s - bb)) + (b - bb))
-    };
     let (s1, e1) = two_sum(d[0] * n[0], d[1] * n[1]);
     let (s2, e2) = two_sum(s1, d[2] * n[2]);
     let c = e1 + e2;
@@ -283,11 +278,6 @@ pub struct Compensated<L: Real> {
 #[inline(always)]
 pub fn exact_num<L: Real>(o: [L; 3], a: [L; 3], n: [L; 3]) -> (L::Mask, L) {
     let zero = L::splat(0.0);
-    let two_sum = |a: L, b: L| {
-        let s = a + b;
-        let bb = s - a;
-        (s, (a - (s - bb)) + (b - bb))
-    };
     let (q0, e0) = two_sum(a[0] * n[0], -(o[0] * n[0]));
     let (q1, e1) = two_sum(a[1] * n[1], -(o[1] * n[1]));
     let (q2, e2) = two_sum(a[2] * n[2], -(o[2] * n[2]));
