@@ -182,12 +182,13 @@ pub(crate) fn relative_terms<L: Real>(x: &Terms<L>, shrink: f64) -> Relative<L> 
 ///
 /// # The bound
 ///
-/// The products `pᵢ = dᵢnᵢ` of f32 values are exact (and below `2²⁵⁶`, so
-/// no sum of them overflows). Knuth's TwoSum gives `(s₁, e₁) = TwoSum(p₀,
-/// p₁)` and `(s₂, e₂) = TwoSum(s₁, p₂)`, so `den = s₂ + e₁ + e₂` exactly.
-/// With `ĉ = fl(e₁ + e₂)` and `ĥ = fl(s₂ + ĉ)`, and round to nearest
-/// within `u` of its result (`|fl(x) − x| ≤ u|fl(x)|`, exact where it
-/// underflows),
+/// The products `pᵢ = dᵢnᵢ` of f32 values are exact, below `2²⁵⁶` (so no
+/// sum of them overflows) and multiples of `2⁻²⁹⁸`, as is every sum and
+/// rounding error below: none is subnormal, and flush-to-zero changes
+/// none. Knuth's TwoSum gives `(s₁, e₁) = TwoSum(p₀, p₁)` and `(s₂, e₂) =
+/// TwoSum(s₁, p₂)`, so `den = s₂ + e₁ + e₂` exactly. With `ĉ = fl(e₁ + e₂)`
+/// and `ĥ = fl(s₂ + ĉ)`, and round to nearest within `u` of its result
+/// (`|fl(x) − x| ≤ u|fl(x)|`),
 ///
 /// `|ĥ − den| ≤ u|ĥ| + u|ĉ|`.
 ///
@@ -267,7 +268,8 @@ pub struct Compensated<L: Real> {
 /// values, exact in f64, summed with every sum checked to be exact by
 /// Knuth's TwoSum (its error is 0). The mask says where no sum rounded;
 /// there the value is exact, and its zeros are the lines in the plane,
-/// for a line with `d·n = 0`.
+/// for a line with `d·n = 0`. Every value is a multiple of `2⁻²⁹⁸`, so
+/// flush-to-zero changes none.
 ///
 /// ```
 /// use rayoracle::plane::stages::exact_num;
