@@ -57,17 +57,17 @@ fn plane_first(c: &Case, s: f64) -> Option<Answer> {
     let Case::Plane(r, p) = c else { return None };
     let (o, d, a, n) = (w(r.origin), w(r.dir), w(p.point), w(p.normal));
     let f = plane::stages::filter_relative(o, d, a, n, s);
-    let (certified, end) = rayoracle::num::certify::certify_relative(f.t, f.r);
-    (f.hit && certified).then(|| answer(&plane::PlaneHit::Hit(end as f32)))
+    let certified = rayoracle::num::certify::certify_relative(f.t, f.r);
+    (f.hit && certified).then(|| answer(&plane::PlaneHit::Hit(f.t as f32)))
 }
 
 fn plane_second(c: &Case, s: f64) -> Option<Answer> {
     let Case::Plane(r, p) = c else { return None };
     let (o, d, a, n) = (w(r.origin), w(r.dir), w(p.point), w(p.normal));
     let f = plane::stages::filter_compensated(o, d, a, n, s);
-    let (certified, end) = rayoracle::num::certify::certify_relative(f.relative.t, f.relative.r);
+    let certified = rayoracle::num::certify::certify_relative(f.relative.t, f.relative.r);
     if f.relative.hit && certified {
-        Some(answer(&plane::PlaneHit::Hit(end as f32)))
+        Some(answer(&plane::PlaneHit::Hit(f.relative.t as f32)))
     } else {
         f.parallel.then(|| answer(&plane::PlaneHit::Parallel))
     }

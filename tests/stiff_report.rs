@@ -463,6 +463,39 @@ fn ftz_and_daz_change_no_answer() {
         );
     }
     assert!(!rayoracle::num::certify::denormals_are_zero());
+    // Planes packed under DAZ and used outside it: a packet holds the
+    // values it was given, subnormal ones too.
+    let planes: Vec<(Ray, plane::Plane)> = (cases.iter())
+        .filter_map(|c| match c {
+            Case::Plane(r, p) => Some((*r, *p)),
+            _ => None,
+        })
+        .collect();
+    let (tx, rx) = std::sync::mpsc::channel();
+    let own = planes.clone();
+    std::thread::spawn(move || {
+        set_csr(saved | 1 << 6);
+        let _ = tx.send(
+            own.iter()
+                .map(|(_, p)| plane::x4::Plane4::splat(p))
+                .collect::<Vec<_>>(),
+        );
+    });
+    let packed = rx.recv().expect("planes packed under DAZ");
+    let subnormal = |p: &plane::Plane| {
+        (p.point.to_array().into_iter())
+            .chain(p.normal.to_array())
+            .any(|x| x != 0.0 && x.abs() < f32::MIN_POSITIVE)
+    };
+    assert!(planes.iter().filter(|(_, p)| subnormal(p)).count() >= 4);
+    for ((r, p), p4) in planes.iter().zip(&packed) {
+        let want = [plane::reference::intersect(r, p); 4];
+        assert_eq!(
+            plane::x4::intersect(&Ray4::splat(*r), p4).lanes(),
+            want,
+            "{r:?} {p:?}"
+        );
+    }
     let tiny = plain
         .iter()
         .flatten()

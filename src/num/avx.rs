@@ -193,6 +193,10 @@ impl Real for Avx4 {
     fn denormals_are_zero() -> bool {
         crate::num::certify::daz_probe::<true>()
     }
+    #[inline(always)]
+    fn least_subnormal() -> Avx4 {
+        Self::splat(crate::num::certify::least_subnormal::<true>())
+    }
     type Mask = AvxMask;
     #[inline(always)]
     fn splat(x: f64) -> Avx4 {
@@ -235,6 +239,20 @@ impl Real for Avx4 {
         AvxMask(avx!(_mm256_castsi256_pd(_mm256_cvtepi32_epi64(m))))
     }
     #[inline(always)]
+    fn off_midpoint(self, m: i64) -> AvxMask {
+        avx!({
+            let b = _mm256_sub_epi64(
+                _mm256_castpd_si256(self.0),
+                _mm256_set1_epi64x((1 << 28) - m),
+            );
+            let x = _mm256_and_si256(b, _mm256_set1_epi64x((1 << 29) - 1));
+            AvxMask(_mm256_castsi256_pd(_mm256_cmpgt_epi64(
+                x,
+                _mm256_set1_epi64x(2 * m),
+            )))
+        })
+    }
+    #[inline(always)]
     fn equal_f32(lo: Avx4, hi: Avx4) -> AvxMask {
         let (a, b) = avx!((_mm256_cvtpd_ps(lo.0), _mm256_cvtpd_ps(hi.0)));
         let m = avx!(_mm_castps_si128(_mm_cmpeq_ps(a, b)));
@@ -243,6 +261,10 @@ impl Real for Avx4 {
 }
 
 impl Real4 for Avx4 {
+    #[inline(always)]
+    fn load(x: &[f64; 4]) -> Avx4 {
+        Avx4(avx!(_mm256_loadu_pd(x.as_ptr())))
+    }
     #[inline(always)]
     fn widen(x: f32x4) -> Avx4 {
         Avx4(avx!(_mm256_cvtps_pd(cast::<f32x4, __m128>(x))))

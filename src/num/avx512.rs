@@ -147,6 +147,10 @@ impl Real for Avx8 {
     fn denormals_are_zero() -> bool {
         crate::num::certify::daz_probe::<true>()
     }
+    #[inline(always)]
+    fn least_subnormal() -> Avx8 {
+        Self::splat(crate::num::certify::least_subnormal::<true>())
+    }
     type Mask = Avx8Mask;
     #[inline(always)]
     fn splat(x: f64) -> Avx8 {
@@ -188,6 +192,17 @@ impl Real for Avx8 {
             _mm256_castps_si256(b)
         ));
         Avx8Mask(bits & avx512!(_mm256_cmp_ps_mask::<_CMP_EQ_OQ>(a, b)))
+    }
+    #[inline(always)]
+    fn off_midpoint(self, m: i64) -> Avx8Mask {
+        avx512!({
+            let b = _mm512_sub_epi64(
+                _mm512_castpd_si512(self.0),
+                _mm512_set1_epi64((1 << 28) - m),
+            );
+            let x = _mm512_and_si512(b, _mm512_set1_epi64((1 << 29) - 1));
+            Avx8Mask(_mm512_cmpgt_epi64_mask(x, _mm512_set1_epi64(2 * m)))
+        })
     }
     #[inline(always)]
     fn equal_f32(lo: Avx8, hi: Avx8) -> Avx8Mask {

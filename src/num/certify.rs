@@ -21,6 +21,13 @@
 //! the product and the sum are covered by the `2⁻⁵¹ = 4·2⁻⁵³`. The kernels
 //! widen `r` and `a` by `1 + 2⁻³⁰`, which covers the roundings of the few
 //! dozen operations that evaluate them.
+//!
+//! A bound relative alone, `e = |t|·r` with `|t|` in `f32`'s normal range,
+//! is certified from `t`'s bits instead ([`certify_relative`]): the
+//! midpoints between neighbouring `f32` values are the f64 values whose 29
+//! dropped bits are `0x1000_0000`, and the enclosure spans at most
+//! about `r·2⁵³` bit patterns on either side of `t`'s. Three integer operations,
+//! exact, replace two products, two conversions and a comparison.
 
 use super::real::Real;
 
@@ -71,29 +78,43 @@ pub fn certify_end<L: Real>(t: L, r: L, a: L) -> (L::Mask, L) {
     (L::same_f32(lo, t * (one + w) + a), lo)
 }
 
-/// [`certify_end`] with a relative bound alone, `e = |t|·r`: the ends are
-/// `t(1 − w)` and `t(1 + w)`, two products after `t`, for `r < 1/2`.
-/// `t` must be finite where the caller uses the mask (an infinite `t` has
-/// ends that round alike).
+/// [`certify`] with a relative bound alone, `e = |t|·r`, read from `t`'s
+/// bits: whether every value within `e` of `t` rounds to `t`'s `f32`.
+/// `t` must be 0, or finite with `|t| ≥ 2⁻¹²⁶`, where the caller uses
+/// the mask, and `r < 2⁻³⁰`.
+///
+/// Rounding to the nearest `f32` is monotone, and changes value only at
+/// the midpoints between neighbouring `f32` values. From `2⁻¹²⁶` up, an
+/// f64 is a midpoint exactly where the 29 bits that rounding drops are
+/// `0x1000_0000`, half an `f32` ulp (past `f32::MAX` every value rounds
+/// to ∞, and the midpoints there change nothing). Positive f64 values
+/// are ordered as their bit patterns. With `2ᵏ ≤ |t| < 2ᵏ⁺¹`, an f64 ulp
+/// is `2ᵏ⁻⁵²` in `t`'s binade, so `[|t|, |t| + e]` spans fewer than
+/// `e/2ᵏ⁻⁵² < r·2⁵³` patterns (fewer still past `2ᵏ⁺¹`, where ulps
+/// double), and so does `[|t| − e, |t|]` while it stays above `2ᵏ`. One
+/// that crosses below, where ulps are half as large, spans at most
+/// `2e/2ᵏ⁻⁵²` patterns, and crossing needs `|t| − 2ᵏ < e`, so `|t| <
+/// 2ᵏ(1 + 2r)`: at most `r·2⁵³(1 + 2r)`, below `r·2⁵³ + 1`. So where `t`'s
+/// last 29 bits are more than `m = ⌈r·2⁵³⌉ + 2` from `0x1000_0000`
+/// (modulo `2²⁹`), no midpoint lies in the enclosure, and every value in
+/// it rounds as `t` does. The test is three exact integer operations
+/// ([`Real::off_midpoint`]), with no rounding of its own, and waits on
+/// nothing but `t`. An exact 0 certifies (`e = 0`).
 ///
 /// ```
 /// use rayoracle::num::certify::{certify, certify_relative};
-/// let (ok, end) = certify_relative(1.0 / 3.0, 2f64.powi(-40));
-/// assert!(ok && end as f32 == 1.0f32 / 3.0);
-/// assert_eq!(certify_relative(0.1, 2f64.powi(-30)).0, certify(0.1, 2f64.powi(-30), 0.0));
-/// // An exact 0 certifies, with its sign.
-/// assert_eq!(certify_relative(0.0, 2f64.powi(-30)), (true, 0.0));
+/// assert!(certify_relative(1.0 / 3.0, 2f64.powi(-40)));
+/// assert_eq!(certify_relative(0.1, 2f64.powi(-30)), certify(0.1, 2f64.powi(-30), 0.0));
+/// assert!(certify_relative(0.0, 2f64.powi(-30)) && certify_relative(-2.0, 2f64.powi(-30)));
 /// let mid = 1.0 + f32::EPSILON as f64 / 2.0;
-/// assert!(!certify_relative(mid, 2f64.powi(-50)).0);
-/// assert!(!certify_relative(f64::NAN, 0.0).0);
+/// assert!(!certify_relative(mid, 2f64.powi(-50)) && !certify_relative(-mid, 2f64.powi(-50)));
+/// // Just below a midpoint: certified while the enclosure stays below it.
+/// let below = mid - 2f64.powi(-40);
+/// assert!(certify_relative(below, 2f64.powi(-44)) && !certify_relative(below, 2f64.powi(-39)));
 /// ```
 #[inline(always)]
-pub fn certify_relative<L: Real>(t: L, r: L) -> (L::Mask, L) {
-    let (one, w) = (L::splat(1.0), r + L::splat(2f64.powi(-51)));
-    let lo = t * (one - w);
-    // Both ends have t's sign (w < 1), so equal as floats is the same
-    // f32, bit for bit.
-    (L::equal_f32(lo, t * (one + w)), lo)
+pub fn certify_relative<L: Real>(t: L, r: f64) -> L::Mask {
+    t.off_midpoint((r * 2f64.powi(53)).ceil() as i64 + 2)
 }
 
 /// The bound on a quotient, in the two parts [`certify`] takes. For `t̂ =
@@ -219,6 +240,19 @@ pub fn denormals_are_zero() -> bool {
 /// a false dependency on some Intel cores).
 #[inline(always)]
 pub(crate) fn daz_probe<const VEX: bool>() -> bool {
+    least_subnormal::<VEX>() == 0.0
+}
+
+/// The least subnormal `f32`, `2⁻¹⁴⁹`, converted to f64 at run time,
+/// VEX-encoded where `VEX`: 0 under denormals-are-zero. A kernel that
+/// multiplies a comparison's side by it certifies nothing there, with no
+/// branch of its own ([`crate::plane::stages::filter_relative`]).
+///
+/// ```
+/// assert_eq!(rayoracle::num::certify::least_subnormal::<false>(), 2f64.powi(-149));
+/// ```
+#[inline(always)]
+pub fn least_subnormal<const VEX: bool>() -> f64 {
     #[cfg(target_arch = "x86_64")]
     {
         let (x, mut y) = (f32::from_bits(1), 0.0f64);
@@ -249,11 +283,15 @@ pub(crate) fn daz_probe<const VEX: bool>() -> bool {
                 );
             }
         }
-        y == 0.0
+        y
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
-        !subnormals_survive()
+        if subnormals_survive() {
+            2f64.powi(-149)
+        } else {
+            0.0
+        }
     }
 }
 

@@ -15,7 +15,7 @@
 //! ```
 
 use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
-use wide::{f32x4, f64x4, i32x4};
+use wide::{f32x4, f64x4, i32x4, i64x4};
 
 /// A lane type of f64 values: `f64` or [`F64x4`].
 pub trait Real:
@@ -58,11 +58,24 @@ pub trait Real:
     /// [`Real::same_f32`] where `lo` and `hi` cannot have different signs,
     /// at one comparison instead of two.
     fn equal_f32(lo: Self, hi: Self) -> Self::Mask;
+    /// Whether the last 29 bits of each lane's f64 pattern, those that
+    /// rounding to f32 drops, are more than `m` from `0x1000_0000`, the
+    /// pattern of a rounding midpoint, counted modulo `2²⁹`: exact integer
+    /// operations, the test of
+    /// [`certify_relative`](crate::num::certify::certify_relative).
+    fn off_midpoint(self, m: i64) -> Self::Mask;
     /// [`denormals_are_zero`](crate::num::certify::denormals_are_zero),
     /// probed in this type's instruction encoding (VEX for the AVX types).
     #[inline(always)]
     fn denormals_are_zero() -> bool {
         crate::num::certify::denormals_are_zero()
+    }
+    /// [`least_subnormal`](crate::num::certify::least_subnormal) in every
+    /// lane, converted in this type's instruction encoding: `2⁻¹⁴⁹`, or 0
+    /// under denormals-are-zero.
+    #[inline(always)]
+    fn least_subnormal() -> Self {
+        Self::splat(crate::num::certify::least_subnormal::<false>())
     }
 }
 
@@ -105,7 +118,17 @@ impl Real for f64 {
     fn equal_f32(lo: f64, hi: f64) -> bool {
         lo as f32 == hi as f32
     }
+    #[inline(always)]
+    fn off_midpoint(self, m: i64) -> bool {
+        let x = self.to_bits().wrapping_sub((MIDPOINT - m) as u64) & DROPPED;
+        x > 2 * m as u64
+    }
 }
+
+/// The bits of an f64 that rounding to f32 drops (in f32's normal range).
+const DROPPED: u64 = (1 << 29) - 1;
+/// Those bits at an f32 rounding midpoint: one half of an f32 ulp.
+const MIDPOINT: i64 = 1 << 28;
 
 /// Four `f64` lanes (`wide::f64x4`: one AVX register where the build
 /// enables AVX, two SSE2 registers otherwise).
@@ -186,6 +209,8 @@ pub trait Real4: Real {
     fn mask_i32(m: Self::Mask) -> i32x4;
     /// Whether every lane of `m` is set.
     fn all(m: Self::Mask) -> bool;
+    /// Four lanes from memory.
+    fn load(x: &[f64; 4]) -> Self;
 }
 
 /// Two values of a lane type side by side, operated on together: eight
@@ -243,6 +268,11 @@ impl<L: Real> Real for Pair<L> {
     fn denormals_are_zero() -> bool {
         L::denormals_are_zero()
     }
+    #[inline(always)]
+    fn least_subnormal() -> Pair<L> {
+        let x = L::least_subnormal();
+        Pair(x, x)
+    }
     type Mask = Pair<L::Mask>;
     #[inline(always)]
     fn splat(x: f64) -> Pair<L> {
@@ -279,6 +309,10 @@ impl<L: Real> Real for Pair<L> {
     #[inline(always)]
     fn equal_f32(lo: Pair<L>, hi: Pair<L>) -> Pair<L::Mask> {
         Pair(L::equal_f32(lo.0, hi.0), L::equal_f32(lo.1, hi.1))
+    }
+    #[inline(always)]
+    fn off_midpoint(self, m: i64) -> Pair<L::Mask> {
+        Pair(self.0.off_midpoint(m), self.1.off_midpoint(m))
     }
 }
 
@@ -365,6 +399,10 @@ mod sse2 {
 
     impl Real4 for F64x4 {
         #[inline(always)]
+        fn load(x: &[f64; 4]) -> F64x4 {
+            F64x4::from(*x)
+        }
+        #[inline(always)]
         fn widen(x: f32x4) -> F64x4 {
             let v: m128 = cast(x);
             let hi = safe_arch::move_high_low_m128(v, v);
@@ -386,6 +424,19 @@ mod sse2 {
         fn all(m: M4) -> bool {
             m.0.to_bitmask() == 0b1111
         }
+    }
+
+    /// Where each lane of `x`, below `2³¹`, exceeds `k`: its low 32 bits
+    /// compared, as SSE2 compares no 64-bit integers.
+    #[inline(always)]
+    pub(super) fn low_gt(x: i64x4, k: i32) -> M4 {
+        let h: [safe_arch::m128i; 2] = cast(x);
+        let k = safe_arch::set_splat_i32_m128i(k);
+        let f = |v| {
+            let low = safe_arch::shuffle_ai_f32_all_m128i::<0b10_10_00_00>(v);
+            safe_arch::cmp_gt_mask_i32_m128i(low, k)
+        };
+        M4(cast([f(h[0]), f(h[1])]))
     }
 
     /// Each 32-bit mask lane repeated to 64 bits.
@@ -415,6 +466,10 @@ mod portable {
 
     impl Real4 for F64x4 {
         #[inline(always)]
+        fn load(x: &[f64; 4]) -> F64x4 {
+            F64x4::from(*x)
+        }
+        #[inline(always)]
         fn widen(x: f32x4) -> F64x4 {
             F64x4::from_f32(x.to_array())
         }
@@ -432,6 +487,12 @@ mod portable {
         }
     }
 
+    /// Where each lane of `x` exceeds `k`.
+    #[inline(always)]
+    pub(super) fn low_gt(x: i64x4, k: i32) -> M4 {
+        M4(wide::bytemuck::cast(x.simd_gt(i64x4::splat(k.into()))))
+    }
+
     /// Each 32-bit mask lane repeated to 64 bits.
     #[inline(always)]
     pub(super) fn widen_mask(m: i32x4) -> M4 {
@@ -442,9 +503,9 @@ mod portable {
 }
 
 #[cfg(not(target_arch = "x86_64"))]
-use portable::widen_mask;
+use portable::{low_gt, widen_mask};
 #[cfg(target_arch = "x86_64")]
-use sse2::widen_mask;
+use sse2::{low_gt, widen_mask};
 
 macro_rules! lanewise {
     ($tr:ident, $f:ident, $op:tt) => {
@@ -567,6 +628,12 @@ impl Real for F64x4 {
     #[inline(always)]
     fn equal_f32(lo: F64x4, hi: F64x4) -> M4 {
         widen_mask(wide::bytemuck::cast(lo.narrow().simd_eq(hi.narrow())))
+    }
+    #[inline(always)]
+    fn off_midpoint(self, m: i64) -> M4 {
+        let b: i64x4 = wide::bytemuck::cast(self.0);
+        let x = (b - i64x4::splat(MIDPOINT - m)) & i64x4::splat(DROPPED as i64);
+        low_gt(x, m as i32 * 2)
     }
 }
 

@@ -49,18 +49,16 @@ pub fn intersect_staged(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
     // The environment meets an input only through DAZ, and a result only
-    // through FTZ where it is subnormal ([`needs_probe`]): the inputs are
-    // scanned only under DAZ; the first pass certifies no subnormal root,
-    // and the full filter reads the register only for one.
-    if denormals_are_zero() && needs_probe(&inputs(ray, plane), &[]) {
-        return (exact_stage(ray, plane), Stage::Exact);
-    }
+    // through FTZ where it is subnormal ([`needs_probe`]). The first pass
+    // certifies no subnormal root, and nothing under DAZ; after it, the
+    // inputs are scanned only under DAZ, and the full filter reads the
+    // register only for a subnormal root.
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
     // The first pass, whose bound needs nothing after the division; the
     // second pass and the full filter only for what it leaves, from the
     // same sums.
-    let x = stages::terms(o, d, a, n);
+    let x = stages::first_terms(o, d, a, n);
     let f = stages::relative_terms(&x, shrink);
     // The pass's class is known before its quotient: a line it leaves
     // does not wait on the division (which the CPU starts anyway, on the
@@ -68,9 +66,8 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
     if f.hit {
         // A root the pass certifies is normal as an f32: no flush to ask
         // about.
-        let (certified, end) = certify_relative(f.t, f.r);
-        if certified {
-            return (PlaneHit::Hit(end as f32), Stage::Filter);
+        if certify_relative(f.t, f.r) {
+            return (PlaneHit::Hit(f.t as f32), Stage::Filter);
         }
     }
     second_pass(ray, plane, x, shrink)
@@ -79,7 +76,12 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
 /// The second pass, out of line (inlined, it slowed the first pass by
 /// about a seventh), then the rest, out of line again.
 #[inline(never)]
-fn second_pass(ray: &Ray, plane: &Plane, x: stages::Terms<f64>, shrink: f64) -> (PlaneHit, Stage) {
+fn second_pass(ray: &Ray, plane: &Plane, x: stages::First<f64>, shrink: f64) -> (PlaneHit, Stage) {
+    if denormals_are_zero() && needs_probe(&inputs(ray, plane), &[]) {
+        return (exact_stage(ray, plane), Stage::Exact);
+    }
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let x = x.terms(w(ray.dir), w(plane.normal));
     match compensated(ray, plane, &x, shrink) {
         Some(hs) => hs,
         None => filter_then_escalate(ray, plane, x, shrink),
@@ -109,9 +111,8 @@ fn compensated(
         return Some((PlaneHit::InPlane, Stage::Filter));
     }
     if f.hit {
-        let (certified, end) = certify_relative(f.t, f.r);
-        if certified {
-            return Some((PlaneHit::Hit(end as f32), Stage::Tight));
+        if certify_relative(f.t, f.r) {
+            return Some((PlaneHit::Hit(f.t as f32), Stage::Tight));
         }
     } else if c.parallel {
         let stage = if x.m_den == 0.0 {
@@ -227,11 +228,13 @@ mod tests {
     /// decides is decided there, with a subnormal input or without.
     #[test]
     fn escalate_takes_the_stages_the_reference_takes() {
-        let e = f32::EPSILON;
-        let p = Plane::new(Vec3::X, Vec3::new(1.0 - e, 1.0, 0.0));
-        let want = PlaneHit::Hit(-(2f32.powi(46) - 2f32.powi(23)));
+        // d·n = 1 + 2⁻⁶⁰ − (1 − 2⁻²⁰), past the first pass: its partial
+        // sum rounds.
+        let s = 2f32.powi(-30);
+        let p = Plane::new(Vec3::X, Vec3::new(1.0, s, 2f32.powi(-20) - 1.0));
+        let want = PlaneHit::Hit(2f32.powi(20));
         for z in [0.0, 1e-40] {
-            let r = Ray::new(Vec3::ZERO, Vec3::new(1.0 + e, -1.0, z));
+            let r = Ray::new(Vec3::new(0.0, z, 0.0), Vec3::new(1.0, s, 1.0));
             assert_eq!(escalate(&r, &p), (want, Stage::Tight), "z = {z:e}");
             assert_eq!(intersect_staged(&r, &p), (want, Stage::Tight), "z = {z:e}");
         }
@@ -267,7 +270,7 @@ mod tests {
                 p.normal.as_dvec3().to_array(),
             );
             let x = stages::terms(o, d, a, n);
-            let first = stages::relative_terms(&x, 1.0);
+            let first = stages::relative_terms(&stages::first_terms(o, d, a, n), 1.0);
             assert!(
                 first.hit || compensated(&r, &p, &x, 1.0) == Some((h, stage)),
                 "{family}: {r:?} {p:?}"

@@ -102,53 +102,66 @@ pub const K: f64 = 1024.0;
 /// The first pass of both kernels: the filter's sums, and the root `t̂ =
 /// fl(n̂um/d̂en)` with a bound relative to it, where neither sum cancels by
 /// a factor of [`K`] or more. No part of the bound waits on the
-/// division: after it come the two products of
-/// [`certify_relative`](crate::num::certify::certify_relative) and
-/// nothing else.
+/// division: after it comes only the bit test of
+/// [`certify_relative`](crate::num::certify::certify_relative).
 ///
 /// # The bound
 ///
-/// In the notation of the [module](self), with `m̂` the computed
-/// magnitude sums (within `γ₂` of the exact ones), `|n̂um − num| ≤
-/// γ₄(1 + γ₂)m̂_num < 4.01u m̂_num` and `|d̂en − den| ≤ γ₂(1 + γ₂)m̂_den <
-/// 2.01u m̂_den`. Where `m̂_den < K|d̂en|` and `m̂_num < K|n̂um|`:
+/// In the notation of the [module](self), with `p̂ᵢ = fl(ŵᵢnᵢ)`, `M =
+/// Σ|p̂ᵢ|` and `m̂_num` its computed value (`M ≤ (1 + γ₂)m̂_num`): each
+/// `p̂ᵢ` is within `(2u + u²)/(1 − u)²|p̂ᵢ|` of `(aᵢ − oᵢ)nᵢ` (the
+/// difference and the product round once each), and each of the two
+/// additions is within `u` of its result, the first's at most `(1 +
+/// u)(|p̂₀| + |p̂₁|)`, so `|n̂um − num| < 3.0002u M + u|n̂um|`. The
+/// products of `d·n` are exact, so its error is that of its two
+/// additions: with `ŝ₁ = fl(d₀n₀ + d₁n₁)` and `d̂en = fl(ŝ₁ + d₂n₂)`,
+/// `|d̂en − den| ≤ u|ŝ₁| + u|d̂en|`, a running bound with no magnitude
+/// sum. Where `fl((K − 1)|d̂en|) > |ŝ₁|` and `m̂_num < K|n̂um|`:
 ///
-/// * `x = E_den/|d̂en| < 2.01uK < 1`: one hit, certain;
-/// * `E_num/|d̂en| < 4.01uK|n̂um/d̂en|`, so the quotient's bound of the
-///   module is at most `|n̂um/d̂en|(2.01uK + 4.01uK)/(1 − x) <
-///   6.03uK|n̂um/d̂en|`;
+/// * `x = E_den/|d̂en| < (1 + u)uK < 1.001uK`: one hit, certain;
+/// * `E_num/|n̂um| < (3.0003K + 1)u`, so the quotient's bound of the
+///   module is at most `|n̂um/d̂en|(1.001K + 3.0003K + 1)u/(1 − x) <
+///   (4.002K + 1.01)u|n̂um/d̂en|`;
 /// * the division rounds once, `|t̂ − n̂um/d̂en| ≤ u|n̂um/d̂en|`, and
 ///   `|n̂um/d̂en| ≤ (1 + 2u)|t̂|`.
 ///
-/// So `|t̂ − t| < (6.03K + 1.01)u|t̂|`, and the pass uses **`r = 13Ku`**,
-/// over twice the proof's constant: a constant, exact in f64, which no
-/// rounding of its own evaluation touches. `K|d̂en|` is exact (a scaling
-/// by a power of two, far from overflow).
+/// So `|t̂ − t| < (4.002K + 2.02)u|t̂| < 4.01Ku|t̂|`, and the pass uses
+/// **`r = 6Ku`**, one and a half times the proof's constant, exact in
+/// f64. `K|n̂um|` is exact (a scaling by a power of two, far from
+/// overflow).
 ///
-/// A parallel line (`m̂_den = 0`), a root exactly 0 (`m̂_num = 0`, whose
+/// A parallel line (`d̂en = 0`), a root exactly 0 (`m̂_num = 0`, whose
 /// `t̂` may be −0 where the oracle's answer is +0), a NaN input and an
 /// infinite one fail the comparisons (`0 > 0`, `∞ > ∞` and any comparison
 /// with NaN are false), so no zero, infinite or NaN `t̂` is certified.
 /// Nor is a root below `2⁻¹²⁵` in magnitude: the pass also asks
-/// `|n̂um| > 2⁻¹²⁵|d̂en|` (the product exact, at least `2⁻⁴²³`), so that,
-/// rounding being monotone, `|t̂| ≥ 2⁻¹²⁵`, its `f32` is normal, and
-/// flush-to-zero, which acts only on subnormal results, cannot touch it
-/// ([`needs_probe`](crate::num::certify::needs_probe)): a kernel need not
-/// ask the environment for a root this pass certifies, only probe for
-/// denormals-are-zero. Every line the pass leaves goes to [`filter`]'s
-/// full quotient bound.
+/// `2⁻¹⁴⁹|n̂um| > 2⁻²⁷⁴|d̂en|`, that is `|n̂um| > 2⁻¹²⁵|d̂en|` (both products
+/// exact, normal f64 values), so that, rounding being monotone, `|t̂| ≥
+/// 2⁻¹²⁵`: the certificate's test of `t̂`'s bits holds there, its `f32` is
+/// normal, and flush-to-zero, which acts only on subnormal results,
+/// cannot touch it ([`needs_probe`](crate::num::certify::needs_probe)).
+/// The `2⁻¹⁴⁹` is the least subnormal `f32` converted at run time
+/// ([`Real::least_subnormal`]): under denormals-are-zero, which reads a
+/// subnormal input as 0, it is 0 and the pass certifies nothing. A kernel
+/// need not ask the environment for a root this pass certifies. Every
+/// line the pass leaves goes to [`filter_compensated`] and [`filter`],
+/// after the kernel's check of the environment.
 ///
 /// ```
 /// use rayoracle::num::certify::certify_relative;
 /// use rayoracle::plane::stages::{filter, filter_relative};
 /// let (o, d, a, n) = ([0.0; 3], [0.1, 0.0, 3.0], [0.0, 0.0, 1.0], [0.0, 0.3, 1.0]);
 /// let (f, g) = (filter::<f64>(o, d, a, n, 1.0), filter_relative::<f64>(o, d, a, n, 1.0));
-/// let (certified, end) = certify_relative(g.t, g.r);
-/// assert!(g.hit && certified && end as f32 == f.t as f32);
-/// // d·n = (1 + 2⁻²³)(1 − 2⁻²³) − 1 = −2⁻⁴⁶ cancels 47 bits: the full
-/// // filter certifies the hit, the first pass leaves it.
-/// let e = 2f64.powi(-23);
+/// assert!(g.hit && certify_relative(g.t, g.r) && g.t as f32 == f.t as f32);
+/// // d·n = (1 + 2⁻²³)(1 − 2⁻²³) − 1 = −2⁻⁴⁶ cancels 47 bits, but its
+/// // partial sum is exact, and the running bound says so.
+/// let (e, a) = (2f64.powi(-23), [1.0, 0.0, 0.0]);
 /// let (d, n) = ([1.0 + e, -1.0, 0.0], [1.0 - e, 1.0, 0.0]);
+/// assert!(filter_relative::<f64>(o, d, a, n, 1.0).hit);
+/// // d·n = 1 + 2⁻⁶⁰ − (1 − 2⁻²⁰): the partial sum 1 + 2⁻⁶⁰ rounds, and
+/// // the sum is 2²⁰ times smaller. The first pass leaves it, the full
+/// // filter certifies the hit.
+/// let (d, n) = ([1.0, 2f64.powi(-30), 1.0], [1.0, 2f64.powi(-30), 2f64.powi(-20) - 1.0]);
 /// assert!(filter::<f64>(o, d, a, n, 1.0).hit && !filter_relative::<f64>(o, d, a, n, 1.0).hit);
 /// ```
 #[inline(always)]
@@ -159,18 +172,23 @@ pub fn filter_relative<L: Real>(
     n: [L; 3],
     shrink: f64,
 ) -> Relative<L> {
-    relative_terms(&terms(o, d, a, n), shrink)
+    relative_terms(&first_terms(o, d, a, n), shrink)
 }
 
-/// [`filter_relative`] from the [`terms`] already computed.
+/// The first pass's relative bound on the root, `6Ku`: see
+/// [`filter_relative`].
+pub const R: f64 = 6.0 * K * U;
+
+/// [`filter_relative`] from the [`first_terms`] already computed.
 #[inline(always)]
-pub(crate) fn relative_terms<L: Real>(x: &Terms<L>, shrink: f64) -> Relative<L> {
-    let (k, tiny) = (L::splat(K), L::splat(2f64.powi(-125)));
+pub(crate) fn relative_terms<L: Real>(x: &First<L>, shrink: f64) -> Relative<L> {
+    let (k, k1, tiny) = (L::splat(K), L::splat(K - 1.0), L::splat(2f64.powi(-274)));
     let (num, den) = (x.num.abs(), x.den.abs());
+    let small = (L::least_subnormal() * num).gt(tiny * den);
     Relative {
-        hit: (k * den).gt(x.m_den) & (k * num).gt(x.m_num) & num.gt(tiny * den),
+        hit: (k1 * den).gt(x.lead.abs()) & (k * num).gt(x.m_num) & small,
         t: x.num / x.den,
-        r: L::splat(13.0 * K * U * shrink),
+        r: R * shrink,
     }
 }
 
@@ -198,20 +216,20 @@ pub(crate) fn relative_terms<L: Real>(x: &Terms<L>, shrink: f64) -> Relative<L> 
 /// e₁`.) With `num`'s bound of the first pass, `E_num < 4.01uK|n̂um|`,
 /// the quotient's bound of the [module](self) is at most `|n̂um/ĥ|(5 +
 /// 4.01K)u(1 + 11u)`, and with the division's own rounding `|t̂ − t| <
-/// (4.02K + 6.02)u|t̂|`: the first pass's **`r = 13Ku`** covers it. The
+/// (4.02K + 6.02)u|t̂|`: the first pass's **`r = 6Ku`** covers it. The
 /// first pass's other comparisons keep out zero, subnormal, infinite and
 /// NaN roots, and `ĥ = 0` fails `|ĉ| < 4|ĥ|`.
 ///
 /// ```
 /// use rayoracle::num::certify::certify_relative;
 /// use rayoracle::plane::stages::{filter_compensated, filter_relative};
-/// // d·n = (1 + 2⁻²³)(1 − 2⁻²³) − 1 = −2⁻⁴⁶ cancels 47 bits; the root is 2⁴⁶.
-/// let e = 2f64.powi(-23);
-/// let (o, d, a, n) = ([0.0; 3], [1.0 + e, -1.0, 0.0], [1.0, 0.0, 0.0], [1.0 - e, 1.0, 0.0]);
+/// // d·n = 1 + 2⁻⁶⁰ − (1 − 2⁻²⁴) = 2⁻²⁴ + 2⁻⁶⁰, whose partial sum 1 + 2⁻⁶⁰
+/// // rounds to 1: the root is 1/(2⁻²⁴ + 2⁻⁶⁰), just below 2²⁴.
+/// let (o, a) = ([0.0; 3], [1.0, 0.0, 0.0]);
+/// let (d, n) = ([1.0, 2f64.powi(-30), 1.0], [1.0, 2f64.powi(-30), 2f64.powi(-24) - 1.0]);
 /// assert!(!filter_relative::<f64>(o, d, a, n, 1.0).hit);
 /// let g = filter_compensated::<f64>(o, d, a, n, 1.0).relative;
-/// let (certified, end) = certify_relative(g.t, g.r);
-/// assert!(g.hit && certified && end as f32 == -(2f32.powi(46) - 2f32.powi(23)));
+/// assert!(g.hit && certify_relative(g.t, g.r) && g.t as f32 == 2f32.powi(24));
 /// ```
 #[inline(always)]
 pub fn filter_compensated<L: Real>(
@@ -243,7 +261,7 @@ pub(crate) fn compensated_terms<L: Real>(
         relative: Relative {
             hit: (L::splat(4.0) * den).gt(c.abs()) & (k * num).gt(x.m_num) & num.gt(tiny * den),
             t: x.num / h,
-            r: L::splat(13.0 * K * U * shrink),
+            r: R * shrink,
         },
         den_zero,
         parallel: den_zero & num.gt(L::splat(8.0 * U * SLACK * shrink) * x.m_num),
@@ -298,8 +316,9 @@ pub struct Relative<L: Real> {
     pub hit: L::Mask,
     /// `num/den`.
     pub t: L,
-    /// The bound on `t`'s error, relative to `|t|`.
-    pub r: L,
+    /// The bound on `t`'s error, relative to `|t|`, the same in every
+    /// lane.
+    pub r: f64,
 }
 
 /// The sums and their magnitude sums: `num = Σŵᵢnᵢ`, `den = Σdᵢnᵢ`.
@@ -328,17 +347,47 @@ impl Terms<f64> {
     }
 }
 
-/// Both passes' sums, computed once by a kernel that may run both.
+/// Every pass's sums, computed once by a kernel that may run several.
 #[inline(always)]
 pub(crate) fn terms<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Terms<L> {
+    first_terms(o, d, a, n).terms(d, n)
+}
+
+/// The [first pass](filter_relative)'s sums: `num = Σŵᵢnᵢ`, `den =
+/// Σdᵢnᵢ`, `num`'s magnitude sum, and `den`'s first partial sum.
+#[inline(always)]
+pub(crate) fn first_terms<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> First<L> {
     let w = [a[0] - o[0], a[1] - o[1], a[2] - o[2]];
     let wn = [w[0] * n[0], w[1] * n[1], w[2] * n[2]];
-    let dn = [d[0] * n[0], d[1] * n[1], d[2] * n[2]];
-    Terms {
+    let lead = d[0] * n[0] + d[1] * n[1];
+    First {
         num: wn[0] + wn[1] + wn[2],
-        den: dn[0] + dn[1] + dn[2],
+        den: lead + d[2] * n[2],
         m_num: wn[0].abs() + wn[1].abs() + wn[2].abs(),
-        m_den: dn[0].abs() + dn[1].abs() + dn[2].abs(),
+        lead,
+    }
+}
+
+/// The [first pass](filter_relative)'s sums.
+#[derive(Clone, Copy)]
+pub(crate) struct First<L: Real> {
+    pub(crate) num: L,
+    pub(crate) den: L,
+    pub(crate) m_num: L,
+    /// `ŝ₁ = fl(d₀n₀ + d₁n₁)`.
+    pub(crate) lead: L,
+}
+
+impl<L: Real> First<L> {
+    /// The later passes' [`Terms`]: these sums and `d·n`'s magnitude sum.
+    #[inline(always)]
+    pub(crate) fn terms(self, d: [L; 3], n: [L; 3]) -> Terms<L> {
+        Terms {
+            num: self.num,
+            den: self.den,
+            m_num: self.m_num,
+            m_den: (d[0] * n[0]).abs() + (d[1] * n[1]).abs() + (d[2] * n[2]).abs(),
+        }
     }
 }
 

@@ -6,7 +6,7 @@ use super::{Plane, PlaneHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{
-    certify_end, certify_relative, flush_prone4, results_stand, subnormals_work,
+    certify_end, certify_relative, flush_prone4, results_stand, subnormals_work, widen_bits,
 };
 use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::class::{ALL, NONE, ONE};
@@ -14,19 +14,25 @@ use crate::ray4::{Ray4, gather3, scatter3};
 use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
 
-/// Four planes, structure-of-arrays.
+/// Four planes, structure-of-arrays, held as given and as f64 lanes:
+/// widened once when packed (exactly, with integer arithmetic, so that
+/// denormals-are-zero at that moment changes nothing), so that each
+/// packet's call loads them as they are.
 ///
 /// ```
 /// use rayoracle::plane::{Plane, x4::Plane4};
 /// use glam::Vec3;
-/// assert_eq!(Plane4::splat(&Plane::new(Vec3::ZERO, Vec3::Y)).normal[1].to_array(), [1.0; 4]);
+/// assert_eq!(Plane4::splat(&Plane::new(Vec3::ZERO, Vec3::Y)).normal()[1].to_array(), [1.0; 4]);
 /// ```
 #[derive(Clone, Copy, Debug)]
+#[repr(align(32))]
 pub struct Plane4 {
-    /// A point on each plane.
-    pub point: [f32x4; 3],
-    /// Each plane's normal.
-    pub normal: [f32x4; 3],
+    /// A point on each plane, per axis, in f64.
+    point: [[f64; 4]; 3],
+    /// Each plane's normal, per axis, in f64.
+    normal: [[f64; 4]; 3],
+    /// The same as given.
+    given: [[f32x4; 3]; 2],
 }
 
 impl Plane4 {
@@ -36,23 +42,56 @@ impl Plane4 {
     /// use rayoracle::plane::{Plane, x4::Plane4};
     /// use glam::Vec3;
     /// let p = [0.0, 1.0, 2.0, 3.0].map(|y| Plane::new(Vec3::new(0.0, y, 0.0), Vec3::Y));
-    /// assert_eq!(Plane4::from_planes(p).point[1].to_array(), [0.0, 1.0, 2.0, 3.0]);
+    /// assert_eq!(Plane4::from_planes(p).point()[1].to_array(), [0.0, 1.0, 2.0, 3.0]);
     /// ```
     pub fn from_planes(p: [Plane; 4]) -> Plane4 {
+        let (point, normal) = (gather3(p.map(|p| p.point)), gather3(p.map(|p| p.normal)));
+        let wide = |v: [f32x4; 3]| v.map(|x| x.to_array().map(widen_exact));
         Plane4 {
-            point: gather3(p.map(|p| p.point)),
-            normal: gather3(p.map(|p| p.normal)),
+            point: wide(point),
+            normal: wide(normal),
+            given: [point, normal],
         }
+    }
+    /// A point on each plane, per axis.
+    ///
+    /// ```
+    /// use rayoracle::plane::{Plane, x4::Plane4};
+    /// use glam::Vec3;
+    /// assert_eq!(Plane4::splat(&Plane::new(Vec3::Z, Vec3::Y)).point()[2].to_array(), [1.0; 4]);
+    /// ```
+    pub fn point(&self) -> [f32x4; 3] {
+        self.given[0]
+    }
+    /// Each plane's normal, per axis.
+    ///
+    /// ```
+    /// use rayoracle::plane::{Plane, x4::Plane4};
+    /// use glam::Vec3;
+    /// assert_eq!(Plane4::splat(&Plane::new(Vec3::Z, Vec3::X)).normal()[0].to_array(), [1.0; 4]);
+    /// ```
+    pub fn normal(&self) -> [f32x4; 3] {
+        self.given[1]
     }
     /// The same plane in every lane.
     ///
     /// ```
     /// use rayoracle::plane::{Plane, x4::Plane4};
     /// use glam::Vec3;
-    /// assert_eq!(Plane4::splat(&Plane::new(Vec3::X, Vec3::Y)).point[0].to_array(), [1.0; 4]);
+    /// assert_eq!(Plane4::splat(&Plane::new(Vec3::X, Vec3::Y)).point()[0].to_array(), [1.0; 4]);
     /// ```
     pub fn splat(p: &Plane) -> Plane4 {
         Plane4::from_planes([*p; 4])
+    }
+}
+
+/// `f64::from(x)` in the default environment, whatever the environment:
+/// [`widen_bits`] for a finite `x`.
+fn widen_exact(x: f32) -> f64 {
+    if x.is_finite() {
+        widen_bits(x.to_bits())
+    } else {
+        f64::from(x)
     }
 }
 
@@ -165,7 +204,10 @@ pub fn intersect_packets(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
 #[inline(always)]
 fn packets_in<W: Real8>(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
     let env = subnormals_work();
-    let (a, n) = (p.point.map(W::Half::widen), p.normal.map(W::Half::widen));
+    let (a, n) = (
+        p.point.each_ref().map(W::Half::load),
+        p.normal.each_ref().map(W::Half::load),
+    );
     let (a2, n2) = (a.map(W::twice), n.map(W::twice));
     let len = rays.len().min(out.len());
     let mut pairs = rays[..len].chunks_exact(2);
@@ -205,10 +247,9 @@ impl<W: Real8> Decided<W> {
 #[inline(always)]
 fn decide<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Decided<L> {
     let f = stages::filter_relative(o, d, a, n, 1.0);
-    let (certified, end) = certify_relative(f.t, f.r);
     Decided {
-        hit: f.hit & certified,
-        t: end,
+        hit: f.hit & certify_relative(f.t, f.r),
+        t: f.t,
     }
 }
 
@@ -223,8 +264,9 @@ fn finish<L: Real4>(
     p: &Plane4,
 ) -> PlaneHit4 {
     let t = x.t.narrow();
-    // A root the first pass certifies is normal as an f32: not flush-prone.
-    if L::all(x.hit) && env(false) {
+    // A root the first pass certifies is normal as an f32: not flush-prone;
+    // and under DAZ it certifies none.
+    if L::all(x.hit) {
         return PlaneHit4 {
             class: i32x4::splat(ONE),
             t,
@@ -252,7 +294,7 @@ fn finish_full(
     let x = stages::terms(o, d, a, n);
     // The second pass: d·n summed once compensated.
     let c = stages::compensated_terms(&x, d, n, 1.0);
-    let (second, end2) = certify_relative(c.relative.t, c.relative.r);
+    let second = certify_relative(c.relative.t, c.relative.r);
     let f = stages::filter_terms(x, 1.0);
     let (certified, end) = certify_end(f.t, f.r, f.a);
     let m = F64x4::mask_i32;
@@ -262,7 +304,7 @@ fn finish_full(
     let h = hit | h2 | m(f.hit & certified);
     let t = hit.bitselect(
         cast(t),
-        cast(h2.bitselect(cast(end2.narrow()), cast(end.narrow()))),
+        cast(h2.bitselect(cast(c.relative.t.narrow()), cast(end.narrow()))),
     );
     let t: f32x4 = cast(h.bitselect(t, cast(f32x4::splat(f32::NAN))));
     // Where d·n is exactly 0, (a − o)·n summed exactly, where it can be,
@@ -292,12 +334,12 @@ fn intersect_in<L: Real4>(ray: &Ray4, p: &Plane4, env: impl Fn(bool) -> bool) ->
 /// A packet's inputs in f64 lanes.
 #[inline(always)]
 fn widened<L: Real4>(ray: &Ray4, p: &Plane4) -> ([L; 3], [L; 3], [L; 3], [L; 3]) {
-    let w = L::widen;
+    let (w, l) = (L::widen, L::load);
     (
         ray.origin.map(w),
         ray.dir.map(w),
-        p.point.map(w),
-        p.normal.map(w),
+        p.point.each_ref().map(l),
+        p.normal.each_ref().map(l),
     )
 }
 
@@ -309,7 +351,7 @@ impl PlaneHit4 {
     fn settle(h: [i32x4; 2], done: i32x4, ray: &Ray4, p: &Plane4) -> Self {
         let (class, t): (i32x4, f32x4) = (h[0], cast(h[1]));
         let rays = ray.to_rays();
-        let (a, n) = (scatter3(p.point), scatter3(p.normal));
+        let (a, n) = (scatter3(p.point()), scatter3(p.normal()));
         let (mut class, mut t) = (class.to_array(), t.to_array());
         let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
@@ -382,29 +424,28 @@ mod tests {
         crate::num::batch::every_copy_agrees!(packets_in, intersect_baseline, p: Plane4, PlaneHit4);
     }
 
-    /// A line within `2⁻⁴⁶` of parallel: the first pass leaves it, the
-    /// full filter certifies its hit, and the packet gives the
-    /// reference's answers.
+    /// A line whose `d·n = 1 + 2⁻⁶⁰ − (1 − 2⁻²⁰)` has a partial sum that
+    /// rounds, and one whose `d·n = (1 + 2⁻²³)(1 − 2⁻²³) − 1` has an exact
+    /// one: the first pass leaves the first and certifies the second, the
+    /// full filter certifies both, and the packet gives the reference's
+    /// answers.
     #[test]
     fn nearly_parallel_lanes_go_to_the_full_filter() {
-        let e = f32::EPSILON;
-        let p = Plane::new(
-            glam::Vec3::new(0.0, 0.0, 1.0),
-            glam::Vec3::new(1.0 - e, 1.0, 0.0),
-        );
+        use glam::Vec3;
+        let (s, e) = (2f32.powi(-30), f32::EPSILON);
+        let p = Plane::new(Vec3::Z, Vec3::new(1.0 - e, s, 2f32.powi(-20) - 1.0));
         let rays = [
-            glam::Vec3::new(1.0 + e, -1.0, 0.0),
-            glam::Vec3::Z,
-            glam::Vec3::X,
-            glam::Vec3::Y,
+            Vec3::new(1.0 - e, s, 1.0),
+            Vec3::new(1.0 + e, -1.0 / s, 0.0),
+            Vec3::X,
+            -Vec3::Z,
         ]
-        .map(|d| crate::Ray::new(glam::Vec3::new(0.25, 0.0, 0.5), d));
+        .map(|d| crate::Ray::new(Vec3::new(0.3, 0.1, 0.7), d));
         let (r4, p4) = (Ray4::from_rays(rays), Plane4::splat(&p));
         let (o, d, a, n) = widened::<F64x4>(&r4, &p4);
         let (first, full) = (decide(o, d, a, n), stages::filter(o, d, a, n, 1.0));
-        assert_eq!(first.hit.lanes(), [false, false, true, true]);
-        assert_eq!(full.hit.lanes(), [true, false, true, true]);
-        assert_eq!(full.parallel.lanes(), [false, true, false, false]);
+        assert_eq!(first.hit.lanes(), [false, true, true, true]);
+        assert_eq!(full.hit.lanes(), [true; 4]);
         let want = rays.map(|r| reference::intersect(&r, &p));
         assert!(matches!(want[0], PlaneHit::Hit(_)), "{want:?}");
         assert_eq!(intersect_baseline(&r4, &p4).lanes(), want);
