@@ -324,6 +324,25 @@ pub fn widen_bits(b: u32) -> f64 {
     if b >> 31 == 0 { v } else { -v }
 }
 
+/// Four `f32` lanes widened to f64 as the default environment does,
+/// whatever the environment: [`widen_bits`] for a finite lane. For a
+/// packet's primitives, widened once when packed.
+///
+/// ```
+/// use rayoracle::num::certify::widen_lanes;
+/// let x = wide::f32x4::from([1e-40, -0.1, f32::INFINITY, 2.0]);
+/// assert_eq!(widen_lanes(x), x.to_array().map(f64::from));
+/// ```
+pub fn widen_lanes(x: wide::f32x4) -> [f64; 4] {
+    x.to_array().map(|v| {
+        if v.is_finite() {
+            widen_bits(v.to_bits())
+        } else {
+            f64::from(v)
+        }
+    })
+}
+
 /// `x` rounded to the nearest `f32`, ties to even: what `x as f32` gives
 /// in the default environment, which flush-to-zero would make 0 for a
 /// subnormal result. For the exact paths.

@@ -58,8 +58,7 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
     // The first pass, whose bound needs nothing after the division; the
     // second pass and the full filter only for what it leaves, from the
     // same sums.
-    let x = stages::first_terms(o, d, a, n);
-    let f = stages::relative_terms(&x, shrink);
+    let (x, f) = stages::first_pair(o, d, a, n, shrink);
     // The pass's class is known before its quotient: a line it leaves
     // does not wait on the division (which the CPU starts anyway, on the
     // predicted path).

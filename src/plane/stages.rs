@@ -179,6 +179,42 @@ pub fn filter_relative<L: Real>(
 /// [`filter_relative`].
 pub const R: f64 = 6.0 * K * U;
 
+/// [`first_terms`] and [`relative_terms`] for one line at f64, with the
+/// two sums side by side in the two lanes of one `f64x2` (`num` in the
+/// first, `den` in the second), as a compiler packs plain f64's: the same
+/// operations in the same order, so the same bits.
+#[inline(always)]
+pub(crate) fn first_pair(
+    o: [f64; 3],
+    d: [f64; 3],
+    a: [f64; 3],
+    n: [f64; 3],
+    shrink: f64,
+) -> (First<f64>, Relative<f64>) {
+    use wide::f64x2;
+    let p = |i: usize| f64x2::from([a[i] - o[i], d[i]]) * f64x2::splat(n[i]);
+    let (p0, p1, p2) = (p(0), p(1), p(2));
+    let s1 = p0 + p1;
+    let s = s1 + p2;
+    let m = p0.abs() + p1.abs() + p2.abs();
+    let ([num, den], [_, lead], [m_num, _]) = (s.to_array(), s1.to_array(), m.to_array());
+    let both = (f64x2::from([K, K - 1.0]) * s.abs()).simd_gt(f64x2::from([m_num, lead.abs()]));
+    let small =
+        crate::num::certify::least_subnormal::<false>() * num.abs() > 2f64.powi(-274) * den.abs();
+    let x = First {
+        num,
+        den,
+        m_num,
+        lead,
+    };
+    let f = Relative {
+        hit: both.to_bitmask() == 0b11 && small,
+        t: num / den,
+        r: R * shrink,
+    };
+    (x, f)
+}
+
 /// [`filter_relative`] from the [`first_terms`] already computed.
 #[inline(always)]
 pub(crate) fn relative_terms<L: Real>(x: &First<L>, shrink: f64) -> Relative<L> {
@@ -545,4 +581,52 @@ pub fn double_word(
         return None;
     }
     quotient(num.approx(), den.approx(), shrink).map(PlaneHit::Hit)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// Values whose products and sums cancel, round and tie, and any f32.
+    fn value() -> impl Strategy<Value = f64> {
+        let e = f64::from(f32::EPSILON);
+        let edge = [
+            0.0,
+            1.0,
+            1.0 + e,
+            1.0 - e / 2.0,
+            3.0,
+            2f64.powi(-30),
+            2f64.powi(-20) - 1.0,
+            1e-40,
+        ];
+        prop_oneof![
+            (0..edge.len(), any::<bool>()).prop_map(move |(i, neg)| if neg {
+                -edge[i]
+            } else {
+                edge[i]
+            }),
+            any::<f32>().prop_map(f64::from),
+        ]
+    }
+
+    proptest! {
+        /// The paired-lane first pass is the generic one, bit for bit.
+        #[test]
+        fn first_pair_is_the_generic_first_pass(
+            v in proptest::collection::vec(value(), 12),
+            shrink in prop_oneof![Just(1.0), 0.0..1.0],
+        ) {
+            let t = |i: usize| [v[i], v[i + 1], v[i + 2]];
+            let (o, d, a, n) = (t(0), t(3), t(6), t(9));
+            let (x, f) = first_pair(o, d, a, n, shrink);
+            let (y, g) = (first_terms(o, d, a, n), filter_relative(o, d, a, n, shrink));
+            let bits = |x: &First<f64>| [x.num, x.den, x.m_num, x.lead].map(f64::to_bits);
+            prop_assert!(bits(&x) == bits(&y) || [x.num, x.den].iter().any(|v| v.is_nan()));
+            prop_assert_eq!(f.hit, g.hit);
+            prop_assert!(f.t.to_bits() == g.t.to_bits() || (f.t.is_nan() && g.t.is_nan()));
+            prop_assert_eq!(f.r, g.r);
+        }
+    }
 }

@@ -6,7 +6,7 @@ use super::{Plane, PlaneHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{
-    certify_end, certify_relative, flush_prone4, results_stand, subnormals_work, widen_bits,
+    certify_end, certify_relative, flush_prone4, results_stand, subnormals_work, widen_lanes,
 };
 use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::class::{ALL, NONE, ONE};
@@ -46,10 +46,9 @@ impl Plane4 {
     /// ```
     pub fn from_planes(p: [Plane; 4]) -> Plane4 {
         let (point, normal) = (gather3(p.map(|p| p.point)), gather3(p.map(|p| p.normal)));
-        let wide = |v: [f32x4; 3]| v.map(|x| x.to_array().map(widen_exact));
         Plane4 {
-            point: wide(point),
-            normal: wide(normal),
+            point: point.map(widen_lanes),
+            normal: normal.map(widen_lanes),
             given: [point, normal],
         }
     }
@@ -82,16 +81,6 @@ impl Plane4 {
     /// ```
     pub fn splat(p: &Plane) -> Plane4 {
         Plane4::from_planes([*p; 4])
-    }
-}
-
-/// `f64::from(x)` in the default environment, whatever the environment:
-/// [`widen_bits`] for a finite `x`.
-fn widen_exact(x: f32) -> f64 {
-    if x.is_finite() {
-        widen_bits(x.to_bits())
-    } else {
-        f64::from(x)
     }
 }
 
