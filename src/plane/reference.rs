@@ -79,11 +79,12 @@ fn second_pass(ray: &Ray, plane: &Plane, x: stages::First<f64>, shrink: f64) -> 
     if denormals_are_zero() && needs_probe(&inputs(ray, plane), &[]) {
         return (exact_stage(ray, plane), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let x = x.terms(w(ray.dir), w(plane.normal));
     match compensated(ray, plane, &x, shrink) {
         Some(hs) => hs,
-        None => filter_then_escalate(ray, plane, x, shrink),
+        None => {
+            let w = |v: glam::Vec3| v.as_dvec3().to_array();
+            filter_then_escalate(ray, plane, x.terms(w(ray.dir), w(plane.normal)), shrink)
+        }
     }
 }
 
@@ -98,23 +99,28 @@ fn second_pass(ray: &Ray, plane: &Plane, x: stages::First<f64>, shrink: f64) -> 
 fn compensated(
     ray: &Ray,
     plane: &Plane,
-    x: &stages::Terms<f64>,
+    x: &stages::First<f64>,
     shrink: f64,
 ) -> Option<(PlaneHit, Stage)> {
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let c = stages::compensated_terms(x, w(ray.dir), w(plane.normal), shrink);
+    let (d, n) = (w(ray.dir), w(plane.normal));
+    let c = stages::compensated_terms(x.num, x.m_num, d, n, shrink);
     let f = c.relative;
-    if x.m_den == 0.0 && x.m_num == 0.0 {
+    // A hit has d·n ≠ 0, so some term of it is not 0: the check below
+    // waits for the lines this leaves.
+    if f.hit && certify_relative(f.t, f.r) {
+        return Some((PlaneHit::Hit(f.t as f32), Stage::Tight));
+    }
+    let m_den = (d[0] * n[0]).abs() + (d[1] * n[1]).abs() + (d[2] * n[2]).abs();
+    if m_den == 0.0 && x.m_num == 0.0 {
         // Every term of both sums is 0: the filter's rule, without the
         // exact sum.
         return Some((PlaneHit::InPlane, Stage::Filter));
     }
     if f.hit {
-        if certify_relative(f.t, f.r) {
-            return Some((PlaneHit::Hit(f.t as f32), Stage::Tight));
-        }
+        return None;
     } else if c.parallel {
-        let stage = if x.m_den == 0.0 {
+        let stage = if m_den == 0.0 {
             Stage::Filter
         } else {
             Stage::Tight
@@ -181,7 +187,7 @@ pub(crate) fn escalate(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (o, d, a, n) = (w(ray.origin), w(ray.dir), w(plane.point), w(plane.normal));
-    if let Some(hs) = compensated(ray, plane, &stages::terms(o, d, a, n), 1.0) {
+    if let Some(hs) = compensated(ray, plane, &stages::first_terms(o, d, a, n), 1.0) {
         return hs;
     }
     later_stages(ray, plane, 1.0)
@@ -268,8 +274,8 @@ mod tests {
                 p.point.as_dvec3().to_array(),
                 p.normal.as_dvec3().to_array(),
             );
-            let x = stages::terms(o, d, a, n);
-            let first = stages::relative_terms(&stages::first_terms(o, d, a, n), 1.0);
+            let x = stages::first_terms(o, d, a, n);
+            let first = stages::relative_terms(&x, 1.0);
             assert!(
                 first.hit || compensated(&r, &p, &x, 1.0) == Some((h, stage)),
                 "{family}: {r:?} {p:?}"

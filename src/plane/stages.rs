@@ -254,7 +254,9 @@ pub(crate) fn relative_terms<L: Real>(x: &First<L>, shrink: f64) -> Relative<L> 
 /// 4.01K)u(1 + 11u)`, and with the division's own rounding `|t̂ − t| <
 /// (4.02K + 6.02)u|t̂|`: the first pass's **`r = 6Ku`** covers it. The
 /// first pass's other comparisons keep out zero, subnormal, infinite and
-/// NaN roots, and `ĥ = 0` fails `|ĉ| < 4|ĥ|`.
+/// NaN roots (and, as there, every hit under denormals-are-zero), and `ĥ
+/// = 0` fails `|ĉ| < 4|ĥ|`. The classes it certifies without a root,
+/// `den_zero` and `parallel`, assume the inputs stand.
 ///
 /// ```
 /// use rayoracle::num::certify::certify_relative;
@@ -275,13 +277,16 @@ pub fn filter_compensated<L: Real>(
     n: [L; 3],
     shrink: f64,
 ) -> Compensated<L> {
-    compensated_terms(&terms(o, d, a, n), d, n, shrink)
+    let x = first_terms(o, d, a, n);
+    compensated_terms(x.num, x.m_num, d, n, shrink)
 }
 
-/// [`filter_compensated`] from the [`terms`] already computed.
+/// [`filter_compensated`] from the first pass's `num` and its magnitude
+/// sum, already computed.
 #[inline(always)]
 pub(crate) fn compensated_terms<L: Real>(
-    x: &Terms<L>,
+    num: L,
+    m_num: L,
     d: [L; 3],
     n: [L; 3],
     shrink: f64,
@@ -290,17 +295,18 @@ pub(crate) fn compensated_terms<L: Real>(
     let (s2, e2) = two_sum(s1, d[2] * n[2]);
     let c = e1 + e2;
     let h = s2 + c;
-    let (k, tiny) = (L::splat(K), L::splat(2f64.powi(-125)));
-    let (num, den, zero) = (x.num.abs(), h.abs(), L::splat(0.0));
+    let (k, tiny) = (L::splat(K), L::splat(2f64.powi(-274)));
+    let (num_abs, den, zero) = (num.abs(), h.abs(), L::splat(0.0));
     let den_zero = h.eq(zero) & c.eq(zero);
+    let small = (L::least_subnormal() * num_abs).gt(tiny * den);
     Compensated {
         relative: Relative {
-            hit: (L::splat(4.0) * den).gt(c.abs()) & (k * num).gt(x.m_num) & num.gt(tiny * den),
-            t: x.num / h,
+            hit: (L::splat(4.0) * den).gt(c.abs()) & (k * num_abs).gt(m_num) & small,
+            t: num / h,
             r: R * shrink,
         },
         den_zero,
-        parallel: den_zero & num.gt(L::splat(8.0 * U * SLACK * shrink) * x.m_num),
+        parallel: den_zero & num_abs.gt(L::splat(8.0 * U * SLACK * shrink) * m_num),
     }
 }
 
