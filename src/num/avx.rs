@@ -325,6 +325,9 @@ mod tests {
                 );
                 assert_eq!(mask(va.gt(vb)), wmask(wa.gt(wb)));
                 assert_eq!(mask(!va.eq(vb)), wmask(!wa.eq(wb)));
+                let m = (b.abs() * 1e3).min(1e8) as i64;
+                assert_eq!(mask(va.off_midpoint(m)), wmask(wa.off_midpoint(m)));
+                assert_eq!(mask(va.off_midpoint(m)), [-i32::from(a.off_midpoint(m)); 4]);
                 assert_eq!(Avx4::all(va.eq(vb)), F64x4::all(wa.eq(wb)));
                 for (x, y) in [
                     (va + vb, wa + wb),
@@ -344,8 +347,12 @@ mod tests {
                 }
             }
         }
+        let s = Avx4::least_subnormal();
+        assert_eq!(cast::<__m256d, [f64; 4]>(s.0), [2f64.powi(-149); 4]);
         let x = f32x4::from([0.1, -3.0, f32::from_bits(1), f32::MAX]);
         let y = Avx4::widen(x);
+        let w = [1.0, 2.5, -7.0, 1e-30];
+        assert_eq!(cast::<__m256d, [f64; 4]>(Avx4::load(&w).0), w);
         assert_eq!(cast::<__m256d, [f64; 4]>(y.0), x.to_array().map(f64::from));
         assert_eq!(y.narrow().to_array(), x.to_array());
     }

@@ -306,6 +306,16 @@ mod tests {
             bits(Avx8::select(m, a, b).halves()),
             want(Pair::select(p.gt(q), p, q))
         );
+        // At, near and far from f32 midpoints.
+        let mid = 1.0 + 2f64.powi(-24);
+        let w = [mid, mid + 2f64.powi(-46), 0.1, -(3.0 + 2f64.powi(-23))];
+        let (c, r) = (Avx8::twice(Avx4::load(&w)), Pair::twice(F64x4::load(&w)));
+        for m in [0, 63, 64, 1 << 20, 1 << 27] {
+            assert_eq!(masks(c.off_midpoint(m)), want_m(r.off_midpoint(m)), "{m}");
+        }
+        assert_eq!(masks(c.off_midpoint(63))[0], [0, -1, -1, 0]);
+        assert_eq!(masks(c.off_midpoint(64))[0], [0, 0, -1, 0]);
+        assert_eq!(bits(Avx8::least_subnormal().halves()), [[1; 4]; 2]);
     }
 
     #[test]

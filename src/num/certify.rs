@@ -523,6 +523,15 @@ pub(crate) fn in_environment<R: Send + 'static>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::exact::Dyadic;
+
+    /// Whether `v` rounds to `f` (ties to even); f32 midpoints are f64s.
+    fn rounds_to(v: &Dyadic, f: f32) -> bool {
+        let mid = |g: f32| Dyadic::from_f64((f as f64 + g as f64) / 2.0);
+        let (lo, hi) = (mid(f.next_down()), mid(f.next_up()));
+        let even = f.to_bits().is_multiple_of(2);
+        (lo < *v || (lo == *v && even)) && (*v < hi || (*v == hi && even))
+    }
 
     /// `certify` against exact arithmetic: wherever it passes, both ends
     /// of `[t − |t|r − a, t + |t|r + a]`, computed exactly ([`Dyadic`]),
@@ -533,16 +542,8 @@ mod tests {
     /// [`Dyadic`]: crate::exact::Dyadic
     #[test]
     fn certified_enclosures_round_to_one_f32_exactly() {
-        use crate::exact::Dyadic;
         use rand::{Rng, SeedableRng};
         let d = Dyadic::from_f64;
-        // Whether `v` rounds to `f` (ties to even); f32 midpoints are f64s.
-        let rounds_to = |v: &Dyadic, f: f32| -> bool {
-            let mid = |g: f32| d((f as f64 + g as f64) / 2.0);
-            let (lo, hi) = (mid(f.next_down()), mid(f.next_up()));
-            let even = f.to_bits().is_multiple_of(2);
-            (lo < *v || (lo == *v && even)) && (*v < hi || (*v == hi && even))
-        };
         let mut rng = rand::rngs::SmallRng::seed_from_u64(51);
         let (mut certified, mut near) = (0, 0);
         for _ in 0..200_000 {
@@ -577,6 +578,65 @@ mod tests {
         assert!(
             certified > 20_000 && near > 5_000,
             "{certified} certified, {near} near"
+        );
+    }
+
+    /// [`certify_relative`] against exact arithmetic: wherever it passes,
+    /// both ends of `t(1 ∓ r)`, computed exactly, round to `t as f32`.
+    /// The cases put `t` within a few hundred thousand f64 ulps of an f32
+    /// midpoint, in the middle of a binade and next to a power of two
+    /// (where the binade below has ulps half as large), either sign, with
+    /// `r` up to and past the distance to the midpoint; and each lane type
+    /// gives the scalar answer.
+    #[test]
+    fn relative_certificates_round_to_one_f32_exactly() {
+        use crate::num::real::{F64x4, Pair};
+        use rand::{Rng, SeedableRng};
+        let d = Dyadic::from_f64;
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(52);
+        let (mut certified, mut near, mut refused) = (0, 0, 0);
+        for i in 0..200_000 {
+            let e = rng.random_range(-120..120);
+            let f = if i % 2 == 0 {
+                rng.random_range(1.0f32..2.0) * 2f32.powi(e)
+            } else {
+                2f32.powi(e)
+            };
+            let f = if rng.random() { f } else { -f };
+            let g = if rng.random() {
+                f.next_up()
+            } else {
+                f.next_down()
+            };
+            let mid = (f as f64 + g as f64) / 2.0;
+            let k = rng.random_range(-300_000i64..=300_000);
+            let t = f64::from_bits((mid.to_bits() as i64 + k) as u64);
+            let dist = (t - mid).abs() / t.abs();
+            let r = match rng.random_range(0..3) {
+                0 => rng.random_range(0.0..2f64.powi(-40)),
+                1 => dist * rng.random_range(0.25..0.75),
+                _ => dist * rng.random_range(0.9..1.1),
+            };
+            let ok = certify_relative(t, r);
+            let lanes = certify_relative(F64x4::splat(t), r).lanes();
+            assert_eq!(lanes, [ok; 4], "t {t:e}, r {r:e}");
+            let pair = certify_relative(Pair(t, t), r);
+            assert_eq!((pair.0, pair.1), (ok, ok));
+            if !ok {
+                refused += 1;
+                continue;
+            }
+            certified += 1;
+            near += usize::from(r > dist / 2.0);
+            let e = d(t.abs()) * d(r);
+            let want = t as f32;
+            for end in [d(t) - &e, d(t) + &e] {
+                assert!(rounds_to(&end, want), "t {t:e}, r {r:e}: not {want:e}");
+            }
+        }
+        assert!(
+            certified > 50_000 && near > 10_000 && refused > 20_000,
+            "{certified} certified, {near} near, {refused} refused"
         );
     }
 
