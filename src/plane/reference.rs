@@ -118,6 +118,7 @@ fn compensated(
         return Some((PlaneHit::InPlane, Stage::Filter));
     }
     if f.hit {
+        // A hit whose root this bound cannot place: the full filter's.
         return None;
     } else if c.parallel {
         let stage = if m_den == 0.0 {
