@@ -246,6 +246,98 @@ pub fn plane_first_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
         .collect()
 }
 
+/// Planes on which the first pass's bound is nearly all used: every
+/// rounding it covers is close to half an ulp and moves `t̂` the same way,
+/// below the exact root, and `t̂` lies just below an f32 rounding midpoint,
+/// so the exact root lies above it. With `n = (n₀, 2⁻³⁰, n₂)`, `d = (1,
+/// d₁, d₂)`, `o = (o₀, o₁, o₂)` and `a = (a₀, a₁, a₂)`:
+///
+/// * `p̂₀ = fl(fl(a₀ − o₀)n₀) ∈ [1, 2)`, `o₀` too small for the difference to
+///   be exact, and `p̂₂ = fl(fl(a₂ − o₂)n₂) ≈ −p̂₀(1 − 2/1025)`: the
+///   first the best of sixty-four draws with both roundings down, the
+///   third the first draw whose roundings leave it below its exact value;
+/// * `p₁ = (k + ½ − 2⁻²¹)·2⁻⁵²`, exact, so that `fl(p̂₀ + p₁)` drops just
+///   under half an ulp, and the integer `k` places `t̂`;
+/// * `num = p̂₀ + p₁ + p̂₂` cancels by just under `K/2`, the most the pass
+///   accepts (`m_num ≈ 2p̂₀ < K|num|`), so the three terms' roundings come
+///   to about `2.5Ku|t|`;
+/// * `d·n = n₀ + d₁2⁻³⁰ + d₂n₂`, with `d₁2⁻³⁰` just under half an ulp of
+///   `n₀` and lost, and `n₀ + d₂n₂` just over `n₀/1023`, the most
+///   cancellation the pass accepts: another `Ku|t|` in the same direction.
+///
+/// The root is near 2, at the top of its binade, where the certificate's
+/// margin in bit patterns is widest for its error; `t̂` is put a random
+/// fraction of the error below the midpoint. The second pass and the tight
+/// stage, whose `d·n` is exact or nearly, see the numerator's share alone.
+pub fn plane_rounding_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
+    let mut out = Vec::with_capacity(n);
+    while out.len() < n {
+        out.extend(plane_rounding(rng));
+    }
+    out
+}
+
+/// One of [`plane_rounding_seeds`], if the draws allow it.
+fn plane_rounding(rng: &mut SmallRng) -> Option<Case> {
+    // The exact error of fl(fl(a − o)n), positive where both round down.
+    let err = |a: f32, o: f32, n: f32| {
+        let (a, o, n) = (f64::from(a), f64::from(o), f64::from(n));
+        let w = a - o;
+        let e_w = (a - w) - o;
+        let p = w * n;
+        (p, e_w * n + w.mul_add(n, -p))
+    };
+    let grid = |rng: &mut SmallRng, base: f32, bits: u32| {
+        base + rng.random_range(0..1u32 << bits) as f32 * f32::EPSILON
+    };
+    let tiny = |rng: &mut SmallRng| {
+        let e = rng.random_range(-45..-30);
+        mant(rng, e)
+    };
+    let (mut best, mut e0) = (None, 0.0);
+    for _ in 0..64 {
+        let (n0, a0, o0) = (grid(rng, 1.002, 14), grid(rng, 1.0, 14), tiny(rng));
+        let (p0, e) = err(a0, o0, n0);
+        if e > e0 && p0 < 1.002 * f64::from(n0) {
+            (best, e0) = (Some((n0, a0, o0, p0)), e);
+        }
+    }
+    let (n0, a0, o0, p0) = best?;
+    let (n2, o2) = (grid(rng, 1.0, 12), tiny(rng));
+    let want = p0 * (1.0 - 2.0 / 1025.0 * (1.0 + 2f64.powi(-12)));
+    let a2_bits = ((want / f64::from(n2)) as f32).to_bits();
+    let (a2, p2, e2) = (0..16).find_map(|i| {
+        let a2 = -f32::from_bits(a2_bits - i);
+        let (p2, e2) = err(a2, o2, n2);
+        (e2 > 0.0).then_some((a2, p2, e2))
+    })?;
+    let d2 = -((f64::from(n0) * (1.0 - (1.0 + 2f64.powi(-12)) / 1023.0) / f64::from(n2)) as f32);
+    let den = f64::from(n0) + f64::from(d2) * f64::from(n2);
+    let num0 = p0 + p2;
+    let t0 = num0 / den;
+    let f = t0 as f32;
+    let ulp = f32::from_bits(f.to_bits() + 1) - f;
+    let mid = f64::from(f) + f64::from(ulp) / 2.0;
+    // The error in f64 ulps of t near 2: the numerator's and d·n's shares.
+    let u52 = 2f64.powi(-52);
+    let e_num = e0 + e2 + u52 / 2.0;
+    let patterns = (e_num / num0.abs() + u52 / 2.0 / den) * mid / u52;
+    let below = patterns * rng.random_range(0.3..0.95);
+    let k = ((mid - below * u52) * den - num0) / u52;
+    let k = k.round();
+    if k.abs() >= f64::from(1u32 << 23) {
+        return None;
+    }
+    let (a1, o1) = (
+        k as f32 * 2f32.powi(-22),
+        -(2f32.powi(-23) - 2f32.powi(-43)),
+    );
+    let d1 = -(2f32.powi(-23) - 2f32.powi(-43));
+    let ray = Ray::new(Vec3::new(o0, o1, o2), Vec3::new(1.0, d1, d2));
+    let plane = Plane::new(Vec3::new(a0, a1, a2), Vec3::new(n0, 2f32.powi(-30), n2));
+    Some(Case::Plane(ray, plane))
+}
+
 /// Spheres grazed at a relative miss distance of 10⁻² to 10⁻⁹, from
 /// distances of 1 to 10⁶ radii; and exact tangents: `f = o − C = (R, 0,
 /// z)` along `d = (0, 0, d_z)`, where `Δ = 0` but `|f|²` rounds, and
@@ -338,7 +430,10 @@ pub fn quadric_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
 }
 
 /// The seeds of a kind: its generated cases, the stiff catalogue's, and
-/// (if `go_on`) the committed ones.
+/// (if `go_on`, for a long search) the committed ones and the planes built
+/// to the bound's limit ([`plane_rounding_seeds`]). Those start at the
+/// top, so the short search, which must climb, starts without them; their
+/// own test is [`the_constructed_planes_use_most_of_the_bound`].
 pub fn seeds(kind: &str, rng: &mut SmallRng, n: usize, go_on: bool) -> Vec<Case> {
     let mut out = match kind {
         "plane" => [plane_seeds(rng, n), plane_first_seeds(rng, n)].concat(),
@@ -351,6 +446,9 @@ pub fn seeds(kind: &str, rng: &mut SmallRng, n: usize, go_on: bool) -> Vec<Case>
     }
     if go_on {
         out.extend(committed(kind));
+        if kind == "plane" {
+            out.extend(plane_rounding_seeds(rng, n));
+        }
     }
     out
 }
@@ -551,4 +649,22 @@ fn the_search_climbs_and_regenerates_the_fixtures_on_request() {
                 .expect("write the cases");
         }
     }
+}
+
+/// The construction of [`plane_rounding_seeds`] works: from a fixed seed,
+/// some of its planes make the reference's root wrong with every bound
+/// shrunk to a quarter, with no search at all.
+#[test]
+fn the_constructed_planes_use_most_of_the_bound() {
+    let mut rng = SmallRng::seed_from_u64(0x91a);
+    let factors: Vec<f64> = plane_rounding_seeds(&mut rng, 32)
+        .iter()
+        .filter_map(|c| critical_log2(c, &exact(c)?, Quantity::Root(0)))
+        .collect();
+    let best = factors.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    println!(
+        "{} of 32 wrong somewhere, the best up to 2^{best:.2}",
+        factors.len()
+    );
+    assert!(best >= -2.0, "best 2^{best}");
 }
