@@ -7,11 +7,12 @@
 //! sign, or an f32 rounding boundary). A seeded hill-climb maximises it,
 //! from seeds that sit on the edge of a decision by construction (roots by
 //! an f32 rounding midpoint, numerators that round next to one, margins
-//! `d·n`, `Δ`, `β² − 4αγ` near 0), by moving single inputs by a few ulps
-//! or by powers of two, keeping every move that does not lower the
-//! factor; exact sphere tangents, which no one-input move keeps tangent,
-//! are sampled instead. The committed cases are seeds too, so each run
-//! goes on from the best found so far.
+//! `d·n`, `Δ`, `β² − 4αγ` near 0, a sphere's `c` with every rounding of
+//! its bound near its maximum and in one direction), by moving single
+//! inputs by a few ulps or by powers of two, keeping every move that does
+//! not lower the factor; exact sphere tangents, which no one-input move
+//! keeps tangent, are sampled instead. The committed cases are seeds too,
+//! so each run goes on from the best found so far.
 //!
 //! Regenerate the cases (about a minute with `--release`) with
 //!
@@ -410,6 +411,76 @@ pub fn sphere_tangent_search(seed: u64, n: usize) -> Vec<Found> {
     out
 }
 
+/// Lines from a point on a sphere's surface, where the root near 0 is
+/// `c/q` with `c = f·f − R²` nearly 0 and its bound is mostly `E_c/|q|`,
+/// built so that `ĉ` carries nearly all the error it can: `o` tiny and the
+/// centre `C` at `2ᵏ` to within `2⁸` of its ulps per component, so that
+/// `f̂ᵢ = fl(oᵢ − Cᵢ)`, just above a power of two, rounds by nearly half an
+/// ulp (the bits `oᵢ` has below `ulp(fᵢ)` make a half ulp plus or minus
+/// `2⁻ᵍ` of one), and of `tries` such components the one whose square and
+/// whose running sum `f·f` round the most in that same direction; `R`
+/// within two ulps of `|f|`, so that `f·f − R²` cancels exactly and `c/q`
+/// is tiny, and `d` random, which moves the root against the f32 grid
+/// without touching `ĉ`. Every rounding then adds up: twice `u f·f` from
+/// `f̂`, and up to `u f·f` from the squares and from each sum, near `5u
+/// f·f` in all, against `E_c = 12u m_c` with `m_c = f·f + R² ≈ 2f·f`.
+pub fn sphere_surface_seeds(rng: &mut SmallRng, n: usize, tries: usize) -> Vec<Case> {
+    use rayoracle::num::dd::{two_prod, two_sum};
+    (0..n)
+        .map(|_| {
+            let k0 = rng.random_range(0..=20);
+            let ks = [
+                k0,
+                k0 - [0, 0, 3, 6, 9][rng.random_range(0..5)],
+                k0 - [3, 6, 9, 12][rng.random_range(0..4)],
+            ];
+            let up: bool = rng.random();
+            let (dir, g): (f32, i32) = (if up { 1.0 } else { -1.0 }, rng.random_range(6..=12));
+            let (mut o, mut c) = ([0f32; 3], [0f32; 3]);
+            let mut sum: Option<f64> = None;
+            for i in 0..3 {
+                let s = if rng.random() { 1.0 } else { -1.0 };
+                let mut best = (f64::NEG_INFINITY, 0f32, 0f32, 0f64);
+                for _ in 0..tries {
+                    let k = ks[i];
+                    let j = rng.random_range(0..=256) as f32;
+                    let ci = -s * 2f32.powi(k) * (1.0 + j * 2f32.powi(-23));
+                    let m = rng.random_range(0..1u32 << (23 - g));
+                    let frac = (1u32 << (g - 1)) as f32 + dir;
+                    let oi = s * ((m << g) as f32 + frac) * 2f32.powi(k - 52 - g);
+                    let f = f64::from(oi) - f64::from(ci);
+                    // The roundings of f̂², and of the sum it joins, as
+                    // computed minus exact.
+                    let (sq, e) = two_prod(f, f);
+                    let (next, rounded) = match sum {
+                        None => (sq, -e),
+                        Some(acc) => {
+                            let (t, r) = two_sum(acc, sq);
+                            (t, -e - r)
+                        }
+                    };
+                    if f64::from(dir) * rounded > best.0 {
+                        best = (f64::from(dir) * rounded, ci, oi, next);
+                    }
+                }
+                (c[i], o[i], sum) = (best.1, best.2, Some(best.3));
+            }
+            let ff: f64 = (0..3)
+                .map(|i| (f64::from(o[i]) - f64::from(c[i])).powi(2))
+                .sum();
+            let r = (ff.sqrt() as f32).to_bits() as i64 + rng.random_range(-2..=2);
+            let d = [0; 3].map(|_| {
+                let s = if rng.random() { 1.0 } else { -1.0 };
+                s * (1.0 + rng.random_range(0.0..1.0f32)) * 2f32.powi(rng.random_range(-2..=2))
+            });
+            Case::Sphere(
+                Ray::new(Vec3::from(o), Vec3::from(d)),
+                Sphere::new(Vec3::from(c), f32::from_bits(r as u32)),
+            )
+        })
+        .collect()
+}
+
 /// Cylinders `x² + y² = 1` grazed at a relative miss of 10⁻² to 10⁻⁹, and
 /// rays nearly along their axis.
 pub fn quadric_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
@@ -437,7 +508,7 @@ pub fn quadric_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
 pub fn seeds(kind: &str, rng: &mut SmallRng, n: usize, go_on: bool) -> Vec<Case> {
     let mut out = match kind {
         "plane" => [plane_seeds(rng, n), plane_first_seeds(rng, n)].concat(),
-        "sphere" => sphere_seeds(rng, n),
+        "sphere" => [sphere_seeds(rng, n), sphere_surface_seeds(rng, n / 8, 32)].concat(),
         _ => quadric_seeds(rng, n),
     };
     let cat = rayoracle::report::Catalogue::builtin().expect("the built-in catalogue");
