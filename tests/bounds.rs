@@ -7,14 +7,30 @@
 //! nearly 0, and the cases of `fixtures/bounds/`, which the seeded search
 //! of [`crate::bounds_search`] found by maximising the factor at which
 //! each certified quantity comes out wrong. At the factor 1 every answer
-//! is the oracle's. At 1/16 every kernel's roots, and the sphere's and the
-//! quadric's class, come out wrong on some committed case; at 1/8 the
-//! plane's root, the sphere's class and the quadric's class and roots; at
-//! 1/4 the quadric's class. A constant cut to a sixteenth is caught here,
-//! and for those quantities to an eighth or a quarter. A cut to a quarter
-//! of the others is left to the derivations in each kernel's `stages.rs`: each constant carries at least twice the
-//! proof's value, and the searched cases reach errors of 1/3.3 to 1/10.5
-//! of their bounds. Run with
+//! is the oracle's. At 1/8 every certified quantity of every kernel comes
+//! out wrong on some committed case, at 1/4 the quadric's class, and at
+//! 1/2 the plane's root, whose worst case is built rather than searched
+//! for ([`crate::bounds_search::plane_rounding_seeds`]: every rounding of
+//! the first pass near its maximum, in one direction, and the root just
+//! across an f32 rounding midpoint). Each constant carries at least one
+//! and a half times the proof's value; the searched cases of the others
+//! reach errors of 1/3.3 to 1/7.5 of their bounds. For the sphere's
+//! filter no case can reach 1/4, as its bounds cut to a quarter still
+//! hold. To first order the terms of its derivation of `E_Δ` sum to
+//! `10u(m_b² + â m_c)` (`8u m_b²` from `b̂`, `8u â m_c` from `â` and `ĉ`,
+//! and `u` for the two products' roundings and `u` for the difference's),
+//! against `40u(m_b² + â m_c)`: a wrong class there needs a factor below
+//! 1/4; the roots `(−b ∓ ŝ)/â` and `q/â`, whose bounds are mostly
+//! `E_Δ/(ŝâ)` (at least 14 times their part `E_b/â`, of which the error
+//! can reach half), stay below 1/4 with it. The root `c/q` near 0 has a
+//! bound mostly `E_c/|q|`, `E_c = 12u m_c`, where `c ≈ 0` and so `m_c =
+//! f·f + R² ≈ 2f·f`, while `ĉ` is within `5u f·f` (twice `u f·f` from
+//! `f̂`, `u f·f` from the squares and from each of the two sums; `f·f −
+//! R²` is exact): a factor below 5/24. The committed cases reach 2^-2.28
+//! in either root (by `c/q`, from
+//! [`crate::bounds_search::sphere_surface_seeds`]) and 2^-2.16 in the
+//! class, through the double-word stage, whose bound on `Δ` is built from
+//! the shrunk bounds of `a`, `b` and `c` and shrunk again. Run with
 //! `--nocapture` for the counts per family and the factor each committed
 //! case reaches.
 #![cfg(all(feature = "plane", feature = "sphere", feature = "quadric"))]
@@ -161,18 +177,18 @@ fn found(kind: &str) -> Vec<Case> {
 /// test notices. The bounds are the proofs' constants at least doubled,
 /// and a wrong answer needs every rounding of the proof's worst case near
 /// its maximum and in the same direction, with the exact value next to a
-/// decision; the search gets within about 2^1.7 to 2^3.4 of the bound
+/// decision; the search gets within about 2^1.7 to 2^2.9 of the bound
 /// (run with `--nocapture` for the factor each case reaches), so these
-/// are 1/2 for the plane's root, whose worst case is built by
-/// construction (`bounds_search::plane_rounding_seeds`), 1/4 for the
-/// quadric's class, 1/8 for the sphere's class and the quadric's roots,
-/// and 1/16 for the rest. Not listed: the plane's class,
-/// which no factor makes wrong (see `bounds_search::quantities`).
+/// are 1/2 for the plane's root, whose worst case is built
+/// (`bounds_search::plane_rounding_seeds`), 1/4 for the quadric's class
+/// and 1/8 for the rest; the sphere's cannot reach 1/4 (see the
+/// [module](self)). Not listed: the plane's class, which no factor makes
+/// wrong (see `bounds_search::quantities`).
 const CAUGHT_AT: [(&str, f64); 7] = [
     ("bounds/plane/root0", 0.5),
     ("bounds/sphere/class", 0.125),
-    ("bounds/sphere/root0", 1.0 / 16.0),
-    ("bounds/sphere/root1", 1.0 / 16.0),
+    ("bounds/sphere/root0", 0.125),
+    ("bounds/sphere/root1", 0.125),
     ("bounds/quadric/class", 0.25),
     ("bounds/quadric/root0", 0.125),
     ("bounds/quadric/root1", 0.125),

@@ -23,10 +23,12 @@
 //! * `Δ = b² − ac`: `|b̂² − b²| ≤ E_b(2|b̂| + E_b)`, `|âĉ − ac| ≤ â E_c +
 //!   (|ĉ| + E_c) E_a`, and the two products and the difference round once
 //!   each, by at most `u(b̂² + |âĉ|)` together with the difference's own.
-//!   With `|b̂| ≤ m_b` and `|ĉ| ≤ m_c` this is at most `18u(m_b² + â m_c)`
-//!   to first order, and the filter uses **`E_Δ = 40u(m_b² + â m_c)`**:
-//!   over twice the proof's constant, so that the second-order terms and the
-//!   roundings of the magnitudes themselves are covered.
+//!   With `|b̂| ≤ m_b` and `|ĉ| ≤ m_c` this is at most `10u(m_b² + â m_c)`
+//!   to first order (`8u m_b²` from `b̂`, `8u â m_c` from `â` and `ĉ`, `u`
+//!   for the products' roundings and `u` for the difference's), and the
+//!   filter uses **`E_Δ = 40u(m_b² + â m_c)`**: four times the proof's
+//!   constant, so that the second-order terms and the roundings of the
+//!   magnitudes themselves are covered.
 //!
 //! `Δ̂ > E_Δ` certifies two roots and `Δ̂ < −E_Δ` none. A tangent (`Δ = 0`)
 //! is never certified here.
