@@ -232,6 +232,22 @@ impl Dd {
             e: self.lo.abs() + self.err,
         }
     }
+    /// The same words with the error bound multiplied by `shrink`: for a
+    /// stage whose bounds are built unshrunk and shrunk once where they
+    /// decide a class.
+    ///
+    /// ```
+    /// use rayoracle::num::dd::Dd;
+    /// let x = Dd { hi: 1.0, lo: 0.0, err: 0.75 };
+    /// assert!(!x.sign_known() && x.shrunk(0.5).sign_known());
+    /// ```
+    #[inline(always)]
+    pub fn shrunk(self, shrink: f64) -> Dd {
+        Dd {
+            err: self.err * shrink,
+            ..self
+        }
+    }
     /// The value times `k`, a power of two (or its negation) that keeps
     /// every word in the normal range: exact.
     #[inline(always)]

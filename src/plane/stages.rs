@@ -575,15 +575,18 @@ pub fn double_word(
         num.add(-(o[i] * n[i]));
         den.add(d[i] * n[i]);
     }
-    let (num, den) = (num.finish(shrink), den.finish(shrink));
-    if den.is_zero() {
-        return if num.is_zero() {
+    // The bounds as derived; `shrink` scales each once, where it decides:
+    // the classes through `shrunk`, the root in `quotient`.
+    let (num, den) = (num.finish(1.0), den.finish(1.0));
+    let (sn, sd) = (num.shrunk(shrink), den.shrunk(shrink));
+    if sd.is_zero() {
+        return if sn.is_zero() {
             Some(PlaneHit::InPlane)
         } else {
-            num.sign_known().then_some(PlaneHit::Parallel)
+            sn.sign_known().then_some(PlaneHit::Parallel)
         };
     }
-    if !den.sign_known() {
+    if !sd.sign_known() {
         return None;
     }
     quotient(num.approx(), den.approx(), shrink).map(PlaneHit::Hit)

@@ -586,11 +586,7 @@ fn double_word_of<P: Product>(t: &ExactTerms, sums: Sums, shrink: f64) -> Option
             t.0.iter().for_each(|p| a.add_pair((p.0, p.1)));
             t.1.iter().for_each(|p| b.add_pair((p.0, p.1)));
             t.2.iter().for_each(|p| g.add_pair((p.0, p.1)));
-            (
-                a.finish(t.3, shrink),
-                b.finish(t.3, shrink),
-                g.finish(t.3, shrink),
-            )
+            (a.finish(t.3, 1.0), b.finish(t.3, 1.0), g.finish(t.3, 1.0))
         }
     };
     // Where the grid test fails (data of widely spread exponents), the
@@ -601,25 +597,33 @@ fn double_word_of<P: Product>(t: &ExactTerms, sums: Sums, shrink: f64) -> Option
         let sum = |v: &[Pair]| {
             let mut acc = Acc::new();
             v.iter().for_each(|p| acc.add_pair((p.0, p.1)));
-            acc.finish(shrink)
+            acc.finish(1.0)
         };
         (sum(&t.0), sum(&t.1), sum(&t.2))
     };
-    if alpha.is_zero() {
-        return if beta.is_zero() {
-            if gamma.is_zero() {
+    // The bounds as derived; `shrink` scales each once, where it decides:
+    // the classes through `shrunk`, the roots in `quotient`, `disc_near`'s
+    // test and `two_roots`.
+    let (sa, sb, sg) = (
+        alpha.shrunk(shrink),
+        beta.shrunk(shrink),
+        gamma.shrunk(shrink),
+    );
+    if sa.is_zero() {
+        return if sb.is_zero() {
+            if sg.is_zero() {
                 Some(QuadricHit::All)
             } else {
-                gamma.sign_known().then_some(QuadricHit::None)
+                sg.sign_known().then_some(QuadricHit::None)
             }
-        } else if beta.sign_known() {
+        } else if sb.sign_known() {
             let t = quotient(-gamma.approx(), beta.approx(), shrink)?;
             Some(QuadricHit::One(t))
         } else {
             None
         };
     }
-    if !alpha.sign_known() {
+    if !sa.sign_known() {
         return None;
     }
     let b = beta.scale(0.5);
@@ -627,8 +631,8 @@ fn double_word_of<P: Product>(t: &ExactTerms, sums: Sums, shrink: f64) -> Option
     // Most Δ are far from 0 once α, β and γ are this close: decided from
     // the leading words; the exact sum below only where that fails, and
     // at once where α, β and γ are single exact words (two products).
-    let near = disc_near(a, bb, c, shrink);
-    if exact.is_none() && near.v.abs() > 2.0 * near.e {
+    let near = disc_near(a, bb, c, 1.0);
+    if exact.is_none() && near.v.abs() > 2.0 * near.e * shrink {
         if near.v < 0.0 {
             return Some(QuadricHit::None);
         }
@@ -647,20 +651,21 @@ fn double_word_of<P: Product>(t: &ExactTerms, sums: Sums, shrink: f64) -> Option
         disc.add_square_by::<P>(b);
         disc.add_dd_prod_by::<P>(alpha.scale(-1.0), gamma);
     }
-    let mut disc = disc.finish(t.3 * t.3 * 0.25, shrink);
+    let mut disc = disc.finish(t.3 * t.3 * 0.25, 1.0);
     // As for the coefficients: where exact data fails the grid test, the
     // sum with every low addition checked.
     if disc.err != 0.0 && alpha.err == 0.0 && beta.err == 0.0 && gamma.err == 0.0 {
         let mut acc = Acc::wide();
         acc.add_dd_prod(b, b);
         acc.add_dd_prod(alpha.scale(-1.0), gamma);
-        disc = acc.finish(shrink);
+        disc = acc.finish(1.0);
     }
-    if disc.is_zero() {
+    let class = disc.shrunk(shrink);
+    if class.is_zero() {
         let t = quotient(-b.approx(), alpha.approx(), shrink)?;
         return Some(QuadricHit::One(t));
     }
-    if !disc.sign_known() {
+    if !class.sign_known() {
         return None;
     }
     if disc.hi < 0.0 {

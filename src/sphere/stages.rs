@@ -792,20 +792,23 @@ pub(crate) fn double_word_by<P: Product>(
         add_prod(&mut cq, fl, fl);
     }
     cq.add(-(r * r));
-    let (a, b, cq) = (a.finish(shrink), b.finish(shrink), cq.finish(shrink));
+    // The bounds as derived; `shrink` scales each once, where it decides:
+    // the class here, the roots in `quotient` and `two_roots`.
+    let (a, b, cq) = (a.finish(1.0), b.finish(1.0), cq.finish(1.0));
     let mut disc = Acc::wide();
     let extra = add_dd_prod(&mut disc, b, b) + add_dd_prod(&mut disc, a.scale(-1.0), cq);
-    let mut disc = disc.finish(shrink);
-    disc.err += extra * SLACK * shrink;
-    if a.hi == 0.0 || (disc.sign_known() && disc.hi < 0.0) {
+    let mut disc = disc.finish(1.0);
+    disc.err += extra * SLACK;
+    let class = disc.shrunk(shrink);
+    if a.hi == 0.0 || (class.sign_known() && disc.hi < 0.0) {
         // a = Σdᵢ² rounds to 0 only where every dᵢ is 0.
         return Some(SphereHit::None);
     }
-    if disc.is_zero() {
+    if class.is_zero() {
         let t = quotient(-b.approx(), a.approx(), shrink)?;
         return Some(SphereHit::Tangent(t));
     }
-    if !disc.sign_known() {
+    if !class.sign_known() {
         return None;
     }
     let (t0, t1) = two_roots(a.approx(), b.approx(), cq.approx(), disc.approx(), shrink)?;
