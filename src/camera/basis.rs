@@ -186,7 +186,7 @@ pub fn basis(p: &super::CameraParams, shrink: f64) -> Option<Basis> {
         acc.add_prod(d[j], xw[k].1);
         acc.add_prod(-d[k], xw[j].0);
         acc.add_prod(-d[k], xw[j].1);
-        let yi = acc.finish(1.0);
+        let yi = acc.finish();
         if xi != 0.0 {
             let bx = qf * xi;
             let xi = bx * rx;

@@ -46,13 +46,13 @@
 //! let mut x = Acc::new();
 //! x.add_prod(0.1, 0.1);
 //! x.add(-0.01);
-//! let v = x.finish(1.0);
+//! let v = x.finish();
 //! assert!(v.err == 0.0 && v.hi != 0.0 && v.sign_known());
 //! // 3·(1/3)·... : a sum that cancels to exactly 0.
 //! let mut z = Acc::new();
 //! z.add_prod(1.0 / 3.0, 3.0);
 //! z.add_prod(-1.0 / 3.0, 3.0);
-//! assert!(z.finish(1.0).is_zero());
+//! assert!(z.finish().is_zero());
 //! ```
 
 use super::certify::{SLACK, U, certify, div, quotient_bound};
@@ -374,9 +374,9 @@ impl Acc {
         self.add_prod(x.lo, y.lo);
         self.extra += 2.0 * (x.hi.abs() * y.err + x.err * (y.hi.abs() + y.err));
     }
-    /// The sum, with its bound multiplied by `shrink` (1 in the kernels;
-    /// the tests pass less to show that a bound too small is caught).
-    /// The words are renormalised by TwoSum into `hi + lo + d` exactly, with
+    /// The sum, with its bound as derived (a stage shrinks it with
+    /// [`Dd::shrunk`] where it decides, for the tests that show a bound
+    /// too small is caught). The words are renormalised by TwoSum into `hi + lo + d` exactly, with
     /// `|lo| ≤ u|hi|` and `|d|` added to the bound (0 where two words hold
     /// the sum). The last word's recursive sum of `n` terms (the low word,
     /// or in [`Acc::wide`] the third) is within `γₙ₋₁ Σ|eᵢ|` of its exact
@@ -385,7 +385,7 @@ impl Acc {
     /// roundings of `Σ|eᵢ|` itself), 0 where no addition rounded, plus the
     /// errors of the inputs of [`Acc::add_dd_prod`].
     #[inline(always)]
-    pub fn finish(self, shrink: f64) -> Dd {
+    pub fn finish(self) -> Dd {
         let (hi, lo, d) = if self.wide {
             // hi + lo + lo2 = h + c + b = h + l + d = hi' + lo' + d, exactly.
             let (a, b) = two_sum(self.lo, self.lo2);
@@ -406,7 +406,7 @@ impl Acc {
         Dd {
             hi,
             lo,
-            err: (d.abs() + chain + self.extra) * SLACK * shrink,
+            err: (d.abs() + chain + self.extra) * SLACK,
         }
     }
 }
@@ -431,10 +431,10 @@ impl Acc {
 /// let mut x = GridAcc::new();
 /// x.add_pair(two_prod(a, a));
 /// x.add_pair((-1.0, 0.0));
-/// let v = x.finish(2f64.powi(-104), 1.0);
+/// let v = x.finish(2f64.powi(-104));
 /// assert_eq!((v.hi, v.lo, v.err), (2f64.powi(-51), 2f64.powi(-104), 0.0));
 /// // Told of a finer grid, the test fails: a bound, no certain value.
-/// assert!(x.finish(2f64.powi(-200), 1.0).err > 0.0);
+/// assert!(x.finish(2f64.powi(-200)).err > 0.0);
 /// ```
 ///
 /// [`GridAcc::wide`] keeps a third word, as [`Acc::wide`] does: the low
@@ -491,7 +491,7 @@ impl GridAcc {
     /// let mut s = GridAcc::wide();
     /// s.add_square_by::<Dekker>(x);
     /// s.add_pair((-9.0, 0.0));
-    /// let v = s.finish(2f64.powi(-120), 1.0);
+    /// let v = s.finish(2f64.powi(-120));
     /// assert_eq!((v.hi, v.lo, v.err), (6.0 * 2f64.powi(-60), 2f64.powi(-120), 0.0));
     /// ```
     #[inline(always)]
@@ -504,14 +504,13 @@ impl GridAcc {
     /// The sum, exact (`err = 0`) where the last word's values sum below
     /// `2⁵²·grid` in magnitude (the computed `m`, within `2nu` of the
     /// true one, is widened by [`SLACK`] for the test), else with the
-    /// bound `2nu m`; renormalised and bounded as by [`Acc::finish`],
-    /// the bound multiplied by `shrink`. `grid` must be a power of two that divides every
-    /// value added.
+    /// bound `2nu m`; renormalised and bounded as by [`Acc::finish`].
+    /// `grid` must be a power of two that divides every value added.
     #[inline(always)]
-    pub fn finish(self, grid: f64, shrink: f64) -> Dd {
+    pub fn finish(self, grid: f64) -> Dd {
         let mut acc = self.0;
         acc.exact = acc.mag * SLACK < grid * 4_503_599_627_370_496.0;
-        acc.finish(shrink)
+        acc.finish()
     }
 }
 
@@ -614,7 +613,7 @@ mod tests {
                 acc.add_prod(a as f64, b as f64);
                 exact += scaled(a) * scaled(b);
             }
-            let d = acc.finish(1.0);
+            let d = acc.finish();
             if d.is_zero() {
                 prop_assert_eq!(exact, 0);
             }
@@ -638,7 +637,7 @@ mod tests {
                 acc.add_pair(two_prod(a as f64, b as f64));
                 exact += scaled(a) * scaled(b);
             }
-            let d = acc.finish(2f64.powi(-80), 1.0);
+            let d = acc.finish(2f64.powi(-80));
             if d.is_zero() {
                 prop_assert_eq!(exact, 0);
             }
@@ -664,7 +663,7 @@ mod tests {
         let run = |mut acc: GridAcc| {
             terms.iter().for_each(|&x| acc.add_pair((x, 0.0)));
             terms.iter().for_each(|&x| acc.add_pair((-x, 0.0)));
-            acc.finish(2f64.powi(-120), 1.0)
+            acc.finish(2f64.powi(-120))
         };
         let (narrow, wide) = (run(GridAcc::new()), run(GridAcc::wide()));
         assert!(!narrow.is_zero() && (narrow.hi + narrow.lo).abs() <= narrow.err);
@@ -680,14 +679,14 @@ mod tests {
         acc.add(2f64.powi(-80));
         acc.add(2f64.powi(-140));
         acc.add(-1.0);
-        let d = acc.finish(1.0);
+        let d = acc.finish();
         assert!(d.err > 0.0 && !d.is_zero());
         // The exact sum is 2⁻⁸⁰ + 2⁻¹⁴⁰; the words miss the second part.
         let miss = (2f64.powi(-140) - (d.hi - 2f64.powi(-80)) - d.lo).abs();
         assert!(miss > 0.0 && miss <= d.err);
         assert!(d.sign_known() && d.hi > 0.0);
         // Shrunk to nothing, the bound no longer covers.
-        assert!(miss > acc.finish(0.0).err);
+        assert!(miss > acc.finish().shrunk(0.0).err);
     }
 
     /// A sum spanning 120 bits: the narrow sum's low word rounds (a bound,
@@ -698,7 +697,7 @@ mod tests {
         let run = |mut acc: Acc| {
             terms.iter().for_each(|&x| acc.add(x));
             terms.iter().for_each(|&x| acc.add(-x));
-            acc.finish(1.0)
+            acc.finish()
         };
         let (narrow, wide) = (run(Acc::new()), run(Acc::wide()));
         assert!(!narrow.is_zero() && narrow.err > 0.0);
@@ -706,7 +705,7 @@ mod tests {
         // Without the cancellation the wide sum is exact and nonzero.
         let mut acc = Acc::wide();
         terms.iter().for_each(|&x| acc.add(x));
-        let d = acc.finish(1.0);
+        let d = acc.finish();
         assert_eq!((d.hi, d.lo), (1.0, 2f64.powi(-60)));
         assert!(d.err > 0.0 && d.err < 2f64.powi(-119) && d.sign_known());
     }
@@ -721,7 +720,7 @@ mod tests {
         };
         let mut acc = Acc::new();
         acc.add_dd_prod(x, x);
-        let d = acc.finish(1.0);
+        let d = acc.finish();
         assert_eq!(d.hi, 9.0);
         assert!(d.err >= 6e-20 && d.err < 1e-18);
         assert!(x.scale(-4.0).hi == -12.0 && x.scale(-4.0).err == 4e-20);
@@ -732,7 +731,7 @@ mod tests {
     fn overflow_is_not_exact() {
         let mut acc = Acc::new();
         acc.add_prod(1e300, 1e300);
-        let d = acc.finish(1.0);
+        let d = acc.finish();
         assert!(!d.is_zero() && !d.sign_known());
     }
 }

@@ -577,7 +577,7 @@ pub fn double_word(
     }
     // The bounds as derived; `shrink` scales each once, where it decides:
     // the classes through `shrunk`, the root in `quotient`.
-    let (num, den) = (num.finish(1.0), den.finish(1.0));
+    let (num, den) = (num.finish(), den.finish());
     let (sn, sd) = (num.shrunk(shrink), den.shrunk(shrink));
     if sd.is_zero() {
         return if sn.is_zero() {

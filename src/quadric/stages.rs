@@ -447,7 +447,7 @@ fn tracked_in<P: Product>(t: &ExactTerms, shrink: f64) -> (Option<QuadricHit>, S
         let word = |v: &[Pair]| {
             let mut acc = GridAcc::new();
             v.iter().for_each(|p| acc.add_pair((p.0, p.1)));
-            acc.finish(t.3, 1.0)
+            acc.finish(t.3)
         };
         let words = [word(&t.0), word(&t.1), word(&t.2)];
         if !words.iter().all(|w| w.err == 0.0 && w.lo == 0.0) {
@@ -586,7 +586,7 @@ fn double_word_of<P: Product>(t: &ExactTerms, sums: Sums, shrink: f64) -> Option
             t.0.iter().for_each(|p| a.add_pair((p.0, p.1)));
             t.1.iter().for_each(|p| b.add_pair((p.0, p.1)));
             t.2.iter().for_each(|p| g.add_pair((p.0, p.1)));
-            (a.finish(t.3, 1.0), b.finish(t.3, 1.0), g.finish(t.3, 1.0))
+            (a.finish(t.3), b.finish(t.3), g.finish(t.3))
         }
     };
     // Where the grid test fails (data of widely spread exponents), the
@@ -597,7 +597,7 @@ fn double_word_of<P: Product>(t: &ExactTerms, sums: Sums, shrink: f64) -> Option
         let sum = |v: &[Pair]| {
             let mut acc = Acc::new();
             v.iter().for_each(|p| acc.add_pair((p.0, p.1)));
-            acc.finish(1.0)
+            acc.finish()
         };
         (sum(&t.0), sum(&t.1), sum(&t.2))
     };
@@ -651,14 +651,14 @@ fn double_word_of<P: Product>(t: &ExactTerms, sums: Sums, shrink: f64) -> Option
         disc.add_square_by::<P>(b);
         disc.add_dd_prod_by::<P>(alpha.scale(-1.0), gamma);
     }
-    let mut disc = disc.finish(t.3 * t.3 * 0.25, 1.0);
+    let mut disc = disc.finish(t.3 * t.3 * 0.25);
     // As for the coefficients: where exact data fails the grid test, the
     // sum with every low addition checked.
     if disc.err != 0.0 && alpha.err == 0.0 && beta.err == 0.0 && gamma.err == 0.0 {
         let mut acc = Acc::wide();
         acc.add_dd_prod(b, b);
         acc.add_dd_prod(alpha.scale(-1.0), gamma);
-        disc = acc.finish(1.0);
+        disc = acc.finish();
     }
     let class = disc.shrunk(shrink);
     if class.is_zero() {

@@ -794,10 +794,10 @@ pub(crate) fn double_word_by<P: Product>(
     cq.add(-(r * r));
     // The bounds as derived; `shrink` scales each once, where it decides:
     // the class here, the roots in `quotient` and `two_roots`.
-    let (a, b, cq) = (a.finish(1.0), b.finish(1.0), cq.finish(1.0));
+    let (a, b, cq) = (a.finish(), b.finish(), cq.finish());
     let mut disc = Acc::wide();
     let extra = add_dd_prod(&mut disc, b, b) + add_dd_prod(&mut disc, a.scale(-1.0), cq);
-    let mut disc = disc.finish(1.0);
+    let mut disc = disc.finish();
     disc.err += extra * SLACK;
     let class = disc.shrunk(shrink);
     if a.hi == 0.0 || (class.sign_known() && disc.hi < 0.0) {
