@@ -95,9 +95,10 @@ pub fn certify_end<L: Real>(t: L, r: L, a: L) -> (L::Mask, L) {
 /// that crosses below, where ulps are half as large, spans at most
 /// `2e/2ᵏ⁻⁵²` patterns, and crossing needs `|t| − 2ᵏ < e`, so `|t| <
 /// 2ᵏ(1 + 2r)`: at most `r·2⁵³(1 + 2r)`, below `r·2⁵³ + 1`. So where `t`'s
-/// last 29 bits are more than `m = ⌈r·2⁵³⌉ + 2` from `0x1000_0000`
-/// (modulo `2²⁹`), no midpoint lies in the enclosure, and every value in
-/// it rounds as `t` does. The test is three exact integer operations
+/// last 29 bits are more than `m = ⌊r·2⁵³⌋ + 3` (at least `⌈r·2⁵³⌉ + 2`;
+/// a truncating conversion, where `ceil` is a library call in a baseline
+/// x86-64 build) from `0x1000_0000` (modulo `2²⁹`), no midpoint lies in
+/// the enclosure, and every value in it rounds as `t` does. The test is three exact integer operations
 /// ([`Real::off_midpoint`]), with no rounding of its own, and waits on
 /// nothing but `t`. An exact 0 certifies (`e = 0`).
 ///
@@ -114,7 +115,7 @@ pub fn certify_end<L: Real>(t: L, r: L, a: L) -> (L::Mask, L) {
 /// ```
 #[inline(always)]
 pub fn certify_relative<L: Real>(t: L, r: f64) -> L::Mask {
-    t.off_midpoint((r * 2f64.powi(53)).ceil() as i64 + 2)
+    t.off_midpoint((r * 2f64.powi(53)) as i64 + 3)
 }
 
 /// The bound on a quotient, in the two parts [`certify`] takes. For `t̂ =
