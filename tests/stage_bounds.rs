@@ -169,7 +169,7 @@ const CAUGHT_AT: [(&str, f64); 7] = [
     ("bounds/plane/second", 0.25),
     ("bounds/plane/tight", 0.25),
     ("bounds/sphere/tight", 0.125),
-    ("bounds/sphere/compensated", 1.0 / 16.0),
+    ("bounds/sphere/compensated", 0.125),
     ("bounds/sphere/double-word", 1.0 / 32.0),
     ("bounds/quadric/double-word", 0.125),
 ];
@@ -459,7 +459,7 @@ fn sphere_near_surface(rng: &mut SmallRng) -> Vec<Case> {
 /// as the filter computes them. There `Δ = 0`, and `Δ̂` is the sum of
 /// the roundings of `b`'s products and sum, `b̂²`, `f̂ᵢ²` and the sums of
 /// `c`, `a` and `âĉ`, up to about `14u·b²` when all have one sign, against
-/// `E_Δ ≈ 80u·b²` (the sphere is tiny beside `|f|`, so `a·m_c ≈ b²`): the
+/// `E_Δ ≈ 40u·b²` (the sphere is tiny beside `|f|`, so `a·m_c ≈ b²`): the
 /// stage answers two roots wrongly where the factor is below `Δ̂/E_Δ`.
 fn sphere_tangent_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
     let score = |c: &Case| {
@@ -479,7 +479,7 @@ fn sphere_tangent_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
         let mb = fd[0].abs() + fd[1].abs() + fd[2].abs();
         let ff = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
         let disc = b * b - a * (ff - r * r);
-        disc / (40.0 * U * (mb * mb + a * (ff + r * r)))
+        disc / (20.0 * U * (mb * mb + a * (ff + r * r)))
     };
     (0..n)
         .filter_map(|_| {

@@ -26,9 +26,10 @@
 //!   With `|b̂| ≤ m_b` and `|ĉ| ≤ m_c` this is at most `10u(m_b² + â m_c)`
 //!   to first order (`8u m_b²` from `b̂`, `8u â m_c` from `â` and `ĉ`, `u`
 //!   for the products' roundings and `u` for the difference's), and the
-//!   filter uses **`E_Δ = 40u(m_b² + â m_c)`**: four times the proof's
-//!   constant, so that the second-order terms and the roundings of the
-//!   magnitudes themselves are covered.
+//!   filter uses **`E_Δ = 20u(m_b² + â m_c)`**: twice the proof's
+//!   constant, so that the second-order terms (of order `u²`) and the
+//!   roundings of the magnitudes themselves (a few `u` relatively) are
+//!   covered.
 //!
 //! `Δ̂ > E_Δ` certifies two roots and `Δ̂ < −E_Δ` none. A tangent (`Δ = 0`)
 //! is never certified here.
@@ -133,7 +134,7 @@ fn dots<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Dots<L> {
 }
 
 /// The quadratic and the classes both filters certify: `c = f·f − R²`,
-/// `m_c = f·f + R²`, `Δ̂ = b² − ac` and `E_Δ = 40u(m_b² + â m_c)`, then no
+/// `m_c = f·f + R²`, `Δ̂ = b² − ac` and `E_Δ = 20u(m_b² + â m_c)`, then no
 /// root where `a = 0` or `Δ̂ < −E_Δ`, two where `Δ̂ > E_Δ`.
 #[derive(Clone, Copy)]
 pub(crate) struct Classes<L: Real> {
@@ -172,7 +173,7 @@ pub(crate) fn classes<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f6
     let cq = ff - rr;
     let mc = ff + rr;
     let disc = b * b - a * cq;
-    let ed = L::splat(40.0 * U * shrink) * (mb * mb + a * mc);
+    let ed = L::splat(20.0 * U * shrink) * (mb * mb + a * mc);
     let line = a.gt(L::splat(0.0));
     Classes {
         a,
@@ -289,7 +290,7 @@ pub struct Sorted<L: Real> {
 /// fl(n̂·(1/â))` is within `4u|t̂|` of `n̂/â`, and `|n̂/â − n/a| ≤ (|n̂|
 /// E_a/a + |n̂ − n|)/â`, with `E_a/a ≤ 2u`: `e = 7u|t̂| + (E_b + E_s)/â`
 /// to first order. The pass uses `r = 20u` and `a = (E_b + E_s)/â`, with
-/// `E_b = 8u m_b`, `E_Δ = 40u(m_b² + âm_c)` and every part widened by `1
+/// `E_b = 8u m_b`, `E_Δ = 20u(m_b² + âm_c)` and every part widened by `1
 /// + 2⁻³⁰`, as in the filter.
 ///
 /// Rounding is monotone and `ŝ ≥ 0`, `1/â > 0`, so `lo ≤ hi` without a
@@ -479,7 +480,7 @@ pub fn tight(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64, shrink: f64) -> Opti
 ///   sphere gets its root 0.
 ///
 /// The roots are [`two_roots`]' with `a`, `b` and `Δ` as in the filter
-/// (`E_a = 4uâ`, `E_b = 8u m_b`, `E_Δ = 40u(m_b² + â m_c)`), and every
+/// (`E_a = 4uâ`, `E_b = 8u m_b`, `E_Δ = 20u(m_b² + â m_c)`), and every
 /// bound is multiplied by `shrink`. `None` where the filter's class is not
 /// two or a root is undecided.
 ///
@@ -560,7 +561,7 @@ pub(crate) fn compensated_from(
     let cq = s + (low + eps);
     let ec = (2.0 * U * cq.abs() + 24.0 * U * (mag + eps.abs())) * SLACK;
     let x = |v: f64, e: f64| Approx { v, e };
-    let ed = 40.0 * U * (mb * mb + a * mc) * SLACK;
+    let ed = 20.0 * U * (mb * mb + a * mc) * SLACK;
     let (t0, t1) = two_roots(
         x(a, 4.0 * U * a),
         x(b, 8.0 * U * mb),
