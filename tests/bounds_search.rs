@@ -7,12 +7,12 @@
 //! sign, or an f32 rounding boundary). A seeded hill-climb maximises it,
 //! from seeds that sit on the edge of a decision by construction (roots by
 //! an f32 rounding midpoint, numerators that round next to one, margins
-//! `d·n`, `Δ`, `β² − 4αγ` near 0, a sphere's `c` with every rounding of
-//! its bound near its maximum and in one direction), by moving single
-//! inputs by a few ulps or by powers of two, keeping every move that does
-//! not lower the factor; exact sphere tangents, which no one-input move
-//! keeps tangent, are sampled instead. The committed cases are seeds too,
-//! so each run goes on from the best found so far.
+//! `d·n`, `Δ`, `β² − 4αγ` near 0, a sphere's `c` and `Δ` with every
+//! rounding of their bounds near its maximum and in one direction), by
+//! moving single inputs by a few ulps or by powers of two, keeping every
+//! move that does not lower the factor; exact sphere tangents, which no
+//! one-input move keeps tangent, are sampled instead. The committed cases
+//! are seeds too, so each run goes on from the best found so far.
 //!
 //! Regenerate the cases (about a minute with `--release`) with
 //!
@@ -481,6 +481,112 @@ pub fn sphere_surface_seeds(rng: &mut SmallRng, n: usize, tries: usize) -> Vec<C
         .collect()
 }
 
+/// Lines that just touch a sphere or just cross it, built so that `Δ̂`
+/// carries nearly all the error its bound allows, and in one direction:
+/// down, across 0, while the exact `Δ` is 0 or just above, so that the
+/// filter certifies no root. `f = o − C` is nearly `−λd`, where (to first
+/// order) the rounding of `f̂` cancels out of `Δ`, so `f̂` is left exact:
+/// `C ≈ d` to within `2⁸` of its ulps per component, and `o` small (`2⁻²⁷`
+/// to `2⁻²⁵`), which fills in the low bits of `f`. With `d = (dx, dy,
+/// dz)`, `dx` and `dy` just above 1, and `dz = fz` just above `2⁻²⁶`
+/// (`o_z = dz`, `C_z = 0`, so that `fz dz` has the sign opposite to `b`),
+/// every quantity of the filter lies just above a power of two, where a
+/// rounding error of half an ulp is a relative `u`, and:
+///
+/// * `f̂ᵢdᵢ` (`i` = x, y) rounds down in magnitude and `f̂ᵢ²` up, each by
+///   at least 0.35 ulp (of `tries` draws of each component, the ones that
+///   do);
+/// * `f̂ₓdₓ + f̂ᵧdᵧ` rounds down by exactly half an ulp (a tie, the two
+///   terms being in one binade) and `f̂ₓ² + f̂ᵧ²` up (the pairs of
+///   components whose ties go that way);
+/// * `fz dz` and `fz²` are just above half an ulp of `b` and of `f·f`, so
+///   that adding them rounds `b` down and `f·f` up by nearly half an ulp,
+///   and `dz²` likewise rounds `a` up (`dx² + dy²` is exact);
+/// * `R` is the smallest f32 for which the line is not a miss (`Δ =
+///   aR² − |f × d|² ≥ 0`, found by the oracle's class), tiny against
+///   `|f|`, so that `ĉ = f·f − R²` and `âĉ` round as they may.
+///
+/// Then `b̂` is low by up to `3u b`, `b̂²` by up to `7u b²`, and `âĉ` high
+/// by up to `6u b²` (`u` from `â`, `3u` from `f·f`, `u` from `c`, `u` from
+/// the product), against `E_Δ = 20u(m_b² + â m_c) ≈ 40u b²`: a factor of
+/// up to `13/40`. Of the pairs, the one whose `Δ̂` is lowest in units of
+/// `E_Δ` (computed as the filter does) is kept.
+pub fn sphere_rounding_seeds(rng: &mut SmallRng, n: usize, tries: usize) -> Vec<Case> {
+    (0..n).filter_map(|_| sphere_rounding(rng, tries)).collect()
+}
+
+/// One of [`sphere_rounding_seeds`], if the draws allow it.
+fn sphere_rounding(rng: &mut SmallRng, tries: usize) -> Option<Case> {
+    use rayoracle::num::dd::{two_prod, two_sum};
+    let ulp = |x: f64| f64::from_bits(x.abs().to_bits() & 0x7ff0_0000_0000_0000) * f64::EPSILON;
+    let step = 2f32.powi(-23);
+    let dv = [0; 2].map(|_| 1.0 + rng.random_range(1..1 << 12) as f32 * step);
+    // Components (o, C, f) whose product with d rounds down in magnitude
+    // and whose square rounds up, both by at least 0.35 ulp.
+    let components = |rng: &mut SmallRng, d: f32| {
+        let mut out = Vec::new();
+        for _ in 0..tries {
+            let c = d + rng.random_range(-256..=256) as f32 * step;
+            let s = if rng.random() { 1.0 } else { -1.0 };
+            let o = s * rng.random_range(2f32.powi(-27)..2f32.powi(-25));
+            let f = f64::from(o) - f64::from(c);
+            let (p, e) = two_prod(f, f64::from(d));
+            let (q, g) = two_prod(f, f);
+            if e * p.signum() >= 0.35 * ulp(p) && -g >= 0.35 * ulp(q) {
+                out.push((o, c, f, p, q));
+            }
+        }
+        out
+    };
+    let (xs, ys) = (components(rng, dv[0]), components(rng, dv[1]));
+    let dz = f32::from_bits(2f32.powi(-26).to_bits() + 1);
+    let d = Vec3::new(dv[0], dv[1], dz);
+    let mut best: Option<(f64, Case)> = None;
+    for &(ox, cx, fx, px, qx) in &xs {
+        for &(oy, cy, fy, py, qy) in &ys {
+            // The ties: b's partial sum down in magnitude, f·f's up.
+            let (sb, rb) = two_sum(px, py);
+            let (sf, rf) = two_sum(qx, qy);
+            if rb * sb.signum() <= 0.0 || rf >= 0.0 {
+                continue;
+            }
+            let o = Vec3::new(ox, oy, dz);
+            let c = Vec3::new(cx, cy, 0.0);
+            let f = [fx, fy, f64::from(dz)];
+            let dd = [dv[0], dv[1], dz].map(f64::from);
+            let cross = [
+                f[1] * dd[2] - f[2] * dd[1],
+                f[2] * dd[0] - f[0] * dd[2],
+                f[0] * dd[1] - f[1] * dd[0],
+            ];
+            let a = dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2];
+            let cross2: f64 = cross.iter().map(|x| x * x).sum();
+            let case = |r: f32| Case::Sphere(Ray::new(o, d), Sphere::new(c, r));
+            let miss = |r: f32| exact(&case(r)).is_none_or(|e| e.0 == "none");
+            let mut r = (cross2 / a).sqrt() as f32;
+            while miss(r) {
+                r = f32::from_bits(r.to_bits() + 1);
+            }
+            while !miss(f32::from_bits(r.to_bits() - 1)) {
+                r = f32::from_bits(r.to_bits() - 1);
+            }
+            // Δ̂ and E_Δ as the filter computes them.
+            let (bb, ff, rr) = (
+                sb + f[2] * dd[2],
+                sf + f[2] * f[2],
+                f64::from(r) * f64::from(r),
+            );
+            let disc = bb * bb - a * (ff - rr);
+            let mb = px.abs() + py.abs() + (f[2] * dd[2]).abs();
+            let factor = -disc / (20.0 * f64::EPSILON / 2.0 * (mb * mb + a * (ff + rr)));
+            if best.as_ref().is_none_or(|b| factor > b.0) {
+                best = Some((factor, case(r)));
+            }
+        }
+    }
+    best.map(|b| b.1)
+}
+
 /// Cylinders `x² + y² = 1` grazed at a relative miss of 10⁻² to 10⁻⁹, and
 /// rays nearly along their axis.
 pub fn quadric_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
@@ -501,10 +607,12 @@ pub fn quadric_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
 }
 
 /// The seeds of a kind: its generated cases, the stiff catalogue's, and
-/// (if `go_on`, for a long search) the committed ones and the planes built
-/// to the bound's limit ([`plane_rounding_seeds`]). Those start at the
-/// top, so the short search, which must climb, starts without them; their
-/// own test is [`the_constructed_planes_use_most_of_the_bound`].
+/// (if `go_on`, for a long search) the committed ones and the planes and
+/// sphere tangents built to the bound's limit ([`plane_rounding_seeds`],
+/// [`sphere_rounding_seeds`]). Those start at the top, so the short
+/// search, which must climb, starts without them; their own tests are
+/// [`the_constructed_planes_use_most_of_the_bound`] and
+/// [`the_constructed_tangents_use_most_of_the_bound`].
 pub fn seeds(kind: &str, rng: &mut SmallRng, n: usize, go_on: bool) -> Vec<Case> {
     let mut out = match kind {
         "plane" => [plane_seeds(rng, n), plane_first_seeds(rng, n)].concat(),
@@ -519,6 +627,9 @@ pub fn seeds(kind: &str, rng: &mut SmallRng, n: usize, go_on: bool) -> Vec<Case>
         out.extend(committed(kind));
         if kind == "plane" {
             out.extend(plane_rounding_seeds(rng, n));
+        }
+        if kind == "sphere" {
+            out.extend(sphere_rounding_seeds(rng, 16, 4096));
         }
     }
     out
@@ -735,6 +846,24 @@ fn the_constructed_planes_use_most_of_the_bound() {
     let best = factors.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     println!(
         "{} of 32 wrong somewhere, the best up to 2^{best:.2}",
+        factors.len()
+    );
+    assert!(best >= -2.0, "best 2^{best}");
+}
+
+/// The construction of [`sphere_rounding_seeds`] works: from a fixed seed,
+/// some of its lines make the reference's class wrong with every bound
+/// shrunk to a quarter, with no search at all.
+#[test]
+fn the_constructed_tangents_use_most_of_the_bound() {
+    let mut rng = SmallRng::seed_from_u64(0x7a3);
+    let factors: Vec<f64> = sphere_rounding_seeds(&mut rng, 4, 512)
+        .iter()
+        .filter_map(|c| critical_log2(c, &exact(c)?, Quantity::Class))
+        .collect();
+    let best = factors.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    println!(
+        "{} of 4 wrong somewhere, the best up to 2^{best:.2}",
         factors.len()
     );
     assert!(best >= -2.0, "best 2^{best}");
