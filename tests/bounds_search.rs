@@ -512,76 +512,169 @@ pub fn sphere_surface_seeds(rng: &mut SmallRng, n: usize, tries: usize) -> Vec<C
 /// up to `13/40`. Of the pairs, the one whose `Δ̂` is lowest in units of
 /// `E_Δ` (computed as the filter does) is kept.
 pub fn sphere_rounding_seeds(rng: &mut SmallRng, n: usize, tries: usize) -> Vec<Case> {
-    (0..n).filter_map(|_| sphere_rounding(rng, tries)).collect()
+    (0..n)
+        .filter_map(|_| sphere_rounding(rng, tries, false))
+        .collect()
 }
 
-/// One of [`sphere_rounding_seeds`], if the draws allow it.
-fn sphere_rounding(rng: &mut SmallRng, tries: usize) -> Option<Case> {
+/// The mirror of [`sphere_rounding_seeds`]: lines that just miss or just
+/// touch a sphere, with every rounding of `Δ̂` near half an ulp and
+/// pushing it up, across 0, while the exact `Δ` is 0 or just below, so
+/// that the filter certifies two roots where there are none or one. The
+/// same lines, with each direction turned over:
+///
+/// * `f̂ᵢdᵢ` rounds up in magnitude and `f̂ᵢ²` down, the tie of `f̂ₓdₓ +
+///   f̂ᵧdᵧ` up in magnitude and that of `f̂ₓ² + f̂ᵧ²` down;
+/// * `dz = fz` is just below `2⁻²⁶`, so that `fz dz` (of the sign opposite
+///   to `b`), `fz²` and `dz²` are just below half an ulp of `b`, `f·f`
+///   and `a`, and are lost: `b̂` high in magnitude, `f·f` and `â` low,
+///   each by nearly half an ulp;
+/// * `R` is the largest f32 for which the line does not cross the sphere
+///   (`Δ ≤ 0`, by the oracle's class).
+///
+/// `b̂² ≈ 4` and `âĉ ≈ 4`, so `Δ̂` is a multiple of `2⁻⁵⁰`, about `E_Δ/20`,
+/// and the roundings come to at most 6.5 of those: the factor is at most
+/// `6/20`, `2^-1.74`. A class of two is only answered with both roots
+/// certified, and at the factor `s` the roots `−b̂/â ∓ ŝ/â` (`ŝ = √Δ̂`)
+/// are known to within about `sE_Δ/(âŝ)`, nearly `ŝ/â` itself where `s`
+/// approaches `Δ̂/E_Δ`: with `ŝ/â` about 0.3 of the f32 ulp of the
+/// root, `C` is drawn on the far side of `d` (`Cᵢ − dᵢ` from 1 to 256 of
+/// its ulps), so that the roots `t ≈ 1 + (C − d − o)·d/a` lie just above 1,
+/// where that ulp is `2⁻²³`, and each enclosure fits in a rounding cell
+/// only where a rounding midpoint lies between the roots, away from both.
+/// Of the pairs of components, the one kept has the largest `s` at which
+/// both enclosures fit and `Δ̂ > sE_Δ` (computed as the filter does, with
+/// `R` first estimated as `|f × d|/√a`, then found by the oracle for the
+/// best eight).
+pub fn sphere_rounding_up_seeds(rng: &mut SmallRng, n: usize, tries: usize) -> Vec<Case> {
+    (0..n)
+        .filter_map(|_| sphere_rounding(rng, tries, true))
+        .collect()
+}
+
+/// The distance from `x` to the nearest f32 rounding midpoint.
+fn to_midpoint(x: f64) -> f64 {
+    let y = x as f32;
+    let (lo, hi) = (y.next_down(), y.next_up());
+    let below = 0.5 * (f64::from(y) + f64::from(lo));
+    let above = 0.5 * (f64::from(y) + f64::from(hi));
+    (x - below).min(above - x)
+}
+
+/// One of [`sphere_rounding_seeds`] (or, `up`, of
+/// [`sphere_rounding_up_seeds`]), if the draws allow it.
+fn sphere_rounding(rng: &mut SmallRng, tries: usize, up: bool) -> Option<Case> {
     use rayoracle::num::dd::{two_prod, two_sum};
     let ulp = |x: f64| f64::from_bits(x.abs().to_bits() & 0x7ff0_0000_0000_0000) * f64::EPSILON;
+    // +1 where a rounding is to push Δ̂ down, −1 where up.
+    let dir = if up { -1.0 } else { 1.0 };
     let step = 2f32.powi(-23);
     let dv = [0; 2].map(|_| 1.0 + rng.random_range(1..1 << 12) as f32 * step);
     // Components (o, C, f) whose product with d rounds down in magnitude
-    // and whose square rounds up, both by at least 0.35 ulp.
+    // and whose square rounds up (or, `up`, the reverse), both by at least
+    // 0.35 ulp.
     let components = |rng: &mut SmallRng, d: f32| {
         let mut out = Vec::new();
         for _ in 0..tries {
-            let c = d + rng.random_range(-256..=256) as f32 * step;
+            let k = if up {
+                rng.random_range(1..=256)
+            } else {
+                rng.random_range(-256..=256)
+            };
+            let c = d + k as f32 * step;
             let s = if rng.random() { 1.0 } else { -1.0 };
             let o = s * rng.random_range(2f32.powi(-27)..2f32.powi(-25));
             let f = f64::from(o) - f64::from(c);
             let (p, e) = two_prod(f, f64::from(d));
             let (q, g) = two_prod(f, f);
-            if e * p.signum() >= 0.35 * ulp(p) && -g >= 0.35 * ulp(q) {
+            if dir * e * p.signum() >= 0.35 * ulp(p) && -dir * g >= 0.35 * ulp(q) {
                 out.push((o, c, f, p, q));
             }
         }
         out
     };
     let (xs, ys) = (components(rng, dv[0]), components(rng, dv[1]));
-    let dz = f32::from_bits(2f32.powi(-26).to_bits() + 1);
+    let dz = if up {
+        f32::from_bits(2f32.powi(-26).to_bits() - 1)
+    } else {
+        f32::from_bits(2f32.powi(-26).to_bits() + 1)
+    };
     let d = Vec3::new(dv[0], dv[1], dz);
-    let mut best: Option<(f64, Case)> = None;
+    let dd = [dv[0], dv[1], dz].map(f64::from);
+    let a = dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2];
+    // The factor each direction aims at, from Δ̂ and E_Δ as the filter
+    // computes them for the radius `r`.
+    let score = |(sb, sf, mb, fz): (f64, f64, f64, f64), r: f32| {
+        let (bb, ff, rr) = (sb + fz * dd[2], sf + fz * fz, f64::from(r) * f64::from(r));
+        let disc = bb * bb - a * (ff - rr);
+        let ed = 20.0 * f64::EPSILON / 2.0 * (mb * mb + a * (ff + rr));
+        if !up {
+            return -disc / ed;
+        }
+        if disc <= 0.0 {
+            return f64::NEG_INFINITY;
+        }
+        let (s, t) = (disc.sqrt(), -bb / a);
+        let room = to_midpoint(t - s / a).min(to_midpoint(t + s / a));
+        disc.min(a * s * room) / ed
+    };
+    let mut pairs = Vec::new();
     for &(ox, cx, fx, px, qx) in &xs {
         for &(oy, cy, fy, py, qy) in &ys {
-            // The ties: b's partial sum down in magnitude, f·f's up.
+            // The ties: b's partial sum down in magnitude, f·f's up (or,
+            // `up`, the reverse).
             let (sb, rb) = two_sum(px, py);
             let (sf, rf) = two_sum(qx, qy);
-            if rb * sb.signum() <= 0.0 || rf >= 0.0 {
+            if dir * rb * sb.signum() <= 0.0 || dir * rf >= 0.0 {
                 continue;
             }
             let o = Vec3::new(ox, oy, dz);
             let c = Vec3::new(cx, cy, 0.0);
             let f = [fx, fy, f64::from(dz)];
-            let dd = [dv[0], dv[1], dz].map(f64::from);
             let cross = [
                 f[1] * dd[2] - f[2] * dd[1],
                 f[2] * dd[0] - f[0] * dd[2],
                 f[0] * dd[1] - f[1] * dd[0],
             ];
-            let a = dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2];
             let cross2: f64 = cross.iter().map(|x| x * x).sum();
-            let case = |r: f32| Case::Sphere(Ray::new(o, d), Sphere::new(c, r));
-            let miss = |r: f32| exact(&case(r)).is_none_or(|e| e.0 == "none");
-            let mut r = (cross2 / a).sqrt() as f32;
-            while miss(r) {
-                r = f32::from_bits(r.to_bits() + 1);
-            }
-            while !miss(f32::from_bits(r.to_bits() - 1)) {
-                r = f32::from_bits(r.to_bits() - 1);
-            }
-            // Δ̂ and E_Δ as the filter computes them.
-            let (bb, ff, rr) = (
-                sb + f[2] * dd[2],
-                sf + f[2] * f[2],
-                f64::from(r) * f64::from(r),
-            );
-            let disc = bb * bb - a * (ff - rr);
+            let r = (cross2 / a).sqrt() as f32;
             let mb = px.abs() + py.abs() + (f[2] * dd[2]).abs();
-            let factor = -disc / (20.0 * f64::EPSILON / 2.0 * (mb * mb + a * (ff + rr)));
-            if best.as_ref().is_none_or(|b| factor > b.0) {
-                best = Some((factor, case(r)));
+            let sums = (sb, sf, mb, f[2]);
+            pairs.push((score(sums, r), r, o, c, sums));
+        }
+    }
+    // Down, every pair has its radius found; up, the best eight by the
+    // estimate.
+    if up {
+        pairs.sort_by(|x, y| y.0.total_cmp(&x.0));
+        pairs.truncate(8);
+    }
+    let mut best: Option<(f64, Case)> = None;
+    for (_, mut r, o, c, sums) in pairs {
+        let case = |r: f32| Case::Sphere(Ray::new(o, d), Sphere::new(c, r));
+        let next = |r: f32, k: i32| f32::from_bits((r.to_bits() as i32 + k) as u32);
+        if up {
+            // The largest R with no two roots.
+            let two = |r: f32| exact(&case(r)).is_some_and(|e| e.0 == "two");
+            while !two(r) {
+                r = next(r, 1);
             }
+            while two(r) {
+                r = next(r, -1);
+            }
+        } else {
+            // The smallest R with a root.
+            let miss = |r: f32| exact(&case(r)).is_none_or(|e| e.0 == "none");
+            while miss(r) {
+                r = next(r, 1);
+            }
+            while !miss(next(r, -1)) {
+                r = next(r, -1);
+            }
+        }
+        let factor = score(sums, r);
+        if best.as_ref().is_none_or(|b| factor > b.0) {
+            best = Some((factor, case(r)));
         }
     }
     best.map(|b| b.1)
