@@ -932,16 +932,8 @@ fn the_search_climbs_and_regenerates_the_fixtures_on_request() {
 #[test]
 fn the_constructed_planes_use_most_of_the_bound() {
     let mut rng = SmallRng::seed_from_u64(0x91a);
-    let factors: Vec<f64> = plane_rounding_seeds(&mut rng, 32)
-        .iter()
-        .filter_map(|c| critical_log2(c, &exact(c)?, Quantity::Root(0)))
-        .collect();
-    let best = factors.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    println!(
-        "{} of 32 wrong somewhere, the best up to 2^{best:.2}",
-        factors.len()
-    );
-    assert!(best >= -2.0, "best 2^{best}");
+    let cases = plane_rounding_seeds(&mut rng, 32);
+    reaches_a_quarter(&cases, |c| critical_log2(c, &exact(c)?, Quantity::Root(0)));
 }
 
 /// The construction of [`sphere_rounding_seeds`] works: from a fixed seed,
@@ -950,14 +942,20 @@ fn the_constructed_planes_use_most_of_the_bound() {
 #[test]
 fn the_constructed_tangents_use_most_of_the_bound() {
     let mut rng = SmallRng::seed_from_u64(0x7a3);
-    let factors: Vec<f64> = sphere_rounding_seeds(&mut rng, 4, 512)
-        .iter()
-        .filter_map(|c| critical_log2(c, &exact(c)?, Quantity::Class))
-        .collect();
+    let cases = sphere_rounding_seeds(&mut rng, 4, 512);
+    reaches_a_quarter(&cases, |c| critical_log2(c, &exact(c)?, Quantity::Class));
+}
+
+/// Asserts that some case of a construction is wrong at a quarter of its
+/// bound: `log2` gives a case's critical factor (`None` where it is right
+/// at every factor).
+pub fn reaches_a_quarter(cases: &[Case], log2: impl Fn(&Case) -> Option<f64>) {
+    let factors: Vec<f64> = cases.iter().filter_map(log2).collect();
     let best = factors.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     println!(
-        "{} of 4 wrong somewhere, the best up to 2^{best:.2}",
-        factors.len()
+        "{} of {} wrong somewhere, the best up to 2^{best:.2}",
+        factors.len(),
+        cases.len()
     );
     assert!(best >= -2.0, "best 2^{best}");
 }
