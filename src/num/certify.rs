@@ -98,9 +98,10 @@ pub fn certify_end<L: Real>(t: L, r: L, a: L) -> (L::Mask, L) {
 /// last 29 bits are more than `m = ⌊r·2⁵³⌋ + 3` (at least `⌈r·2⁵³⌉ + 2`;
 /// a truncating conversion, where `ceil` is a library call in a baseline
 /// x86-64 build) from `0x1000_0000` (modulo `2²⁹`), no midpoint lies in
-/// the enclosure, and every value in it rounds as `t` does. The test is three exact integer operations
-/// ([`Real::off_midpoint`]), with no rounding of its own, and waits on
-/// nothing but `t`. An exact 0 certifies (`e = 0`).
+/// the enclosure, and every value in it rounds as `t` does. The test is
+/// three exact integer operations ([`Real::off_midpoint`]), with no
+/// rounding of its own, and waits on nothing but `t`. An exact 0
+/// certifies (`e = 0`).
 ///
 /// ```
 /// use rayoracle::num::certify::{certify, certify_relative};

@@ -376,9 +376,9 @@ impl Acc {
     }
     /// The sum, with its bound as derived (a stage shrinks it with
     /// [`Dd::shrunk`] where it decides, for the tests that show a bound
-    /// too small is caught). The words are renormalised by TwoSum into `hi + lo + d` exactly, with
-    /// `|lo| ≤ u|hi|` and `|d|` added to the bound (0 where two words hold
-    /// the sum). The last word's recursive sum of `n` terms (the low word,
+    /// too small is caught). The words are renormalised by TwoSum into
+    /// `hi + lo + d` exactly, with `|lo| ≤ u|hi|` and `|d|` added to the
+    /// bound (0 where two words hold the sum). The last word's recursive sum of `n` terms (the low word,
     /// or in [`Acc::wide`] the third) is within `γₙ₋₁ Σ|eᵢ|` of its exact
     /// one;
     /// the bound is `2nu Σ|eᵢ|` (twice that, which also covers the
