@@ -186,6 +186,24 @@ proptest! {
         }
     }
 
+    /// A row and a tile, whose numerators are built in vector registers,
+    /// give what `Camera::ray4` gives for the same four pixels, inside
+    /// the image or straddling its edge.
+    #[test]
+    fn rows_and_tiles_equal_their_pixels(
+        dir in vec3(), up in vec3(), angle in any_f32(),
+        w in 1u32..64, h in 1u32..64, x in 0u32..70, y in 0u32..70,
+    ) {
+        let p = CameraParams::new(Vec3::new(1.0, -2.0, 3.0), dir, up, angle, [w, h]);
+        if let Ok(cam) = p.build() {
+            let row = [[x, y], [x + 1, y], [x + 2, y], [x + 3, y]];
+            let tile = [[x, y], [x + 1, y], [x, y + 1], [x + 1, y + 1]];
+            let bits = |r: [rayoracle::Ray; 4]| r.map(|r| r.dir.to_array().map(f32::to_bits));
+            prop_assert_eq!(bits(cam.ray4_row(x, y).to_rays()), bits(cam.ray4(row).to_rays()));
+            prop_assert_eq!(bits(cam.ray4_tile(x, y).to_rays()), bits(cam.ray4(tile).to_rays()));
+        }
+    }
+
     /// The batch entry points give, packet by packet, what `intersect`
     /// gives, for any number of packets (odd ones included) and an output
     /// slice of any length.
