@@ -39,6 +39,11 @@ use core::ops::{Add, Mul};
 /// α, β, γ of the corrected expansion, evaluated term by term, left to
 /// right, in whatever float type `T` is: `f32` here, `f64` in
 /// [`super::plain`]. `k` is `[A, …, J]`; `2x` is formed as `x + x`.
+/// Always inlined: out of line, its arrays pass through memory, written
+/// as scalars and read back as vectors, and the stalls on store
+/// forwarding made the `f64` baseline take 2.5 times its time in some
+/// builds and not in others.
+#[inline(always)]
 pub(crate) fn coefficients<T>(k: [T; 10], o: [T; 3], d: [T; 3]) -> (T, T, T)
 where
     T: Copy + Add<Output = T> + Mul<Output = T>,
