@@ -17,10 +17,10 @@
 //!   precision*, Numer. Math. 18, 1971). An overflow gives ±∞ or NaN.
 //! * [`Acc`] sums such terms: the high parts through TwoSum, their errors
 //!   (and the products' errors) in a low word whose own additions are
-//!   checked with TwoSum. Where none of those rounded, `hi + lo` is the
-//!   exact sum, so its sign and its zero are exact; otherwise the low
-//!   word's recursive sum of `n` terms is within `γₙ₋₁ Σ|eᵢ|` of the exact
-//!   one (Higham §4.2), and [`Acc::finish`] bounds it by `2nu Σ|eᵢ|`.
+//!   TwoSums too. Where none of those rounded, `hi + lo` is the exact sum,
+//!   so its sign and its zero are exact; otherwise [`Acc::finish`] bounds
+//!   the error by the sum of the magnitudes of the low word's rounding
+//!   errors, which TwoSum gives exactly (see [below](#the-sums-bounds)).
 //!   [`Acc::wide`] sums the low word's own errors in a third word the same
 //!   way, for the discriminants, whose exact zeros can span more than two
 //!   words; [`Acc::finish`] renormalises the three words exactly into two
@@ -28,7 +28,8 @@
 //! * [`GridAcc`] is [`Acc`] for values known to lie on one grid (integer
 //!   multiples of a power of two `g`, which the caller derives from the
 //!   data): one comparison, `Σ|eᵢ| < 2⁵²g`, proves its low word exact in
-//!   place of a TwoSum per addition.
+//!   place of a TwoSum per addition; otherwise its bound is the low word's
+//!   running error bound.
 //! * [`Product`] chooses how TwoProduct runs: [`Dekker`] (plain
 //!   arithmetic, any build) or [`Fused`] (one fused multiply-add, for code
 //!   compiled with the `fma` target feature, entered with an [`Fma`]
@@ -39,6 +40,40 @@
 //! TwoSum errors and roundings of such multiples stay multiples (a rounding
 //! keeps a value on a grid coarser than its own, or leaves it alone), so
 //! every product they form meets [`two_prod`]'s conditions.
+//!
+//! # The sums' bounds
+//!
+//! An f64 addition `ŝ = fl(a + b)` is off by `r = a + b − ŝ`, `|r| ≤
+//! u|ŝ|` (to nearest: `|ŝ|` is at least the power of two below `|a + b|`,
+//! and `|r|` at most `u` of that; a subnormal `ŝ` is exact). A word summed
+//! by such additions, in any order, misses the exact sum of its terms by
+//! `Σₖ rₖ` over its additions, so by at most
+//!
+//! ```text
+//! Σₖ |rₖ| ≤ u Σₖ |ŝₖ|,
+//! ```
+//!
+//! the running error bound (Higham §3.3, §4.2). For a recursive sum of `n`
+//! terms `xᵢ`, `|ŝₖ| ≤ (1 + γₖ₋₁) Σᵢ≤ₖ |xᵢ|`, so it is never more than
+//! about `nu Σ|xᵢ|`, the `γₙ`-style bound, and far less where the sum
+//! cancels: a partial sum near 0 adds almost nothing. The last word of a
+//! sum (the low word, or in [`Acc::wide`] the third) is bounded so:
+//!
+//! * [`Acc`] adds to it by TwoSum, which gives each `rₖ` exactly: the
+//!   bound is `m = Σ|rₖ|` itself, 0 exactly where no addition rounded.
+//! * [`GridAcc`] adds to it plainly, two roundings a pair (`f̂ = fl(e +
+//!   e')`, then `ŝ = fl(l + f̂)`): the bound is `m = u Σ(|f̂ₖ| + |ŝₖ|)`.
+//!   The product by `u` is exact: an addition of multiples of `g` rounds
+//!   only where `|ŝ| ≥ 2⁵³g`, so wherever the error is not 0 the sum of
+//!   magnitudes is at least `2⁵³g`, and `u` of it at least `g`, a normal
+//!   f64.
+//!
+//! The `n` magnitudes are non-negative, so their computed sum `m̂` has `m
+//! ≤ (1 + γₙ₋₁)m̂`, `γₙ₋₁ ≤ 2(n − 1)u`; [`Acc::finish`] takes `m̂(1 +
+//! 2nu)`, whose two roundings, and the three of `(|d| + m̂(1 + 2nu) +
+//! extra)·SLACK`, [`SLACK`] covers (a subnormal sum of magnitudes is
+//! exact, and a product by a factor above 1 rounds no lower than its
+//! operand).
 //!
 //! ```
 //! use rayoracle::num::dd::Acc;
@@ -290,7 +325,12 @@ pub struct Acc {
     lo: f64,
     lo2: f64,
     wide: bool,
+    /// [`GridAcc`]'s `Σ|eᵢ|`, for its grid test.
     mag: f64,
+    /// The last word's bound before its widening: `Σ|rₖ|`, or
+    /// [`GridAcc`]'s `Σ(|f̂ₖ| + |ŝₖ|)`.
+    run: f64,
+    /// The count of magnitudes in `run`.
     n: u32,
     exact: bool,
     extra: f64,
@@ -311,6 +351,7 @@ impl Acc {
             lo2: 0.0,
             wide: false,
             mag: 0.0,
+            run: 0.0,
             n: 0,
             exact: true,
             extra: 0.0,
@@ -327,19 +368,20 @@ impl Acc {
         }
     }
     /// Adds `e` to the low word (in [`Acc::wide`], its rounding error to
-    /// the third), noting whether it rounded.
+    /// the third), noting whether the last word's addition rounded and by
+    /// how much.
     #[inline(always)]
     fn low(&mut self, e: f64) {
         let (s, r) = two_sum(self.lo, e);
-        if self.wide {
+        let r = if self.wide {
             let (s2, r2) = two_sum(self.lo2, r);
-            self.exact &= r2 == 0.0;
             self.lo2 = s2;
-            self.mag += r.abs();
+            r2
         } else {
-            self.exact &= r == 0.0;
-            self.mag += e.abs();
-        }
+            r
+        };
+        self.exact &= r == 0.0;
+        self.run += r.abs();
         self.lo = s;
         self.n += 1;
     }
@@ -378,12 +420,25 @@ impl Acc {
     /// [`Dd::shrunk`] where it decides, for the tests that show a bound
     /// too small is caught). The words are renormalised by TwoSum into
     /// `hi + lo + d` exactly, with `|lo| ≤ u|hi|` and `|d|` added to the
-    /// bound (0 where two words hold the sum). The last word's recursive sum of `n` terms (the low word,
-    /// or in [`Acc::wide`] the third) is within `γₙ₋₁ Σ|eᵢ|` of its exact
-    /// one;
-    /// the bound is `2nu Σ|eᵢ|` (twice that, which also covers the
-    /// roundings of `Σ|eᵢ|` itself), 0 where no addition rounded, plus the
-    /// errors of the inputs of [`Acc::add_dd_prod`].
+    /// bound (0 where two words hold the sum). The last word (the low
+    /// word, or in [`Acc::wide`] the third) misses its exact sum by
+    /// `Σrₖ`, its additions' rounding errors, which TwoSum finds exactly:
+    /// the bound is `Σ|rₖ|(1 + 2nu)` for its `n` additions (the `2nu` for
+    /// the roundings of `Σ|rₖ|` itself, [module](self#the-sums-bounds)),
+    /// 0 where no addition rounded, plus the errors of the inputs of
+    /// [`Acc::add_dd_prod`].
+    ///
+    /// ```
+    /// use rayoracle::num::dd::Acc;
+    /// // 1 + 2⁻⁸⁰ + 2⁻¹⁴⁰ − 1: the low word drops 2⁻¹⁴⁰, once.
+    /// let mut x = Acc::new();
+    /// for t in [1.0, 2f64.powi(-80), 2f64.powi(-140), -1.0] {
+    ///     x.add(t);
+    /// }
+    /// let v = x.finish();
+    /// assert_eq!((v.hi, v.lo), (2f64.powi(-80), 0.0));
+    /// assert!(v.err >= 2f64.powi(-140) && v.err < 2f64.powi(-139));
+    /// ```
     #[inline(always)]
     pub fn finish(self) -> Dd {
         let (hi, lo, d) = if self.wide {
@@ -398,15 +453,20 @@ impl Acc {
             let (hi, lo) = two_sum(self.hi, self.lo);
             (hi, lo, 0.0)
         };
-        let chain = if self.exact {
-            0.0
-        } else {
-            2.0 * f64::from(self.n) * U * self.mag
-        };
         Dd {
             hi,
             lo,
-            err: (d.abs() + chain + self.extra) * SLACK,
+            err: (d.abs() + self.chain() + self.extra) * SLACK,
+        }
+    }
+    /// The bound on the last word's error: 0 where it is exact, else the
+    /// sum of magnitudes widened for its own roundings, `m̂(1 + 2nu)`.
+    #[inline(always)]
+    fn chain(&self) -> f64 {
+        if self.exact {
+            0.0
+        } else {
+            self.run * (1.0 + 2.0 * f64::from(self.n) * U)
         }
     }
 }
@@ -422,7 +482,9 @@ impl Acc {
 /// word is exact. That one comparison replaces [`Acc`]'s TwoSum check of
 /// each low addition, and the pairs' two errors go in as one addition,
 /// which halves the low word's dependency chain. Otherwise the bound is
-/// [`Acc`]'s, `2nu m` for `n` values.
+/// the low word's running error bound, `u Σ(|f̂ₖ| + |ŝₖ|)` over the sums
+/// `f̂ₖ` of each pair's errors and the partial sums `ŝₖ` of the word
+/// ([module](self#the-sums-bounds)).
 ///
 /// ```
 /// use rayoracle::num::dd::{GridAcc, two_prod};
@@ -458,16 +520,23 @@ impl GridAcc {
         let x = &mut self.0;
         let (s, e1) = two_sum(x.hi, p);
         x.hi = s;
-        if x.wide {
+        // The last word takes e + e1 (in the wide sum, the low word's two
+        // rounding errors): f, then its partial sum, each rounded once.
+        let (f, part) = if x.wide {
             let (f, r0) = two_sum(e, e1);
             let (l, r1) = two_sum(x.lo, f);
             x.lo = l;
-            x.lo2 += r0 + r1;
+            let g = r0 + r1;
+            x.lo2 += g;
             x.mag += r0.abs() + r1.abs();
+            (g, x.lo2)
         } else {
-            x.lo += e + e1;
+            let f = e + e1;
+            x.lo += f;
             x.mag += e.abs() + e1.abs();
-        }
+            (f, x.lo)
+        };
+        x.run += f.abs() + part.abs();
         x.n += 2;
     }
     /// Adds the product of two double-word values as [`Acc::add_dd_prod`]
@@ -504,13 +573,35 @@ impl GridAcc {
     /// The sum, exact (`err = 0`) where the last word's values sum below
     /// `2⁵²·grid` in magnitude (the computed `m`, within `2nu` of the
     /// true one, is widened by [`SLACK`] for the test), else with the
-    /// bound `2nu m`; renormalised and bounded as by [`Acc::finish`].
-    /// `grid` must be a power of two that divides every value added.
+    /// running error bound `u Σ(|f̂ₖ| + |ŝₖ|)`, widened as in
+    /// [`Acc::finish`]; renormalised and bounded as by [`Acc::finish`].
+    /// `grid` must be a normal power of two that divides every value
+    /// added.
+    ///
+    /// ```
+    /// use rayoracle::num::dd::GridAcc;
+    /// // 1 + 2⁻⁸⁰ + 2⁻¹⁴⁰ − 1 on the grid 2⁻¹⁴⁰, too fine for the test:
+    /// // the low word drops 2⁻¹⁴⁰, within u of its partial sum 2⁻⁸⁰.
+    /// let mut x = GridAcc::new();
+    /// for t in [1.0, 2f64.powi(-80), 2f64.powi(-140), -1.0] {
+    ///     x.add_pair((t, 0.0));
+    /// }
+    /// let v = x.finish(2f64.powi(-140));
+    /// assert_eq!((v.hi, v.lo), (2f64.powi(-80), 0.0));
+    /// assert!(v.err >= 2f64.powi(-140) && v.err < 2f64.powi(-130));
+    /// ```
     #[inline(always)]
     pub fn finish(self, grid: f64) -> Dd {
+        self.acc(grid).finish()
+    }
+    /// The sum as an [`Acc`] with its last word's test and bound: exact
+    /// by the grid test, else `u Σ(|f̂ₖ| + |ŝₖ|)`.
+    #[inline(always)]
+    fn acc(self, grid: f64) -> Acc {
         let mut acc = self.0;
         acc.exact = acc.mag * SLACK < grid * 4_503_599_627_370_496.0;
-        acc.finish()
+        acc.run *= U;
+        acc
     }
 }
 
@@ -576,6 +667,8 @@ pub fn quotient(x: Approx, y: Approx, shrink: f64) -> Option<f32> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::exact::Dyadic;
+    use crate::exact::dyadic::sum;
     use proptest::prelude::*;
 
     /// An f32 value of the grid below as an integer count of `2⁻⁴⁰`.
@@ -652,6 +745,107 @@ mod tests {
                 prop_assert!(miss <= d.err * 2f64.powi(80));
             }
         }
+    }
+
+    /// [`Acc`]'s former bound, `2nu Σ|eᵢ|` over the `n` values `eᵢ` its
+    /// last word adds, for `pairs` added by [`Acc::add_pair`] (and, narrow,
+    /// by [`GridAcc::add_pair`], whose low word adds the same values).
+    fn gamma_bound(pairs: &[(f64, f64)], wide: bool) -> f64 {
+        let (mut hi, mut lo, mut mag) = (0.0, 0.0, 0.0f64);
+        for &(p, e) in pairs {
+            let (s, e1) = two_sum(hi, p);
+            hi = s;
+            for x in [e1, e] {
+                let (l, r) = two_sum(lo, x);
+                lo = l;
+                mag += if wide { r.abs() } else { x.abs() };
+            }
+        }
+        2.0 * (2 * pairs.len()) as f64 * U * mag
+    }
+
+    /// Whether `d.hi + d.lo` is within `d.err` of `x`, decided exactly;
+    /// and that distance.
+    fn covers(x: &Dyadic, d: Dd) -> (bool, f64) {
+        let miss = x - &(&Dyadic::from_f64(d.hi) + &Dyadic::from_f64(d.lo));
+        let miss = if miss.signum() < 0 { -miss } else { miss };
+        (miss <= Dyadic::from_f64(d.err), miss.to_f64())
+    }
+
+    /// Multiples of `2⁻²⁰⁰` of up to 53 bits, below `2⁴⁰`: sums of them
+    /// span up to 240 bits, and round in a low word, or a third.
+    fn spread() -> impl Strategy<Value = f64> {
+        (-(1i64 << 53)..(1i64 << 53), -200i32..-13).prop_map(|(m, e)| m as f64 * 2f64.powi(e))
+    }
+
+    proptest! {
+        /// Narrow and wide, [`Acc`] and [`GridAcc`] (on the grid
+        /// `2⁻²⁰⁰`): the bound covers the error, measured exactly in
+        /// dyadic rationals, on sums that cancel (pairs `a`, then `b`,
+        /// then `−a` in reverse), and the last word's part of it is at
+        /// most the `γₙ`-style `2nu Σ|eᵢ|`.
+        #[test]
+        fn running_bound_covers_and_is_within_gamma(
+            a in prop::collection::vec((spread(), spread()), 1..6),
+            b in prop::collection::vec((spread(), spread()), 0..6),
+        ) {
+            let pairs: Vec<(f64, f64)> = a
+                .iter()
+                .chain(&b)
+                .map(|&(x, y)| two_sum(x, y))
+                .chain(a.iter().rev().map(|&(x, y)| {
+                    let (p, e) = two_sum(x, y);
+                    (-p, -e)
+                }))
+                .collect();
+            let words: Vec<Dyadic> = pairs
+                .iter()
+                .flat_map(|&(p, e)| [Dyadic::from_f64(p), Dyadic::from_f64(e)])
+                .collect();
+            let exact = sum(&words);
+            for wide in [false, true] {
+                let mut acc = if wide { Acc::wide() } else { Acc::new() };
+                pairs.iter().for_each(|&p| acc.add_pair(p));
+                let (ok, miss) = covers(&exact, acc.finish());
+                prop_assert!(ok, "Acc, wide {}: off by {:e}, {:?}", wide, miss, acc.finish());
+                prop_assert!(acc.chain() <= gamma_bound(&pairs, wide));
+                let mut g = if wide { GridAcc::wide() } else { GridAcc::new() };
+                pairs.iter().for_each(|&p| g.add_pair(p));
+                let grid = 2f64.powi(-200);
+                let (ok, miss) = covers(&exact, g.finish(grid));
+                prop_assert!(ok, "GridAcc, wide {}: off by {:e}, {:?}", wide, miss, g.finish(grid));
+                let x = g.0;
+                prop_assert!(g.acc(grid).chain() <= 2.0 * f64::from(x.n) * U * x.mag);
+            }
+        }
+    }
+
+    /// A sum whose low word takes `2⁻⁶⁰` and gives it back, then adds
+    /// twenty small terms: one rounding, of `2⁻¹³⁰`, while `2⁻⁶⁰` sits in
+    /// the low word. [`Acc`]'s bound is that rounding (it sees each one);
+    /// [`GridAcc`]'s, `u` times the partial sums, counts `2⁻⁶⁰` only while
+    /// it is there; the `γₙ`-style bound counts it for every addition.
+    #[test]
+    fn running_bound_is_tighter_on_cancelling_sums() {
+        let mut terms = vec![1.0, 2f64.powi(-60), 2f64.powi(-130), -2f64.powi(-60)];
+        terms.extend([3.0 * 2f64.powi(-130); 20]);
+        terms.push(-1.0);
+        let pairs: Vec<(f64, f64)> = terms.iter().map(|&t| (t, 0.0)).collect();
+        let exact = Dyadic::new(61, -130);
+        let old = gamma_bound(&pairs, false);
+        let mut acc = Acc::new();
+        let mut g = GridAcc::new();
+        for &p in &pairs {
+            acc.add_pair(p);
+            g.add_pair(p);
+        }
+        let (d, e) = (acc.finish(), g.finish(2f64.powi(-130)));
+        for x in [d, e] {
+            let (ok, miss) = covers(&exact, x);
+            assert!(ok && miss == 2f64.powi(-130), "{x:?}");
+            assert!(x.err * 32.0 < old, "{x:?}, {old:e}");
+        }
+        assert!(d.err < 2.0 * 2f64.powi(-130), "{d:?}");
     }
 
     /// [`GridAcc`] on a cancelling sum whose low word needs more than 53
