@@ -747,9 +747,10 @@ mod tests {
         }
     }
 
-    /// [`Acc`]'s former bound, `2nu Σ|eᵢ|` over the `n` values `eᵢ` its
-    /// last word adds, for `pairs` added by [`Acc::add_pair`] (and, narrow,
-    /// by [`GridAcc::add_pair`], whose low word adds the same values).
+    /// The `γₙ`-style bound on [`Acc`]'s last word, `2nu Σ|eᵢ|` over the
+    /// `n` values `eᵢ` it adds, for `pairs` added by [`Acc::add_pair`]
+    /// (and, narrow, by [`GridAcc::add_pair`], whose low word adds the same
+    /// values).
     fn gamma_bound(pairs: &[(f64, f64)], wide: bool) -> f64 {
         let (mut hi, mut lo, mut mag) = (0.0, 0.0, 0.0f64);
         for &(p, e) in pairs {
