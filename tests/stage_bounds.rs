@@ -278,9 +278,9 @@ fn sphere_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
 /// rounds by up to half an ulp of `R²`: that error leads the low word,
 /// which then rounds `2Rη` and `z²` (`z ≈ 2⁻⁵³R`, both a few of its ulps)
 /// by up to `u` of itself each. So `Δ` is off by `ε`, up to about `2u`
-/// of `a` times the low word's terms, a bound of which (`Acc::finish`'s)
-/// the stage shrinks once in `c`, again in `Δ`'s product and again in the
-/// square root; and the roots `−y/d₀ ± √Δ/a`, nearly a double root, move
+/// of `a` times the low word's terms, whose bound (`Acc::finish`'s, the
+/// roundings themselves) the stage shrinks once, where it decides; and
+/// the roots `−y/d₀ ± √Δ/a`, nearly a double root, move
 /// by `(√(Δ + ε) − √Δ)/a`, about `2⁻³⁸` of themselves, far more than the
 /// roundings of the roots themselves. `d₀` is drawn until `−y/d₀` lies
 /// within `τ` of an f32 rounding midpoint, `aτ` one to four times `√ε`
