@@ -69,13 +69,30 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
             return (PlaneHit::Hit(f.t as f32), Stage::Filter);
         }
     }
-    second_pass(ray, plane, x, shrink)
+    second_pass(ray, plane, x.num, x.den, x.m_num, shrink)
 }
 
 /// The second pass, out of line (inlined, it slowed the first pass by
-/// about a seventh), then the rest, out of line again.
+/// about a seventh), then the rest, out of line again. The first pass's
+/// sums come as scalars, in registers: as a struct they went through
+/// memory, stored on every line.
+#[cold]
 #[inline(never)]
-fn second_pass(ray: &Ray, plane: &Plane, x: stages::First<f64>, shrink: f64) -> (PlaneHit, Stage) {
+fn second_pass(
+    ray: &Ray,
+    plane: &Plane,
+    num: f64,
+    den: f64,
+    m_num: f64,
+    shrink: f64,
+) -> (PlaneHit, Stage) {
+    let x = stages::First {
+        num,
+        den,
+        m_num,
+        // Read by the first pass only.
+        lead: 0.0,
+    };
     if denormals_are_zero() && needs_probe(&inputs(ray, plane), &[]) {
         return (exact_stage(ray, plane), Stage::Exact);
     }

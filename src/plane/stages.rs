@@ -181,8 +181,9 @@ pub const R: f64 = 6.0 * K * U;
 
 /// [`first_terms`] and [`relative_terms`] for one line at f64, with the
 /// two sums side by side in the two lanes of one `f64x2` (`num` in the
-/// first, `den` in the second), as a compiler packs plain f64's: the same
-/// operations in the same order, so the same bits.
+/// first, `den` in the second): the same operations in the same order, so
+/// the same bits. The inputs' x and y are read as pairs, as a compiler
+/// packs plain f64's, and their products transposed into the sums' lanes.
 #[inline(always)]
 pub(crate) fn first_pair(
     o: [f64; 3],
@@ -192,8 +193,12 @@ pub(crate) fn first_pair(
     shrink: f64,
 ) -> (First<f64>, Relative<f64>) {
     use wide::f64x2;
-    let p = |i: usize| f64x2::from([a[i] - o[i], d[i]]) * f64x2::splat(n[i]);
-    let (p0, p1, p2) = (p(0), p(1), p(2));
+    // The components x and y in one register each, their products
+    // transposed into the pairs [ŵ₀n₀, d₀n₀] and [ŵ₁n₁, d₁n₁].
+    let v = |x: [f64; 3]| f64x2::from([x[0], x[1]]);
+    let (nxy, wxy) = (v(n), v(a) - v(o));
+    let [p0, p1] = f64x2::transpose([wxy * nxy, v(d) * nxy]);
+    let p2 = f64x2::from([a[2] - o[2], d[2]]) * f64x2::splat(n[2]);
     let s1 = p0 + p1;
     let s = s1 + p2;
     let m = p0.abs() + p1.abs() + p2.abs();
