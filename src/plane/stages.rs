@@ -41,7 +41,7 @@
 //! the rest.
 
 use super::PlaneHit;
-use crate::num::certify::{SLACK, U, quotient_bound};
+use crate::num::certify::{SLACK, U, least_subnormal_pair, quotient_bound};
 use crate::num::dd::{Acc, Approx, quotient, two_sum};
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
@@ -134,16 +134,18 @@ pub const K: f64 = 1024.0;
 /// `t̂` may be −0 where the oracle's answer is +0), a NaN input and an
 /// infinite one fail the comparisons (`0 > 0`, `∞ > ∞` and any comparison
 /// with NaN are false), so no zero, infinite or NaN `t̂` is certified.
-/// Nor is a root below `2⁻¹²⁵` in magnitude: the pass also asks
-/// `2⁻¹⁴⁹|n̂um| > 2⁻²⁷⁴|d̂en|`, that is `|n̂um| > 2⁻¹²⁵|d̂en|` (both products
-/// exact, normal f64 values), so that, rounding being monotone, `|t̂| ≥
-/// 2⁻¹²⁵`: the certificate's test of `t̂`'s bits holds there, its `f32` is
-/// normal, and flush-to-zero, which acts only on subnormal results,
+/// Nor is a root below `2⁻¹²⁵` in magnitude: the pass also asks `|t̂| ≥
+/// 2⁻¹²⁵` (the scalar kernel's paired pass, from the bits of `t̂`'s
+/// exponent, which must also not be all ones), so the certificate's test
+/// of `t̂`'s bits holds there, its `f32` is normal, and flush-to-zero,
+/// which acts only on subnormal results,
 /// cannot touch it ([`needs_probe`](crate::num::certify::needs_probe)).
-/// The `2⁻¹⁴⁹` is the least subnormal `f32` converted at run time
-/// ([`Real::least_subnormal`]): under denormals-are-zero, which reads a
-/// subnormal input as 0, it is 0 and the pass certifies nothing. A kernel
-/// need not ask the environment for a root this pass certifies. Every
+/// `K` is computed at run time as `2⁻¹⁴⁹·2¹⁵⁹`, the `2⁻¹⁴⁹` the least
+/// subnormal `f32` converted there ([`Real::least_subnormal`],
+/// [`least_subnormal_pair`]): under denormals-are-zero, which reads a
+/// subnormal input as 0, it is 0, no `0·|n̂um| > m̂_num` holds, and the
+/// pass certifies nothing. A kernel need not ask the environment for a
+/// root this pass certifies. Every
 /// line the pass leaves goes to [`filter_compensated`] and [`filter`],
 /// after the kernel's check of the environment.
 ///
@@ -184,6 +186,12 @@ pub const R: f64 = 6.0 * K * U;
 /// first, `den` in the second): the same operations in the same order, so
 /// the same bits. The inputs' x and y are read as pairs, as a compiler
 /// packs plain f64's, and their products transposed into the sums' lanes.
+/// The comparisons are asked the other way, where each fails (`≥`, false
+/// for a NaN), and one test of the mask takes both: a NaN that passes
+/// them came from a NaN `n̂um`, `d̂en`, `m̂_num` or `ŝ₁` (any NaN term
+/// makes its sums NaN), or from `0·∞` under DAZ with `|n̂um|` or `|d̂en|`
+/// infinite, and leaves `t̂` a NaN, infinite or 0, which the test of its
+/// exponent turns away, as the generic pass's comparisons do.
 #[inline(always)]
 pub(crate) fn first_pair(
     o: [f64; 3],
@@ -203,9 +211,12 @@ pub(crate) fn first_pair(
     let s = s1 + p2;
     let m = p0.abs() + p1.abs() + p2.abs();
     let ([num, den], [_, lead], [m_num, _]) = (s.to_array(), s1.to_array(), m.to_array());
-    let both = (f64x2::from([K, K - 1.0]) * s.abs()).simd_gt(f64x2::from([m_num, lead.abs()]));
-    let small =
-        crate::num::certify::least_subnormal::<false>() * num.abs() > 2f64.powi(-274) * den.abs();
+    // [K, K − 1], or 0 under DAZ. A lane fails where its comparison is
+    // false: a NaN passes here, and leaves t̂ a NaN, infinite or 0, which
+    // the test of its exponent turns away.
+    let k = least_subnormal_pair() * f64x2::from([2f64.powi(159), (K - 1.0) * 2f64.powi(149)]);
+    let fails = f64x2::from([m_num, lead.abs()]).simd_ge(k * s.abs());
+    let t = num / den;
     let x = First {
         num,
         den,
@@ -213,22 +224,29 @@ pub(crate) fn first_pair(
         lead,
     };
     let f = Relative {
-        hit: both.to_bitmask() == 0b11 && small,
-        t: num / den,
+        hit: fails.to_bitmask() == 0 && (EXP_MIN..0x7ff).contains(&(t.to_bits() >> 52 & 0x7ff)),
+        t,
         r: R * shrink,
     };
     (x, f)
 }
 
+/// The biased exponent of `2⁻¹²⁵`, the least root the first pass
+/// certifies.
+const EXP_MIN: u64 = 1023 - 125;
+
 /// [`filter_relative`] from the [`first_terms`] already computed.
 #[inline(always)]
 pub(crate) fn relative_terms<L: Real>(x: &First<L>, shrink: f64) -> Relative<L> {
-    let (k, k1, tiny) = (L::splat(K), L::splat(K - 1.0), L::splat(2f64.powi(-274)));
-    let (num, den) = (x.num.abs(), x.den.abs());
-    let small = (L::least_subnormal() * num).gt(tiny * den);
+    // K, or 0 under DAZ; the largest f64 below 2⁻¹²⁵.
+    let k = L::least_subnormal() * L::splat(2f64.powi(159));
+    let (k1, below) = (L::splat(K - 1.0), L::splat(2f64.powi(-125).next_down()));
+    let t = x.num / x.den;
     Relative {
-        hit: (k1 * den).gt(x.lead.abs()) & (k * num).gt(x.m_num) & small,
-        t: x.num / x.den,
+        hit: (k1 * x.den.abs()).gt(x.lead.abs())
+            & (k * x.num.abs()).gt(x.m_num)
+            & t.abs().gt(below),
+        t,
         r: R * shrink,
     }
 }
