@@ -8,6 +8,7 @@ use crate::hit::Intersection;
 use crate::num::certify::{
     certify, certify_relative, denormals_are_zero, flush_prone, needs_probe, subnormals_work,
 };
+use crate::num::dd::two_sum;
 use crate::stage::Stage;
 
 /// Intersects a line with a plane: the exact class over `t ∈ ℝ`, and the
@@ -75,7 +76,8 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
 /// The second pass, out of line (inlined, it slowed the first pass by
 /// about a seventh), then the rest, out of line again. The first pass's
 /// sums come as scalars, in registers: as a struct they went through
-/// memory, stored on every line.
+/// memory, stored on every line. A line whose sums both came out 0, as
+/// on a line in the plane, is settled by [`zero_sums`] where it can be.
 #[cold]
 #[inline(never)]
 fn second_pass(
@@ -96,6 +98,12 @@ fn second_pass(
     if denormals_are_zero() && needs_probe(&inputs(ray, plane), &[]) {
         return (exact_stage(ray, plane), Stage::Exact);
     }
+    if num == 0.0
+        && den == 0.0
+        && let Some(hs) = zero_sums(ray, plane, m_num)
+    {
+        return hs;
+    }
     match compensated(ray, plane, &x, shrink) {
         Some(hs) => hs,
         None => {
@@ -103,6 +111,35 @@ fn second_pass(
             filter_then_escalate(ray, plane, x.terms(w(ray.dir), w(plane.normal)), shrink)
         }
     }
+}
+
+/// A line whose sums the first pass computed as 0, as on a line in the
+/// plane, decided as [`compensated`] decides it, without its hit test:
+/// `fl(ŝ₁ + d₂n₂) = 0` means `ŝ₁ = −d₂n₂` exactly (no sum of these
+/// multiples of `2⁻²⁹⁸` rounds to 0 unless it is 0), so `d·n` is the
+/// rounding error of `ŝ₁ = fl(d₀n₀ + d₁n₁)`, which TwoSum gives exactly.
+/// Where it is 0, `(a − o)·n` comes from [`stages::exact_num`]. `None`
+/// where neither settles the line.
+#[inline(always)]
+fn zero_sums(ray: &Ray, plane: &Plane, m_num: f64) -> Option<(PlaneHit, Stage)> {
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let (d, n) = (w(ray.dir), w(plane.normal));
+    let p = [d[0] * n[0], d[1] * n[1], d[2] * n[2]];
+    if two_sum(p[0], p[1]).1 != 0.0 {
+        return None;
+    }
+    if p == [0.0; 3] && m_num == 0.0 {
+        return Some((PlaneHit::InPlane, Stage::Filter));
+    }
+    let (exact, num) = stages::exact_num(w(ray.origin), w(plane.point), n);
+    exact.then_some((
+        if num == 0.0 {
+            PlaneHit::InPlane
+        } else {
+            PlaneHit::Parallel
+        },
+        Stage::Tight,
+    ))
 }
 
 /// The [second pass](stages::filter_compensated), from the first pass's
@@ -121,7 +158,9 @@ fn compensated(
 ) -> Option<(PlaneHit, Stage)> {
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (d, n) = (w(ray.dir), w(plane.normal));
-    let c = stages::compensated_terms(x.num, x.m_num, d, n, shrink);
+    // The inputs stand (the callers' check of the environment): the
+    // least subnormal is itself.
+    let c = stages::compensated_terms(x.num, x.m_num, d, n, 2f64.powi(-149), shrink);
     let f = c.relative;
     // A hit has d·n ≠ 0, so some term of it is not 0: the check below
     // waits for the lines this leaves.

@@ -301,17 +301,21 @@ pub fn filter_compensated<L: Real>(
     shrink: f64,
 ) -> Compensated<L> {
     let x = first_terms(o, d, a, n);
-    compensated_terms(x.num, x.m_num, d, n, shrink)
+    compensated_terms(x.num, x.m_num, d, n, L::least_subnormal(), shrink)
 }
 
 /// [`filter_compensated`] from the first pass's `num` and its magnitude
-/// sum, already computed.
+/// sum, already computed, with `least` for [`Real::least_subnormal`]: a
+/// caller that has found denormals-are-zero off, or no input subnormal,
+/// may pass `2⁻¹⁴⁹` itself, and the pass then certifies under DAZ what it
+/// certifies without (every value it meets is normal).
 #[inline(always)]
 pub(crate) fn compensated_terms<L: Real>(
     num: L,
     m_num: L,
     d: [L; 3],
     n: [L; 3],
+    least: L,
     shrink: f64,
 ) -> Compensated<L> {
     let (s1, e1) = two_sum(d[0] * n[0], d[1] * n[1]);
@@ -321,7 +325,7 @@ pub(crate) fn compensated_terms<L: Real>(
     let (k, tiny) = (L::splat(K), L::splat(2f64.powi(-274)));
     let (num_abs, den, zero) = (num.abs(), h.abs(), L::splat(0.0));
     let den_zero = h.eq(zero) & c.eq(zero);
-    let small = (L::least_subnormal() * num_abs).gt(tiny * den);
+    let small = (least * num_abs).gt(tiny * den);
     Compensated {
         relative: Relative {
             hit: (L::splat(4.0) * den).gt(c.abs()) & (k * num_abs).gt(m_num) & small,

@@ -282,7 +282,7 @@ fn finish_full(
     let (o, d, a, n) = widened::<F64x4>(ray, p);
     let x = stages::terms(o, d, a, n);
     // The second pass: d·n summed once compensated.
-    let c = stages::compensated_terms(x.num, x.m_num, d, n, 1.0);
+    let c = stages::compensated_terms(x.num, x.m_num, d, n, F64x4::least_subnormal(), 1.0);
     let second = certify_relative(c.relative.t, c.relative.r);
     let f = stages::filter_terms(x, 1.0);
     let (certified, end) = certify_end(f.t, f.r, f.a);
