@@ -15,7 +15,10 @@
 //! and [`Path::X4`] give frames with the same bits; the tests check every
 //! fixture scene.
 //!
-//! # Channels ([`Frame::depth_png`], [`Frame::normal_png`], [`Frame::id_png`])
+//! # Channels
+//!
+//! With the `png` feature, `Frame::depth_png`, `normal_png` and `id_png`
+//! encode them:
 //!
 //! * **depth**, 16-bit grey: 0 where nothing is hit. A hit at `t` maps by
 //!   the bits of `t` read as an integer, which is a piecewise-linear
