@@ -317,18 +317,31 @@ impl ExactTerms {
     }
 }
 
-/// The exponent of the lowest set bit of a nonzero finite `x`
-/// (`x = m·2ᵉ` with `m` odd), and a large number for 0 (which lies on every
-/// grid); meaningless, but harmless, for a non-finite `x`, whose terms
+/// The exponent of the lowest set bit of a nonzero `x` widened from f32
+/// (`x = m·2ᵉ` with `m` odd), less `−1022`, so that 0 (which lies on
+/// every grid) wraps to `u32::MAX` and an unsigned minimum passes over
+/// it: f32 data widens to normal f64 values of biased exponent at least
+/// `874`, so the exponent field plus the trailing zeros of the
+/// significand (with its implicit bit) is at least 874 for those, and 52
+/// for 0. Meaningless, but harmless, for a non-finite `x`, whose terms
 /// make every sum NaN.
 #[inline(always)]
+fn low_key(x: f64) -> u32 {
+    // No branch on 0, which the data's zero coefficients would
+    // mispredict; the implicit bit bounds the trailing zeros, and the
+    // sign and exponent above it leave them alone.
+    let b = x.to_bits();
+    let e = ((b << 1) >> 53) as u32;
+    (e + (b | 1 << 52).trailing_zeros()).wrapping_sub(53)
+}
+
+/// [`low_key`] as the exponent itself, 2000 for 0.
+#[cfg(test)]
 fn low_bit(x: f64) -> i32 {
-    // Without a branch on 0, which the data's zero coefficients would
-    // mispredict: ±0 gives −1075 + 52 here, moved to 2000.
-    let b = x.to_bits() & !(1 << 63);
-    let m = (b & ((1 << 52) - 1)) | (1 << 52);
-    let low = (b >> 52) as i32 - 1075 + m.trailing_zeros() as i32;
-    low + 3023 * i32::from(b == 0)
+    match low_key(x) {
+        u32::MAX => 2000,
+        k => k as i32 - 1022,
+    }
 }
 
 /// A power of two `g` that divides every term `k·x·y` of α, β and γ: with
@@ -350,15 +363,15 @@ fn low_bit(x: f64) -> i32 {
 #[doc(hidden)]
 #[inline(always)]
 pub fn grid(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> f64 {
-    let mut kappa = 2000;
-    for &c in k {
-        kappa = kappa.min(low_bit(c));
-    }
-    let mut nu = 0;
-    for &x in o.iter().chain(&d) {
-        nu = nu.min(low_bit(x));
-    }
-    let e = (kappa + 2 * nu).clamp(-1000, 400);
+    // Minima by pairs, not one chain: their latency is on the way to
+    // every later test.
+    let m = |a: f64, b: f64| low_key(a).min(low_key(b));
+    let kappa = (m(k[0], k[1]).min(m(k[2], k[3])))
+        .min(m(k[4], k[5]).min(m(k[6], k[7])))
+        .min(m(k[8], k[9]));
+    // 1 (key 1022) among the data: ν ≤ 0.
+    let nu = (m(o[0], o[1]).min(m(o[2], d[0]))).min(m(d[1], d[2]).min(1022));
+    let e = (i64::from(kappa) + 2 * i64::from(nu) - 3066).clamp(-1000, 400);
     f64::from_bits(((1023 + e) as u64) << 52)
 }
 
