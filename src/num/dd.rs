@@ -516,7 +516,23 @@ impl GridAcc {
     }
     /// Adds `p + e`, both multiples of the grid.
     #[inline(always)]
-    pub fn add_pair(&mut self, (p, e): (f64, f64)) {
+    pub fn add_pair(&mut self, pair: (f64, f64)) {
+        self.add::<true>(pair);
+    }
+    /// [`GridAcc::add_pair`] without the running error bound, for a sum
+    /// that only [`GridAcc::finish_exact`] finishes: the bound serves only
+    /// where the grid test fails, and a caller that sums again with
+    /// [`GridAcc::add_pair`] there spares four operations a pair
+    /// elsewhere.
+    #[inline(always)]
+    pub fn add_pair_unbounded(&mut self, pair: (f64, f64)) {
+        self.add::<false>(pair);
+    }
+    /// [`GridAcc::add_pair`], the running error bound kept only where
+    /// `RUN`: the words and the grid test's magnitudes do not depend on
+    /// it.
+    #[inline(always)]
+    fn add<const RUN: bool>(&mut self, (p, e): (f64, f64)) {
         let x = &mut self.0;
         let (s, e1) = two_sum(x.hi, p);
         x.hi = s;
@@ -536,8 +552,10 @@ impl GridAcc {
             x.mag += e.abs() + e1.abs();
             (f, x.lo)
         };
-        x.run += f.abs() + part.abs();
-        x.n += 2;
+        if RUN {
+            x.run += f.abs() + part.abs();
+            x.n += 2;
+        }
     }
     /// Adds the product of two double-word values as [`Acc::add_dd_prod`]
     /// does, its products' errors found by `P`; the words must be
@@ -593,6 +611,32 @@ impl GridAcc {
     #[inline(always)]
     pub fn finish(self, grid: f64) -> Dd {
         self.acc(grid).finish()
+    }
+    /// The sum where the grid test proves its last word exact: the words
+    /// and bound of [`GridAcc::finish`], which does not read the running
+    /// bound there (`err` is 0 for a sum of pairs alone); `None` where the
+    /// test fails, and a sum of [`GridAcc::add_pair_unbounded`] then needs
+    /// summing again with [`GridAcc::add_pair`] for its bound. Two-word
+    /// sums only: [`GridAcc::wide`]'s third word joins the bound.
+    ///
+    /// ```
+    /// use rayoracle::num::dd::GridAcc;
+    /// let p = [(1.0, 0.0), (2f64.powi(-80), 0.0), (2f64.powi(-140), 0.0), (-1.0, 0.0)];
+    /// let (mut x, mut y) = (GridAcc::new(), GridAcc::new());
+    /// for q in p {
+    ///     x.add_pair(q);
+    ///     y.add_pair_unbounded(q);
+    /// }
+    /// assert_eq!(y.finish_exact(2f64.powi(-80)), Some(x.finish(2f64.powi(-80))));
+    /// assert_eq!(y.finish_exact(2f64.powi(-140)), None);
+    /// ```
+    #[inline(always)]
+    pub fn finish_exact(self, grid: f64) -> Option<Dd> {
+        debug_assert!(!self.0.wide);
+        let acc = self.acc(grid);
+        let (hi, lo) = two_sum(acc.hi, acc.lo);
+        let err = acc.extra * SLACK;
+        acc.exact.then_some(Dd { hi, lo, err })
     }
     /// The sum as an [`Acc`] with its last word's test and bound: exact
     /// by the grid test, else `u Σ(|f̂ₖ| + |ŝₖ|)`.

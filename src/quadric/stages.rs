@@ -426,6 +426,19 @@ enum Sums {
 /// exact in one f64 where they are exact and the low word is 0.
 #[inline(always)]
 fn tracked_in<P: Product>(t: &ExactTerms, shrink: f64) -> (Option<QuadricHit>, Sums) {
+    match tracked_by::<P, false>(t, shrink) {
+        Some(r) => r,
+        None => (None, Sums::Terms),
+    }
+}
+
+/// [`tracked_in`]; where `FAST`, the sums of [`grid_sums`] without their
+/// running bounds, and `None` where a grid test fails.
+#[inline(always)]
+fn tracked_by<P: Product, const FAST: bool>(
+    t: &ExactTerms,
+    shrink: f64,
+) -> Option<(Option<QuadricHit>, Sums)> {
     // Most data that is not small integers or dyadic rounds here already.
     let mut rounded = false;
     let mut any = |v: &[Pair]| v.iter().for_each(|p| rounded |= p.1 != 0.0);
@@ -433,7 +446,7 @@ fn tracked_in<P: Product>(t: &ExactTerms, shrink: f64) -> (Option<QuadricHit>, S
     any(&t.1);
     any(&t.2);
     if rounded {
-        return (None, Sums::Terms);
+        return Some((None, Sums::Terms));
     }
     let mut x = Tracked::new();
     // The terms are multiples of the grid g: where their magnitudes sum
@@ -457,19 +470,14 @@ fn tracked_in<P: Product>(t: &ExactTerms, shrink: f64) -> (Option<QuadricHit>, S
         // sums do not fit one f64 (most data of spread exponents), the
         // double-word stage takes the words as they are.
         // Not `array::map`, which is not always inlined.
-        let word = |v: &[Pair]| {
-            let mut acc = GridAcc::new();
-            v.iter().for_each(|p| acc.add_pair((p.0, p.1)));
-            acc.finish(t.3)
-        };
-        let words = [word(&t.0), word(&t.1), word(&t.2)];
+        let words = grid_sums::<FAST>(t)?;
         if !words.iter().all(|w| w.err == 0.0 && w.lo == 0.0) {
             let shrunk = |w: Dd| Dd {
                 err: w.err * shrink,
                 ..w
             };
             let words = [shrunk(words[0]), shrunk(words[1]), shrunk(words[2])];
-            return (None, Sums::Words(words));
+            return Some((None, Sums::Words(words)));
         }
         (words[0].hi, words[1].hi, words[2].hi)
     };
@@ -479,7 +487,31 @@ fn tracked_in<P: Product>(t: &ExactTerms, shrink: f64) -> (Option<QuadricHit>, S
     } else {
         Sums::Terms
     };
-    (tracked_roots::<P>(&mut x, alpha, beta, gamma), sums)
+    Some((tracked_roots::<P>(&mut x, alpha, beta, gamma), sums))
+}
+
+/// α, β and γ as [`GridAcc`]s sum their exact terms on the data's grid,
+/// with their bounds; where `FAST`, without the running bounds, which
+/// serve only where a grid test fails: then the sums where every test
+/// passes (`err = 0`, the same words), `None` elsewhere.
+#[inline(always)]
+fn grid_sums<const FAST: bool>(t: &ExactTerms) -> Option<[Dd; 3]> {
+    if FAST {
+        let exact = |v: &[Pair]| {
+            let mut acc = GridAcc::new();
+            v.iter().for_each(|p| acc.add_pair_unbounded((p.0, p.1)));
+            acc.finish_exact(t.3)
+        };
+        let (a, b, g) = (exact(&t.0), exact(&t.1), exact(&t.2));
+        Some([a?, b?, g?])
+    } else {
+        let word = |v: &[Pair]| {
+            let mut acc = GridAcc::new();
+            v.iter().for_each(|p| acc.add_pair((p.0, p.1)));
+            acc.finish(t.3)
+        };
+        Some([word(&t.0), word(&t.1), word(&t.2)])
+    }
 }
 
 /// The rest of [`tracked`] from α, β and γ, the tracker `x` noting
@@ -580,11 +612,16 @@ pub fn double_word(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Opti
 /// [`tracked`] summed them ([`Sums`]), which it does not sum again.
 #[inline(always)]
 fn double_word_of<P: Product>(t: &ExactTerms, sums: Sums, shrink: f64) -> Option<QuadricHit> {
-    let exact = match sums {
-        Sums::Exact(v) => Some(v),
-        _ => None,
-    };
-    let (alpha, beta, gamma) = match sums {
+    let coefficients = dd_sums::<false>(t, sums)?;
+    double_word_rest::<P>(t, sums, coefficients, shrink)
+}
+
+/// α, β and γ for [`double_word_of`] from what [`tracked_in`] left it;
+/// where `FAST`, summed by [`grid_sums`] without running bounds, `None`
+/// where a grid test fails.
+#[inline(always)]
+fn dd_sums<const FAST: bool>(t: &ExactTerms, sums: Sums) -> Option<(Dd, Dd, Dd)> {
+    Some(match sums {
         Sums::Exact(v) => {
             let [alpha, beta, gamma] = v.map(|hi| Dd {
                 hi,
@@ -595,12 +632,23 @@ fn double_word_of<P: Product>(t: &ExactTerms, sums: Sums, shrink: f64) -> Option
         }
         Sums::Words([a, b, g]) => (a, b, g),
         Sums::Terms => {
-            let (mut a, mut b, mut g) = (GridAcc::new(), GridAcc::new(), GridAcc::new());
-            t.0.iter().for_each(|p| a.add_pair((p.0, p.1)));
-            t.1.iter().for_each(|p| b.add_pair((p.0, p.1)));
-            t.2.iter().for_each(|p| g.add_pair((p.0, p.1)));
-            (a.finish(t.3), b.finish(t.3), g.finish(t.3))
+            let [a, b, g] = grid_sums::<FAST>(t)?;
+            (a, b, g)
         }
+    })
+}
+
+/// [`double_word_of`] from α, β and γ.
+#[inline(always)]
+fn double_word_rest<P: Product>(
+    t: &ExactTerms,
+    sums: Sums,
+    (alpha, beta, gamma): (Dd, Dd, Dd),
+    shrink: f64,
+) -> Option<QuadricHit> {
+    let exact = match sums {
+        Sums::Exact(v) => Some(v),
+        _ => None,
     };
     // Where the grid test fails (data of widely spread exponents), the
     // sums again with every low addition checked.
@@ -727,9 +775,30 @@ fn later_by<P: Product>(
     shrink: f64,
 ) -> Option<(QuadricHit, Stage)> {
     let t = ExactTerms::new::<P>(k, o, d);
-    match tracked_in::<P>(&t, shrink) {
+    // The sums without their running bounds first; the rare data whose
+    // grid tests fail takes both stages again with them.
+    let sums = match tracked_by::<P, true>(&t, shrink) {
+        Some((Some(h), _)) => return Some((h, Stage::Tracked)),
+        Some((None, sums)) => dd_sums::<true>(&t, sums).map(|c| (sums, c)),
+        None => None,
+    };
+    match sums {
+        Some((sums, c)) => double_word_rest::<P>(&t, sums, c, shrink),
+        None => return later_bounded::<P>(&t, shrink),
+    }
+    .map(|h| (h, Stage::DoubleWord))
+}
+
+/// [`later_by`] with the running bounds of every sum, out of line: for
+/// the data whose grid tests fail. Outside the copy compiled for FMA,
+/// [`Fused`](crate::num::dd::Fused)'s `mul_add` is a call to libm's
+/// `fma` here: the same exact pairs, slower, on rare data.
+#[cold]
+#[inline(never)]
+fn later_bounded<P: Product>(t: &ExactTerms, shrink: f64) -> Option<(QuadricHit, Stage)> {
+    match tracked_in::<P>(t, shrink) {
         (Some(h), _) => Some((h, Stage::Tracked)),
-        (None, exact) => double_word_of::<P>(&t, exact, shrink).map(|h| (h, Stage::DoubleWord)),
+        (None, exact) => double_word_of::<P>(t, exact, shrink).map(|h| (h, Stage::DoubleWord)),
     }
 }
 
