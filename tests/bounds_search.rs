@@ -7,12 +7,13 @@
 //! sign, or an f32 rounding boundary). A seeded hill-climb maximises it,
 //! from seeds that sit on the edge of a decision by construction (roots by
 //! an f32 rounding midpoint, numerators that round next to one, margins
-//! `d·n`, `Δ`, `β² − 4αγ` near 0, a sphere's `c` and `Δ` with every
-//! rounding of their bounds near its maximum and in one direction), by
-//! moving single inputs by a few ulps or by powers of two, keeping every
-//! move that does not lower the factor; exact sphere tangents, which no
-//! one-input move keeps tangent, are sampled instead. The committed cases
-//! are seeds too, so each run goes on from the best found so far.
+//! `d·n`, `Δ`, `β² − 4αγ` near 0, a sphere's `c` and `Δ` and a quadric's
+//! double-word `Δ` with every rounding of their bounds near its maximum
+//! and in one direction), by moving single inputs by a few ulps or by
+//! powers of two, keeping every move that does not lower the factor;
+//! exact sphere tangents, which no one-input move keeps tangent, are
+//! sampled instead. The committed cases are seeds too, so each run goes on
+//! from the best found so far.
 //!
 //! Regenerate the cases (about a minute with `--release`) with
 //!
@@ -680,6 +681,102 @@ fn sphere_rounding(rng: &mut SmallRng, tries: usize, up: bool) -> Option<Case> {
     best.map(|b| b.1)
 }
 
+/// Lines crossing two parallel planes `(x + νy)² = ε` (`ν = 2⁻²⁴`, `ε` a
+/// tiny power of two), a double plane opened just enough for two roots,
+/// on which the double-word stage's `Δ̂` carries more than half the error
+/// its bound allows, and upwards. That stage takes `Δ/4 = b² − ac` (`b =
+/// β/2`) from the leading words `â`, `b̂`, `ĉ` of the exact coefficients
+/// (`quadric::stages::disc_near`): its bound `E` counts each word's
+/// distance from the exact value, `2|b̂||lo_b| + |â||lo_c| + |ĉ||lo_a|`,
+/// and `3u(b̂² + |âĉ|)` for the roundings; it takes the sign where `Δ̂ >
+/// 2sE` at the factor `s`, and the roots `(−b̂ ± √Δ̂)/â` to within
+/// `sE/(â√Δ̂)`. With `o = (o₀, o₁, 0)`, `d = (d₀, d₁, 0)`, `P = o₀ + νo₁`
+/// and `D = d₀ + νd₁`: `a = D²`, `b = PD`, `c = P² − ε`, and `Δ/4 = D²ε`,
+/// the roots `−P/D ± √ε/D`, nearly a double root.
+///
+/// * `P` and `D` are odd 27-bit integers `K_P`, `K_D` above `2^26.5` times
+///   powers of two, so that `D²`, `PD` and `P²` have 54 bits: each lies
+///   halfway between two f64 values and its word is off by half an ulp,
+///   the most there is. An odd square is 1 modulo 8, so `D²` rounds down
+///   (to even), `P² − ε`, just below its tie, rounds down, and `K_P K_D ≡
+///   3 (mod 4)` makes `PD` round up. `Δ̂/4` then gains `2|b̂|h_b + |â|h_c +
+///   |ĉ|h_a` (`h` half an ulp): with `b̂² ∈ [2^2m, 2^(2m+1))`, `a` just
+///   above 2 and `c` 10 to 20 % above a power of two (`P/D` 1.05 to 1.1
+///   times `2ᵖ`), at least `4U`, `U = u·2^2m`.
+/// * `b̂²` and `âĉ` round to multiples of `2U`, so `Δ̂/4` is `6U` where
+///   their roundings, up and down, add the rest: of `tries` draws of
+///   `K_D` and of an f32 rounding midpoint near `P/D`, the best, by `Δ̂`
+///   and `E` computed as the stage computes them. Against `E ≈ 11U`, the
+///   sign is taken up to a factor of about 0.27.
+/// * `K_P` puts `P/D` a quarter of the expected `√Δ̂/a` from the midpoint,
+///   below it for the lesser root (`upper` false) to cross it, above it
+///   for the greater, so that wherever the sign is taken that root is
+///   certified on the wrong side; `ε = 2^(2p − 80)` parts the exact
+///   roots by about `2^-39.5` of `|t|`, far less.
+///
+/// The filter, whose `E_Δ` (of `Δ = 4(b² − ac)`) is `700u b²` here, leaves
+/// these lines to the later stages, and the tracked stage, their sums not
+/// fitting one f64, to the double-word stage.
+pub fn quadric_rounding_seeds(rng: &mut SmallRng, n: usize, tries: usize) -> Vec<Case> {
+    (0..n)
+        .filter_map(|i| quadric_rounding(rng, tries, i % 2 == 1))
+        .collect()
+}
+
+/// One of [`quadric_rounding_seeds`], its greater root the one to cross a
+/// midpoint if `upper`, if the draws allow it.
+fn quadric_rounding(rng: &mut SmallRng, tries: usize, upper: bool) -> Option<Case> {
+    use rayoracle::num::dd::two_prod;
+    let u = f64::EPSILON / 2.0;
+    let nu = 2f32.powi(-24);
+    let p = rng.random_range(0..8);
+    let eps = 2f32.powi(2 * p - 80);
+    let mut best: Option<(f64, u64, u64)> = None;
+    for _ in 0..tries {
+        // D = K_D·2⁻²⁶ just above √2, so that a = D² is just above 2.
+        let kd = (94_906_267 + 2 * rng.random_range(0..1u64 << 16)) as f64;
+        let dd = kd * 2f64.powi(-26);
+        // The midpoint above the f32 y, P/D a quarter of √Δ̂/a beside it.
+        let y = (1.05 + rng.random_range(0.0..0.05f32)) * 2f32.powi(p);
+        let mid = f64::from(y) + f64::from(f32::from_bits(y.to_bits() + 1) - y) / 2.0;
+        let off = 0.25 * (6.0 * u).sqrt() * mid;
+        let target = dd * if upper { mid + off } else { mid - off };
+        // K_P odd, with K_P·K_D ≡ 3 (mod 4).
+        let kp = (target * 2f64.powi(26 - p)).round() as u64;
+        let kp = kp - kp % 4 + if kd as u64 % 4 == 1 { 3 } else { 1 };
+        let pp = kp as f64 * 2f64.powi(p - 26);
+        let (ah, al) = two_prod(dd, dd);
+        let (bh, bl) = two_prod(pp, dd);
+        let (ch, cl) = two_prod(pp, pp);
+        let cl = cl - f64::from(eps);
+        let (b2, ac) = (bh * bh, ah * ch);
+        let disc = b2 - ac;
+        let (eb, ea, ec) = (bl.abs(), al.abs(), cl.abs());
+        let e = eb * (2.0 * bh.abs() + eb) + ah * ec + ea * (ch + ec) + 3.0 * u * (b2 + ac);
+        if disc <= 0.0 {
+            continue;
+        }
+        let s = disc.sqrt();
+        let dist = (mid - pp / dd) * if upper { -1.0 } else { 1.0 };
+        let score = (disc / (2.0 * e)).min((disc - ah * dist * s) / e);
+        if dist > 0.0 && best.is_none_or(|b| score > b.0) {
+            best = Some((score, kd as u64, kp));
+        }
+    }
+    let (_, kd, kp) = best?;
+    let split = |k: u64, e: i32| {
+        let hi = (k - k % 8) as f32 * 2f32.powi(e - 26);
+        let lo = (k % 8) as f32 * 2f32.powi(e - 2);
+        (hi, lo)
+    };
+    let (d0, d1) = split(kd, 0);
+    let (o0, o1) = split(kp, p);
+    let mut k = [0.0; 10];
+    (k[0], k[1], k[3], k[9]) = (1.0, nu * nu, 2.0 * nu, -eps);
+    let ray = Ray::new(Vec3::new(o0, o1, 0.0), Vec3::new(d0, d1, 0.0));
+    Some(Case::Quadric(ray, Quadric::new(k)))
+}
+
 /// Cylinders `x² + y² = 1` grazed at a relative miss of 10⁻² to 10⁻⁹, and
 /// rays nearly along their axis.
 pub fn quadric_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
@@ -700,12 +797,14 @@ pub fn quadric_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
 }
 
 /// The seeds of a kind: its generated cases, the stiff catalogue's, and
-/// (if `go_on`, for a long search) the committed ones and the planes and
-/// sphere tangents built to the bound's limit ([`plane_rounding_seeds`],
-/// [`sphere_rounding_seeds`]). Those start at the top, so the short
+/// (if `go_on`, for a long search) the committed ones and the planes,
+/// sphere tangents and opened double planes built to the bound's limit
+/// ([`plane_rounding_seeds`], [`sphere_rounding_seeds`],
+/// [`quadric_rounding_seeds`]). Those start at the top, so the short
 /// search, which must climb, starts without them; their own tests are
-/// [`the_constructed_planes_use_most_of_the_bound`] and
-/// [`the_constructed_tangents_use_most_of_the_bound`].
+/// [`the_constructed_planes_use_most_of_the_bound`],
+/// [`the_constructed_tangents_use_most_of_the_bound`] and
+/// [`the_constructed_double_planes_use_most_of_the_bound`].
 pub fn seeds(kind: &str, rng: &mut SmallRng, n: usize, go_on: bool) -> Vec<Case> {
     let mut out = match kind {
         "plane" => [plane_seeds(rng, n), plane_first_seeds(rng, n)].concat(),
@@ -723,6 +822,9 @@ pub fn seeds(kind: &str, rng: &mut SmallRng, n: usize, go_on: bool) -> Vec<Case>
         }
         if kind == "sphere" {
             out.extend(sphere_rounding_seeds(rng, 16, 4096));
+        }
+        if kind == "quadric" {
+            out.extend(quadric_rounding_seeds(rng, 16, 256));
         }
     }
     out
@@ -944,6 +1046,19 @@ fn the_constructed_tangents_use_most_of_the_bound() {
     let mut rng = SmallRng::seed_from_u64(0x7a3);
     let cases = sphere_rounding_seeds(&mut rng, 4, 512);
     reaches_a_quarter(&cases, |c| critical_log2(c, &exact(c)?, Quantity::Class));
+}
+
+/// The construction of [`quadric_rounding_seeds`] works: from a fixed
+/// seed, some of its lines make the reference's lesser root wrong, and
+/// some its greater, with every bound shrunk to a quarter, with no search
+/// at all.
+#[test]
+fn the_constructed_double_planes_use_most_of_the_bound() {
+    let mut rng = SmallRng::seed_from_u64(0x9ad);
+    let cases = quadric_rounding_seeds(&mut rng, 4, 64);
+    for q in [Quantity::Root(0), Quantity::Root(1)] {
+        reaches_a_quarter(&cases, |c| critical_log2(c, &exact(c)?, q));
+    }
 }
 
 /// Asserts that some case of a construction is wrong at a quarter of its
