@@ -424,7 +424,7 @@ pub fn sphere_tangent_search(seed: u64, n: usize) -> Vec<Found> {
 /// is tiny, and `d` random, which moves the root against the f32 grid
 /// without touching `ĉ`. Every rounding then adds up: twice `u f·f` from
 /// `f̂`, and up to `u f·f` from the squares and from each sum, near `5u
-/// f·f` in all, against `E_c = 12u m_c` with `m_c = f·f + R² ≈ 2f·f`.
+/// f·f` in all, against `E_c = 10u f̂f + 2u|ĉ|`, about `10u f·f` here.
 pub fn sphere_surface_seeds(rng: &mut SmallRng, n: usize, tries: usize) -> Vec<Case> {
     use rayoracle::num::dd::{two_prod, two_sum};
     (0..n)

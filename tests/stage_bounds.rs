@@ -174,13 +174,13 @@ const STAGES: [Staged; 7] = [
 /// grazing cases ([`sphere_grazing_seeds`]), and the quadric's
 /// double-word stage by double planes built so that every leading word of
 /// its `Δ/4` rounds by a full half ulp the same way
-/// (`bounds_search::quadric_rounding_seeds`); the sphere's tight stage
-/// stops short of it (see `docs/accuracy.md`).
+/// (`bounds_search::quadric_rounding_seeds`); the sphere's tight stage by
+/// searched cases, its `E_c` that of the filter (see `docs/accuracy.md`).
 const CAUGHT_AT: [(&str, f64); 7] = [
     ("bounds/plane/first", 0.5),
     ("bounds/plane/second", 0.25),
     ("bounds/plane/tight", 0.25),
-    ("bounds/sphere/tight", 0.125),
+    ("bounds/sphere/tight", 0.25),
     ("bounds/sphere/compensated", 0.25),
     ("bounds/sphere/double-word", 0.25),
     ("bounds/quadric/double-word", 0.25),

@@ -18,8 +18,12 @@
 //!   `E_a = γ₂ a`. And `a = 0` exactly when `d = 0`, since `dᵢ² ≥ 2⁻²⁹⁸`.
 //! * `b = Σfᵢdᵢ`: one rounding in `f̂ᵢ`, one in the product, two additions:
 //!   `E_b = γ₄ m_b` with `m_b = Σ|f̂ᵢdᵢ|`.
-//! * `c = Σfᵢ² − R²`: `f̂ᵢ²` carries three roundings, then three additions
-//!   (`R²` is exact): `E_c = γ₆ m_c` with `m_c = Σf̂ᵢ² + R²`.
+//! * `c = Σfᵢ² − R²`: `f̂ᵢ²` carries three roundings (two from `f̂ᵢ`, one
+//!   its own), the two additions of the nonnegative `f̂ᵢ²` one each
+//!   relative to their sum `f̂f`, and the subtraction of the exact `R²`
+//!   one relative to `ĉ`: `|ĉ − c| ≤ 5u f̂f + u|ĉ|` to first order. The
+//!   classes take the coarser `γ₆ m_c`, `m_c = f̂f + R²`, which the
+//!   argument for `Δ` below needs only through `|ĉ| ≤ m_c`.
 //! * `Δ = b² − ac`: `|b̂² − b²| ≤ E_b(2|b̂| + E_b)`, `|âĉ − ac| ≤ â E_c +
 //!   (|ĉ| + E_c) E_a`, and the two products and the difference round once
 //!   each, by at most `u(b̂² + |âĉ|)` together with the difference's own.
@@ -59,7 +63,7 @@
 //! bounds are made of is widened by `1 + 2⁻³⁰`, which covers the roundings
 //! of their own evaluation and of the reciprocals. Every constant above is
 //! at least twice what the proof needs: `E_a = 4u â`, `E_b = 8u m_b`,
-//! `E_c = 12u m_c`, and `20u` where the roots' roundings need `9u`.
+//! `E_c = 10u f̂f + 2u|ĉ|`, and `20u` where the roots' roundings need `9u`.
 //!
 //! # Range
 //!
@@ -141,6 +145,7 @@ pub(crate) struct Classes<L: Real> {
     a: L,
     b: L,
     mb: L,
+    ff: L,
     mc: L,
     cq: L,
     /// `Δ̂`.
@@ -179,6 +184,7 @@ pub(crate) fn classes<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f6
         a,
         b,
         mb,
+        ff,
         mc,
         cq,
         disc,
@@ -207,6 +213,12 @@ pub fn filter<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64) -> Fi
     filter_from(classes(o, d, c, r, shrink), shrink)
 }
 
+/// `E_c = 10u f̂f + 2u|ĉ|` ([module](self)), times `shrink`.
+#[inline(always)]
+fn e_c<L: Real>(ff: L, c: L, shrink: f64) -> L {
+    L::splat(10.0 * U * shrink) * ff + L::splat(2.0 * U * shrink) * c.abs()
+}
+
 /// [`filter`] from the [`classes`] already computed.
 #[inline(always)]
 pub(crate) fn filter_from<L: Real>(classes: Classes<L>, shrink: f64) -> Filtered<L> {
@@ -216,16 +228,17 @@ pub(crate) fn filter_from<L: Real>(classes: Classes<L>, shrink: f64) -> Filtered
         a,
         b,
         mb,
-        mc,
+        ff,
         cq,
         disc,
         ed,
         none,
         two,
+        ..
     } = classes;
 
     // E_a = 4u·â enters only through the constant of r0.
-    let (eb, ec) = (k(8.0) * mb, k(12.0) * mc);
+    let (eb, ec) = (k(8.0) * mb, e_c(ff, cq, shrink));
     let (one, slack) = (L::splat(1.0), L::splat(SLACK));
     let s = disc.sqrt();
     let q = -(b + s.copysign(b));
@@ -388,7 +401,7 @@ pub(crate) fn sorted<L: Real>(classes: Classes<L>, shrink: f64) -> Sorted<L> {
 /// * `Δ̂' > E_Δ'` certifies two roots, `Δ̂' < −E_Δ'` none.
 /// * The roots, by [`two_roots`] from `Δ̂ = fl(âΔ̂')`, within `u|Δ̂| +
 ///   |Δ̂'|E_a + âE_Δ' + E_aE_Δ'` of `Δ`: `E_Δ = 2u|Δ̂| + 8uâ|Δ̂'| + 2âE_Δ'
-///   + η`, with `c` and `E_c = 12u m_c` as in the filter.
+///   + η`, with `c` and `E_c = 10u f̂f + 2u|ĉ|` as in the filter.
 ///
 /// Every bound is widened by `1 + 2⁻³⁰` for the roundings of its own
 /// evaluation and multiplied by `shrink`. `None` where the class or a root
@@ -449,7 +462,7 @@ pub fn tight(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64, shrink: f64) -> Opti
     let (t0, t1) = two_roots(
         x(a, ea),
         x(b, eb),
-        x(ff - rr, 12.0 * U * (ff + rr)),
+        x(ff - rr, e_c(ff, ff - rr, 1.0)),
         x(disc, ed),
         shrink,
     )?;
@@ -459,7 +472,7 @@ pub fn tight(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64, shrink: f64) -> Opti
 /// The roots where the filter certified two but not both roots, with `c =
 /// f·f − R²` recomputed compensated: the cure for an origin near a large
 /// sphere, where `c ≈ 2Rh` (`h` the height above the surface) is the
-/// cancellation of two terms near `R²`, so the filter's `E_c = 12u m_c`
+/// cancellation of two terms near `R²`, so the filter's `E_c = 10u f̂f + 2u|ĉ|`
 /// exceeds `|c|` itself while `a`, `b` and `Δ` stay accurate.
 ///
 /// # The bound
