@@ -73,7 +73,8 @@ pub struct QuadricHit4 {
 /// Intersects four lines with four quadrics, lane by lane: the
 /// [filter](super::stages) on four f64 lanes, and the scalar stages for any
 /// lane it leaves undecided, so every lane equals
-/// [`super::reference::intersect`] bit for bit.
+/// [`super::reference::intersect`] bit for bit. A packet whose every lane
+/// certainly misses returns before the roots.
 ///
 /// ```
 /// use rayoracle::{Ray, ray4::Ray4, quadric::{Quadric, QuadricHit, reference, x4}};
@@ -204,7 +205,12 @@ fn packets_in<W: Real8>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
             W::widen3(&pk[0].origin, &pk[1].origin),
             W::widen3(&pk[0].dir, &pk[1].dir),
         );
-        let [x, y] = decide(&k2, o2, d2).halves();
+        let c = stages::classes(&k2, o2, d2, 1.0);
+        if W::all(c.none) && env {
+            o.fill(QuadricHit4::MISS);
+            continue;
+        }
+        let [x, y] = decide_from(c).halves();
         o[0] = finish(x, |_| env, &pk[0], q);
         o[1] = finish(y, |_| env, &pk[1], q);
     }
@@ -257,7 +263,13 @@ impl<W: Real8> Decided<W> {
 /// The filter and [`certify`] over any [`Real`].
 #[inline(always)]
 fn decide<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3]) -> Decided<L> {
-    let f = stages::filter(k, o, d, 1.0);
+    decide_from(stages::classes(k, o, d, 1.0))
+}
+
+/// [`decide`] from the filter's classes, already computed.
+#[inline(always)]
+fn decide_from<L: Real>(c: stages::Classes<L>) -> Decided<L> {
+    let f = stages::roots(c, 1.0);
     let ok1 = certify(f.t1, f.r1, f.a1);
     let two = f.two & certify(f.t0, f.r0, f.a0) & ok1;
     let one = f.linear & ok1;
@@ -297,19 +309,27 @@ fn finish<L: Real4>(
     }
 }
 
-/// The kernel over any four-lane [`Real4`].
+/// The kernel over any four-lane [`Real4`]. A packet whose every lane
+/// certainly misses needs no roots (their square root, division and
+/// bounds): a camera's coherent rays often come so.
 #[inline(always)]
-fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4, env: impl FnOnce(bool) -> bool) -> QuadricHit4 {
+fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit4 {
     let k = widen10::<L>(&q.coeffs);
-    finish(
-        decide(&k, ray.origin.map(L::widen), ray.dir.map(L::widen)),
-        env,
-        ray,
-        q,
-    )
+    let c = stages::classes(&k, ray.origin.map(L::widen), ray.dir.map(L::widen), 1.0);
+    if L::all(c.none) && env(false) {
+        return QuadricHit4::MISS;
+    }
+    finish(decide_from(c), env, ray, q)
 }
 
 impl QuadricHit4 {
+    /// Every lane a miss.
+    const MISS: QuadricHit4 = QuadricHit4 {
+        class: i32x4::splat(NONE),
+        t0: f32x4::splat(f32::NAN),
+        t1: f32x4::splat(f32::NAN),
+    };
+
     /// Replaces every lane not `done` (and, with subnormals flushed, every
     /// lane) with the scalar stages' answer.
     #[cold]
@@ -392,5 +412,34 @@ mod tests {
                 .map(|j| Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, j])),
         );
         crate::num::batch::every_copy_agrees!(packets_in, intersect_baseline, q: Quadric4, QuadricHit4);
+    }
+
+    /// A packet whose every lane certainly misses returns before the
+    /// roots, with what the reference gives lane by lane; so does a pair
+    /// of such packets in a batch, and a packet with one hit among misses
+    /// takes the whole path.
+    #[test]
+    fn packets_that_miss_return_the_reference_answers() {
+        use crate::{Ray, ray4::Ray4};
+        use glam::Vec3;
+        let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+        let q = Quadric4::splat(&cyl);
+        let along = |y: f32| Ray::new(Vec3::new(-5.0, y, 0.0), Vec3::X);
+        for ys in [[2.0, 3.0, -2.0, 1.5], [2.0, 0.5, -2.0, 1.5]] {
+            let rays = ys.map(along);
+            let r4 = Ray4::from_rays(rays);
+            let want = rays.map(|r| reference::intersect(&r, &cyl));
+            assert_eq!(intersect(&r4, &q).lanes(), want, "{ys:?}");
+            assert_eq!(intersect_baseline(&r4, &q).lanes(), want, "{ys:?}");
+            let mut out = [QuadricHit4::MISS; 2];
+            intersect_packets(&[r4, r4], &q, &mut out);
+            assert_eq!(out.map(|h| h.lanes()), [want; 2], "{ys:?}");
+        }
+        let misses = [2.0, 3.0, -2.0, 1.5].map(along);
+        assert!(
+            misses
+                .iter()
+                .all(|r| reference::intersect(r, &cyl) == QuadricHit::None)
+        );
     }
 }
