@@ -184,7 +184,7 @@ fn found_lines(kind: &str) -> Vec<(String, Case)> {
         .collect()
 }
 
-fn found(kind: &str) -> Vec<Case> {
+pub fn found(kind: &str) -> Vec<Case> {
     found_lines(kind).into_iter().map(|(_, c)| c).collect()
 }
 

@@ -6,7 +6,8 @@
 //! the larger ones of the full filter. Each stage that certifies with a
 //! bound (the plane's first and second passes, tight and double-word stages; the
 //! sphere's tight, compensated and double-word stages; the quadric's
-//! double-word stage) is called alone, every bound it uses multiplied by
+//! double-word stage, and the first pass of its x4 kernel,
+//! `quadric::x4::first_pass_shrunk`) is called alone, every bound it uses multiplied by
 //! a factor `s < 1`, on the cases of
 //! `fixtures/bounds/stages.jsonl`. A seeded hill-climb found them by
 //! maximising the largest `s` at which the stage answers wrong (its
@@ -25,7 +26,9 @@
 //! ([`bounds_search::sphere_rounding_up_seeds`]); for the quadric's
 //! double-word stage, double planes opened by a tiny constant, whose
 //! leading words of `Δ/4` each round by a full half ulp
-//! ([`bounds_search::quadric_rounding_seeds`]). The stages with
+//! ([`bounds_search::quadric_rounding_seeds`]); for the quadric's x4
+//! first pass, the cases `bounds.rs` commits for the filter too
+//! (`fixtures/bounds/quadric.jsonl`). The stages with
 //! arithmetic proven exact (`tracked`, `grid_exact`) have no bound to
 //! shrink.
 //!
@@ -117,7 +120,12 @@ fn quadric_double_word(c: &Case, s: f64) -> Option<Answer> {
     quadric::stages::double_word(&k, w(r.origin), w(r.dir), s).map(|h| answer(&h))
 }
 
-const STAGES: [Staged; 7] = [
+fn quadric_x4_sorted(c: &Case, s: f64) -> Option<Answer> {
+    let Case::Quadric(r, q) = c else { return None };
+    quadric::x4::first_pass_shrunk(r, q, s).map(|h| answer(&h))
+}
+
+const STAGES: [Staged; 8] = [
     Staged {
         kind: "plane",
         name: "first",
@@ -153,6 +161,11 @@ const STAGES: [Staged; 7] = [
         name: "double-word",
         run: quadric_double_word,
     },
+    Staged {
+        kind: "quadric",
+        name: "x4-sorted",
+        run: quadric_x4_sorted,
+    },
 ];
 
 /// The factor at which the committed cases must show each stage wrong:
@@ -176,7 +189,11 @@ const STAGES: [Staged; 7] = [
 /// its `Δ/4` rounds by a full half ulp the same way
 /// (`bounds_search::quadric_rounding_seeds`); the sphere's tight stage by
 /// searched cases, its `E_c` that of the filter (see `docs/accuracy.md`).
-const CAUGHT_AT: [(&str, f64); 7] = [
+/// The quadric's x4 first pass (`quadric::lanes`) by searched double
+/// planes opened by a tiny constant, whose class it takes on the wrong
+/// side of 0 up to about 2^-2.2: its `E_Δ` is twice the first-order proof
+/// and its sums are shorter than the filter's, so fewer roundings add up.
+const CAUGHT_AT: [(&str, f64); 8] = [
     ("bounds/plane/first", 0.5),
     ("bounds/plane/second", 0.25),
     ("bounds/plane/tight", 0.25),
@@ -184,6 +201,7 @@ const CAUGHT_AT: [(&str, f64); 7] = [
     ("bounds/sphere/compensated", 0.25),
     ("bounds/sphere/double-word", 0.25),
     ("bounds/quadric/double-word", 0.25),
+    ("bounds/quadric/x4-sorted", 0.125),
 ];
 
 impl Staged {
@@ -576,8 +594,13 @@ fn seeds(st: &Staged, rng: &mut SmallRng, n: usize) -> Vec<Case> {
             }
             out
         }
-        _ => {
+        (_, name) => {
             let mut out = [quadric_seeds(rng, n), bounds_search::quadric_seeds(rng, n)].concat();
+            // The kernels' searched cases, on the edge of the filter's
+            // class and roots, whose bounds the x4 pass shares or mirrors.
+            if name == "x4-sorted" {
+                out.extend(crate::bounds::found("quadric"));
+            }
             // Double planes whose double-word `Δ̂` rounds by most of its
             // bound: for the long search alone, as above.
             out.extend(bounds_search::quadric_rounding_seeds(rng, n / 256, 256));

@@ -44,6 +44,7 @@
 //! oracle ([`exact`]).
 
 pub mod exact;
+pub mod lanes;
 pub mod plain;
 pub mod reference;
 pub mod stages;

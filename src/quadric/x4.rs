@@ -1,11 +1,14 @@
-//! Four rays against four quadrics at once. The filter runs on four f64
-//! lanes; both paths return the exact answer, correctly rounded, so they
-//! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
+//! Four rays against four quadrics at once. A first pass
+//! ([`lanes`]: the filter's classes, and the roots as
+//! `(−β ∓ √Δ)/2α`) runs on four f64 lanes, then the filter's quotients
+//! for a packet it leaves a lane of; both paths return the exact answer,
+//! correctly rounded, so they agree bit for bit with
+//! [`super::reference`](mod@super::reference) by construction.
 
-use super::{Quadric, QuadricHit, reference, stages};
+use super::{Quadric, QuadricHit, lanes, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
-use crate::num::certify::{certify, flush_prone4, results_stand, subnormals_work};
+use crate::num::certify::{certify, certify_end, flush_prone4, results_stand, subnormals_work};
 use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::Ray4;
 use crate::ray4::class::{ALL, NONE, ONE, TWO};
@@ -70,9 +73,11 @@ pub struct QuadricHit4 {
     pub t1: f32x4,
 }
 
-/// Intersects four lines with four quadrics, lane by lane: the
-/// [filter](super::stages) on four f64 lanes, and the scalar stages for any
-/// lane it leaves undecided, so every lane equals
+/// Intersects four lines with four quadrics, lane by lane: a first pass
+/// on four f64 lanes (the [filter](super::stages)'s classes, and the roots
+/// in a form whose divisions do not wait on the square root), the
+/// filter's quotients for a packet with a lane it leaves, and the scalar
+/// stages for any lane still undecided, so every lane equals
 /// [`super::reference::intersect`] bit for bit. A packet whose every lane
 /// certainly misses returns before the roots.
 ///
@@ -205,19 +210,23 @@ fn packets_in<W: Real8>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
             W::widen3(&pk[0].origin, &pk[1].origin),
             W::widen3(&pk[0].dir, &pk[1].dir),
         );
-        let c = stages::classes(&k2, o2, d2, 1.0);
+        let c = lanes::classes(&k2, o2, d2, 1.0);
         if W::all(c.none) && env {
             o.fill(QuadricHit4::MISS);
             continue;
         }
-        let [x, y] = decide_from(c).halves();
+        let (x, open) = decide_sorted(&c, lanes::sorted(&c, 1.0));
+        if !W::all(!open) {
+            o[0] = quotients(&pk[0], q, |_| env);
+            o[1] = quotients(&pk[1], q, |_| env);
+            continue;
+        }
+        let [x, y] = x.halves();
         o[0] = finish(x, |_| env, &pk[0], q);
         o[1] = finish(y, |_| env, &pk[1], q);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
-        let w = W::Half::widen;
-        let (o1, d1) = (one.origin.map(w), one.dir.map(w));
-        *o = finish(decide(&k, o1, d1), |_| env, one, q);
+        *o = intersect_in::<W::Half>(one, q, |_| env);
     }
 }
 
@@ -260,16 +269,11 @@ impl<W: Real8> Decided<W> {
     }
 }
 
-/// The filter and [`certify`] over any [`Real`].
+/// The filter and [`certify`] over any [`Real`]: the roots as quotients
+/// `q/α` and `γ/q`, which do not cancel, and the linear root.
 #[inline(always)]
 fn decide<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3]) -> Decided<L> {
-    decide_from(stages::classes(k, o, d, 1.0))
-}
-
-/// [`decide`] from the filter's classes, already computed.
-#[inline(always)]
-fn decide_from<L: Real>(c: stages::Classes<L>) -> Decided<L> {
-    let f = stages::roots(c, 1.0);
+    let f = stages::filter(k, o, d, 1.0);
     let ok1 = certify(f.t1, f.r1, f.a1);
     let two = f.two & certify(f.t0, f.r0, f.a0) & ok1;
     let one = f.linear & ok1;
@@ -311,15 +315,86 @@ fn finish<L: Real4>(
 
 /// The kernel over any four-lane [`Real4`]. A packet whose every lane
 /// certainly misses needs no roots (their square root, division and
-/// bounds): a camera's coherent rays often come so.
+/// bounds): a camera's coherent rays often come so. A packet with a lane
+/// the first pass leaves (a linear root, a root near 0 against the other)
+/// takes [`quotients`] whole.
 #[inline(always)]
 fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit4 {
     let k = widen10::<L>(&q.coeffs);
-    let c = stages::classes(&k, ray.origin.map(L::widen), ray.dir.map(L::widen), 1.0);
+    let c = lanes::classes(&k, ray.origin.map(L::widen), ray.dir.map(L::widen), 1.0);
     if L::all(c.none) && env(false) {
         return QuadricHit4::MISS;
     }
-    finish(decide_from(c), env, ray, q)
+    let (x, open) = decide_sorted(&c, lanes::sorted(&c, 1.0));
+    if L::all(!open) {
+        finish(x, env, ray, q)
+    } else {
+        quotients(ray, q, env)
+    }
+}
+
+/// The first pass's decisions from its classes and sorted roots, and the
+/// lanes it leaves to the quotients: those of the class two whose roots
+/// it did not certify, and the linear ones.
+#[inline(always)]
+fn decide_sorted<L: Real>(c: &lanes::Classes<L>, f: lanes::Sorted<L>) -> (Decided<L>, L::Mask) {
+    let (ok_lo, lo) = certify_end(f.lo, f.r, f.a);
+    let (ok_hi, hi) = certify_end(f.hi, f.r, f.a);
+    let two = c.two & ok_lo & ok_hi;
+    let nan = L::splat(f64::NAN);
+    let no = two & !two;
+    let x = Decided {
+        two,
+        one: no,
+        all: c.all,
+        done: two | c.none | c.all,
+        lo: L::select(two, lo, nan),
+        hi: L::select(two, hi, nan),
+    };
+    (x, (c.two & !two) | c.linear)
+}
+
+/// The whole packet by the filter's quotients ([`decide`]), on the
+/// baseline lanes (the same bits on any): for a packet with a lane the
+/// first pass leaves.
+#[cold]
+#[inline(never)]
+fn quotients(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit4 {
+    let k = widen10::<F64x4>(&q.coeffs);
+    let w = F64x4::widen;
+    finish(decide(&k, ray.origin.map(w), ray.dir.map(w)), env, ray, q)
+}
+
+/// The first pass of [`intersect`] alone on one line, every bound of
+/// [`lanes`] multiplied by `shrink`: the answer where it certifies one
+/// (two roots, no root, or the whole line), `None` where it leaves the
+/// line to the quotients or the scalar stages. Each lane of the kernel
+/// computes the same bits, every operation being one IEEE-754 operation
+/// per lane. For the tests that show a bound too small gives wrong
+/// answers.
+///
+/// ```
+/// use rayoracle::{Ray, quadric::{Quadric, QuadricHit, x4}};
+/// use glam::Vec3;
+/// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+/// let r = Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X);
+/// assert_eq!(x4::first_pass_shrunk(&r, &cyl, 1.0), Some(QuadricHit::Two(4.0, 6.0)));
+/// ```
+#[doc(hidden)]
+pub fn first_pass_shrunk(ray: &crate::Ray, q: &Quadric, shrink: f64) -> Option<QuadricHit> {
+    let w = |v: glam::Vec3| v.to_array().map(f64::from);
+    let k = q.coeffs.map(f64::from);
+    let c = lanes::classes(&k, w(ray.origin), w(ray.dir), shrink);
+    let (x, _) = decide_sorted(&c, lanes::sorted(&c, shrink));
+    if x.two {
+        Some(QuadricHit::Two(x.lo as f32, x.hi as f32))
+    } else if c.none {
+        Some(QuadricHit::None)
+    } else if c.all {
+        Some(QuadricHit::All)
+    } else {
+        None
+    }
 }
 
 impl QuadricHit4 {

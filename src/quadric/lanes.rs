@@ -1,0 +1,261 @@
+//! The x4 kernels' first pass over the quadric: the classes of the
+//! [filter](super::stages) from sums taken pairwise, and both roots in
+//! the form `(−β ∓ √Δ)/2α`, sorted, which no division waits for after the
+//! square root. Lanes it leaves (a linear root, a root that cancels, a
+//! product out of range) go to the filter's quotients.
+//!
+//! # The bound
+//!
+//! In the notation of [`crate::sphere::stages`] (`u = 2⁻⁵³`, `γₙ =
+//! nu/(1 − nu)`, hats for computed values, `E` for error bounds), with f32
+//! inputs exact in f64. Every term of α, β and γ is a coefficient times one
+//! or two inputs: `k·x` is exact (two f32 values), `k·x·y` rounds once. A
+//! sum taken by any tree of additions is within `Σ|tᵢ|γₙ` of the exact
+//! sum of its exact terms `tᵢ`, `n` the most roundings any term meets on
+//! its way (its own and one per addition; Higham, *Accuracy and Stability
+//! of Numerical Algorithms*, §3.1 and §4.2). Here:
+//!
+//! * α, six terms in a tree of depth three: `E_α = γ₄ m_α`;
+//! * β, its three square terms summed (depth two) and doubled (exact),
+//!   its six cross terms (depth three) and its three linear ones (exact
+//!   products, depth two) summed, and the three sums added: five additions
+//!   at most, `E_β = γ₆ m_β`, `m_β` counting the square terms twice;
+//! * γ, its six quadratic terms (depth three) and its three linear ones
+//!   with the constant (exact, depth two) summed, and the two added:
+//!   `E_γ = γ₅ m_γ`;
+//!
+//! with `m` the sum of the terms' magnitudes, summed by the same trees
+//! (`pairwise`).
+//! The pass uses twice these: `E_α = 8u m_α`, `E_β = 12u m_β`, `E_γ = 10u
+//! m_γ`, which also covers the roundings of the `m` themselves.
+//!
+//! * `Δ = β² − 4αγ` (`4α̂` exact): `|β̂² − β²| ≤ E_β(2|β̂| + E_β)`,
+//!   `|α̂γ̂ − αγ| ≤ |α̂|E_γ + (|γ̂| + E_γ)E_α`, and three roundings, of
+//!   `β̂²`, of `4α̂γ̂` and of the difference, at most `2u(β̂² + 4|α̂γ̂|)` to
+//!   first order. With `|β̂| ≤ m_β`, `|α̂| ≤ m_α`, `|γ̂| ≤ m_γ` (a computed
+//!   sum is at most the computed sum of magnitudes), that is `u(14 m_β² +
+//!   44 m_α m_γ)` to first order: `12u` from `β̂`, `36u` from `α̂` and `γ̂`,
+//!   `2u` and `8u` from the roundings. The pass uses twice that, **`E_Δ =
+//!   u(28 m_β² + 88 m_α m_γ)`**, for the terms of order `u²` and the
+//!   roundings of its own evaluation.
+//! * The classes as in the filter: `|α̂| > E_α` certifies a quadratic, then
+//!   `Δ̂ > E_Δ` two roots and `Δ̂ < −E_Δ` none; `m_α = 0` means α = 0
+//!   exactly, with `|β̂| > E_β` a linear root (left to the quotients),
+//!   `m_β = 0` and `|γ̂| > E_γ` no root, `m_β = m_γ = 0` the whole line.
+//!
+//! The roots where two are certified, so `|α̂| > E_α` (α̂ has α's sign)
+//! and `Δ̂ > E_Δ ≥ 0`. With `σ = sign(α̂)` and `β' = σβ` (exact), the
+//! roots are `t = (−β' ∓ √Δ)/2|α|`, the smaller first.
+//!
+//! * `ŝ = fl(√Δ̂)`: `|√Δ − √Δ̂| ≤ E_Δ/√Δ̂` (`Δ ≥ 0`), and one rounding, so
+//!   `E_s = E_Δ/ŝ + 2uŝ` (the `1 + u` between `√Δ̂` and `ŝ` is in the
+//!   widening below).
+//! * `n̂ = fl(−β̂' ∓ ŝ)` against `n = −β' ∓ √Δ`: `|n̂ − n| ≤ 1.01u|n̂| + E_β
+//!   + E_s`.
+//! * One division, `ρ = 1/(2α̂Δ̂)`, started with the square root, gives
+//!   `ι = |Δ̂ρ|`, `1/2|α̂|` within `γ₃`, and `ŝ|ρ|`, `1/(2|α̂|ŝ)` within
+//!   `γ₅` (`ŝ² = Δ̂(1 + θ₂)`): `E_s/2|α̂|` is `ŝ|ρ|(E_Δ + 2uΔ̂)`, which
+//!   waits on the square root for one product alone.
+//! * `t̂ = fl(n̂ι)` is within `γ₄|x|` of `x = n̂/2|α̂|`. With `w = E_α/|α̂|`,
+//!   `x − t = (n̂ − n)/2|α̂| + t(|α| − |α̂|)/|α̂|`, so `|x − t| ≤ A + w|t| ≤
+//!   A + w|x| + w|x − t|`, `A = |n̂ − n|/2|α̂|`: `|x − t| ≤ (A + w|x|)/(1 −
+//!   w)`, and the pass certifies only where `w < 1/4`, bounding `1/(1 −
+//!   w)` by `1 + 2w`.
+//!
+//! Altogether `|t̂ − t| ≤ |t̂|(w(1 + 2w) + 5.6u) + (1 + 2w)(E_β + E_s)/2|α̂|`
+//! to first order (`4.01u` from `t̂`'s roundings, `1.01u(1 + 2w)` from
+//! `n̂`'s). The pass uses `r = w(1 + 2w) + 20u` and `a = (1 + 2w)(E_β +
+//! E_s)/2|α̂|`, each factor widened by `1 + 2⁻³⁰`, which covers the
+//! roundings of `ι`, `ŝ|ρ|` and of the bound's own evaluation. `shrink`
+//! multiplies every bound: `E_α`, `E_β`, `E_γ`, `E_Δ`, `2uŝ` and `20u`.
+//!
+//! Rounding is monotone, `ŝ ≥ 0` and `ι > 0`, so the first root is at
+//! most the second without a comparison. A root that cancels (`|n̂|` far
+//! below `|β̂|`, a root near 0 against the other) has a bound too wide
+//! to certify; an exact root 0 gives `n̂ = ±0` with `a > 0`, which never
+//! certifies.
+//!
+//! # Range
+//!
+//! A nonzero term is at least `2⁻⁴⁴⁷` and at most `2³⁸⁴` (f32 values), so
+//! a multiple of `2⁻⁴⁹⁹`, and so is every sum of terms: a nonzero `α̂`,
+//! `β̂` or `γ̂` lies between `2⁻⁴⁹⁹` and `2³⁸⁸`. So `β̂²` and `4α̂γ̂` are
+//! normal (or 0), and the rounding model above holds for `Δ̂` and every
+//! quantity of the classes, for every finite input. `2α̂Δ̂` may leave f64's
+//! range: the pass certifies roots only where `2⁻¹⁰⁰⁰ < |2α̂Δ̂| < 2¹⁰⁰⁰`,
+//! so that `ρ` is normal and finite, and `ι` lies between `2⁻³⁸⁹` and
+//! `2⁴⁹⁸`. A positive `Δ̂` has `ŝ ≥ 2⁻⁵³⁷`; a nonzero `n̂` is at least the
+//! smaller ulp of `β̂` and `ŝ`, `2⁻⁵⁸⁹`, so `t̂ = fl(n̂ι)` is normal; so are
+//! `w`, `ŝ|ρ|(E_Δ + 2uΔ̂)` (at least `2uŝι`) and `E_βι` where not 0. A
+//! non-finite input makes a magnitude sum infinite or NaN, which certifies
+//! nothing.
+
+use crate::num::certify::{SLACK, U};
+use crate::num::real::Real;
+
+/// The classes of the first pass, as the [module](self) derives them,
+/// and what its roots need.
+pub(crate) struct Classes<L: Real> {
+    alpha: L,
+    beta: L,
+    disc: L,
+    ea: L,
+    eb: L,
+    ed: L,
+    /// Certified: two roots (which still need certifying).
+    pub(crate) two: L::Mask,
+    /// Certified: α = 0 and β ≠ 0, one root, left to the quotients.
+    pub(crate) linear: L::Mask,
+    /// Certified: no root.
+    pub(crate) none: L::Mask,
+    /// Certified: every `t`.
+    pub(crate) all: L::Mask,
+}
+
+/// A sum and the sum of its terms' magnitudes.
+#[derive(Clone, Copy)]
+struct Summed<L>(L, L);
+
+impl<L: Real> Summed<L> {
+    /// One term.
+    #[inline(always)]
+    fn of(x: L) -> Summed<L> {
+        Summed(x, x.abs())
+    }
+    /// Two sums added.
+    #[inline(always)]
+    fn and(self, o: Summed<L>) -> Summed<L> {
+        Summed(self.0 + o.0, self.1 + o.1)
+    }
+}
+
+/// `N` terms summed by neighbours in pairs, level by level: `⌈log₂ N⌉`
+/// additions on the way of every term, where a sum from left to right
+/// has up to `N − 1`. Written out for the sizes the pass needs (3, 4 and
+/// 6), as a loop over the array would not always be unrolled.
+#[inline(always)]
+fn pairwise<L: Real, const N: usize>(t: [L; N]) -> Summed<L> {
+    let x = |i: usize| Summed::of(t[i]);
+    match N {
+        3 => x(0).and(x(1)).and(x(2)),
+        4 => x(0).and(x(1)).and(x(2).and(x(3))),
+        6 => x(0).and(x(1)).and(x(2).and(x(3))).and(x(4).and(x(5))),
+        _ => unreachable!("no sum of {N} terms"),
+    }
+}
+
+/// The classes of the line `o + t d` on the quadric `k`, every bound
+/// multiplied by `shrink`: the filter's decisions with the
+/// [module](self)'s sums and bounds. The products `k·x` shared by several
+/// terms are taken once.
+#[inline(always)]
+pub(crate) fn classes<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Classes<L> {
+    // The exact products of two f32 values, each used by two terms or more.
+    let (k0d0, k0o0) = (k[0] * d[0], k[0] * o[0]);
+    let (k1d1, k1o1) = (k[1] * d[1], k[1] * o[1]);
+    let (k2d2, k2o2) = (k[2] * d[2], k[2] * o[2]);
+    let (k3d0, k3o0) = (k[3] * d[0], k[3] * o[0]);
+    let (k4d0, k4o0) = (k[4] * d[0], k[4] * o[0]);
+    let (k5d1, k5o1) = (k[5] * d[1], k[5] * o[1]);
+    let linear = |v: [L; 3]| [k[6] * v[0], k[7] * v[1], k[8] * v[2]];
+    let Summed(alpha, ma) = pairwise([
+        k0d0 * d[0],
+        k1d1 * d[1],
+        k2d2 * d[2],
+        k3d0 * d[1],
+        k4d0 * d[2],
+        k5d1 * d[2],
+    ]);
+    // β's square terms before their factor 2, its cross terms, its
+    // linear ones.
+    let Summed(sq, msq) = pairwise([k0o0 * d[0], k1o1 * d[1], k2o2 * d[2]]);
+    let Summed(cross, mcross) = pairwise([
+        k3o0 * d[1],
+        k3d0 * o[1],
+        k4o0 * d[2],
+        k4d0 * o[2],
+        k5o1 * d[2],
+        k5d1 * o[2],
+    ]);
+    let Summed(lin, mlin) = pairwise(linear(d));
+    let beta = (sq + sq) + (cross + lin);
+    let mb = (msq + msq) + (mcross + mlin);
+    let Summed(quad, mquad) = pairwise([
+        k0o0 * o[0],
+        k1o1 * o[1],
+        k2o2 * o[2],
+        k3o0 * o[1],
+        k4o0 * o[2],
+        k5o1 * o[2],
+    ]);
+    let [l0, l1, l2] = linear(o);
+    let Summed(rest, mrest) = pairwise([l0, l1, l2, k[9]]);
+    let (gamma, mg) = (quad + rest, mquad + mrest);
+
+    let c = |x: f64| L::splat(x * U * shrink);
+    let zero = L::splat(0.0);
+    let (ea, eb, eg) = (c(8.0) * ma, c(12.0) * mb, c(10.0) * mg);
+    let disc = beta * beta - L::splat(4.0) * alpha * gamma;
+    let ed = c(28.0) * mb * mb + c(88.0) * ma * mg;
+    let quadratic = alpha.abs().gt(ea);
+    let lin = ma.eq(zero);
+    let beta_zero = mb.eq(zero);
+    Classes {
+        alpha,
+        beta,
+        disc,
+        ea,
+        eb,
+        ed,
+        two: quadratic & disc.gt(ed),
+        linear: lin & beta.abs().gt(eb),
+        none: (quadratic & (-ed).gt(disc)) | (lin & beta_zero & gamma.abs().gt(eg)),
+        all: lin & beta_zero & mg.eq(zero),
+    }
+}
+
+/// Both roots, sorted, with one bound `|t|·r + a` for both.
+pub(crate) struct Sorted<L: Real> {
+    /// The smaller root.
+    pub(crate) lo: L,
+    /// The larger root.
+    pub(crate) hi: L,
+    /// The relative part of either root's bound.
+    pub(crate) r: L,
+    /// The absolute part of either root's bound.
+    pub(crate) a: L,
+}
+
+/// The roots `(−β ∓ √Δ)/2α`, sorted, and their bound, as the
+/// [module](self) derives them, every bound multiplied by `shrink`;
+/// meaningful in the lanes [`Classes::two`] certifies.
+#[inline(always)]
+pub(crate) fn sorted<L: Real>(k: &Classes<L>, shrink: f64) -> Sorted<L> {
+    let c = |x: f64| L::splat(x * U * shrink);
+    let (one, slack) = (L::splat(1.0), L::splat(SLACK));
+    let (alpha, disc) = (k.alpha, k.disc);
+    let p = (alpha + alpha) * disc;
+    let pa = p.abs();
+    let in_range = pa.gt(L::splat(2f64.powi(-1000))) & L::splat(2f64.powi(1000)).gt(pa);
+    let rho = one / p;
+    // ι = 1/2|α̂|, and β' = σβ.
+    let ia = (disc * rho).abs();
+    let beta = k.beta * one.copysign(alpha);
+    let w = (k.ea + k.ea) * ia * slack;
+    let g = (one + w + w) * slack;
+    let r = L::select(
+        L::splat(0.25).gt(w) & in_range,
+        w * g + c(20.0),
+        L::splat(f64::INFINITY),
+    );
+    // E_s/2|α̂| but for the factor ŝ, and E_β/2|α̂|, each times 1 + 2w.
+    let es = rho.abs() * ((k.ed + c(2.0) * disc) * slack) * g;
+    let eb = k.eb * ia * g;
+    let s = disc.sqrt();
+    Sorted {
+        lo: (-beta - s) * ia,
+        hi: (s - beta) * ia,
+        r,
+        a: eb + s * es,
+    }
+}
