@@ -39,9 +39,10 @@
 //!   u(28 m_β² + 88 m_α m_γ)`**, for the terms of order `u²` and the
 //!   roundings of its own evaluation.
 //! * The classes as in the filter: `|α̂| > E_α` certifies a quadratic, then
-//!   `Δ̂ > E_Δ` two roots and `Δ̂ < −E_Δ` none; `m_α = 0` means α = 0
-//!   exactly, with `|β̂| > E_β` a linear root (left to the quotients),
-//!   `m_β = 0` and `|γ̂| > E_γ` no root, `m_β = m_γ = 0` the whole line.
+//!   `Δ̂ > E_Δ` two roots and `Δ̂ < −E_Δ` none. `m_α = 0` means α = 0
+//!   exactly (a nonzero term is at least `2⁻⁴⁴⁷`): the pass leaves such a
+//!   line (a linear root, no root or the whole line) to the quotients,
+//!   and computes no `E_γ`, which enters only the proof of `E_Δ`.
 //!
 //! The roots where two are certified, so `|α̂| > E_α` (α̂ has α's sign)
 //! and `Δ̂ > E_Δ ≥ 0`. With `σ = sign(α̂)` and `β' = σβ` (exact), the
@@ -67,7 +68,7 @@
 //! `n̂`'s). The pass uses `r = w(1 + 2w) + 20u` and `a = (1 + 2w)(E_β +
 //! E_s)/2|α̂|`, each factor widened by `1 + 2⁻³⁰`, which covers the
 //! roundings of `ι`, `ŝ|ρ|` and of the bound's own evaluation. `shrink`
-//! multiplies every bound: `E_α`, `E_β`, `E_γ`, `E_Δ`, `2uŝ` and `20u`.
+//! multiplies every bound: `E_α`, `E_β`, `E_Δ`, `2uŝ` and `20u`.
 //!
 //! Rounding is monotone, `ŝ ≥ 0` and `ι > 0`, so the first root is at
 //! most the second without a comparison. A root that cancels (`|n̂|` far
@@ -104,12 +105,10 @@ pub(crate) struct Classes<L: Real> {
     ed: L,
     /// Certified: two roots (which still need certifying).
     pub(crate) two: L::Mask,
-    /// Certified: α = 0 and β ≠ 0, one root, left to the quotients.
-    pub(crate) linear: L::Mask,
     /// Certified: no root.
     pub(crate) none: L::Mask,
-    /// Certified: every `t`.
-    pub(crate) all: L::Mask,
+    /// α = 0 exactly (`m_α = 0`): left to the quotients.
+    pub(crate) lin: L::Mask,
 }
 
 /// A sum and the sum of its terms' magnitudes.
@@ -194,12 +193,10 @@ pub(crate) fn classes<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -
 
     let c = |x: f64| L::splat(x * U * shrink);
     let zero = L::splat(0.0);
-    let (ea, eb, eg) = (c(8.0) * ma, c(12.0) * mb, c(10.0) * mg);
+    let (ea, eb) = (c(8.0) * ma, c(12.0) * mb);
     let disc = beta * beta - L::splat(4.0) * alpha * gamma;
     let ed = c(28.0) * mb * mb + c(88.0) * ma * mg;
     let quadratic = alpha.abs().gt(ea);
-    let lin = ma.eq(zero);
-    let beta_zero = mb.eq(zero);
     Classes {
         alpha,
         beta,
@@ -208,9 +205,8 @@ pub(crate) fn classes<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -
         eb,
         ed,
         two: quadratic & disc.gt(ed),
-        linear: lin & beta.abs().gt(eb),
-        none: (quadratic & (-ed).gt(disc)) | (lin & beta_zero & gamma.abs().gt(eg)),
-        all: lin & beta_zero & mg.eq(zero),
+        none: quadratic & (-ed).gt(disc),
+        lin: ma.eq(zero),
     }
 }
 

@@ -335,23 +335,23 @@ fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) 
 
 /// The first pass's decisions from its classes and sorted roots, and the
 /// lanes it leaves to the quotients: those of the class two whose roots
-/// it did not certify, and the linear ones.
+/// it did not certify, and those with α = 0.
 #[inline(always)]
 fn decide_sorted<L: Real>(c: &lanes::Classes<L>, f: lanes::Sorted<L>) -> (Decided<L>, L::Mask) {
     let (ok_lo, lo) = certify_end(f.lo, f.r, f.a);
     let (ok_hi, hi) = certify_end(f.hi, f.r, f.a);
     let two = c.two & ok_lo & ok_hi;
     let nan = L::splat(f64::NAN);
-    let no = two & !two;
+    let no = nan.gt(nan);
     let x = Decided {
         two,
         one: no,
-        all: c.all,
-        done: two | c.none | c.all,
+        all: no,
+        done: two | c.none,
         lo: L::select(two, lo, nan),
         hi: L::select(two, hi, nan),
     };
-    (x, (c.two & !two) | c.linear)
+    (x, (c.two & !two) | c.lin)
 }
 
 /// The whole packet by the filter's quotients ([`decide`]), on the
@@ -367,8 +367,8 @@ fn quotients(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit
 
 /// The first pass of [`intersect`] alone on one line, every bound of
 /// [`lanes`] multiplied by `shrink`: the answer where it certifies one
-/// (two roots, no root, or the whole line), `None` where it leaves the
-/// line to the quotients or the scalar stages. Each lane of the kernel
+/// (two roots or none), `None` where it leaves the line to the quotients
+/// or the scalar stages. Each lane of the kernel
 /// computes the same bits, every operation being one IEEE-754 operation
 /// per lane. For the tests that show a bound too small gives wrong
 /// answers.
@@ -388,12 +388,8 @@ pub fn first_pass_shrunk(ray: &crate::Ray, q: &Quadric, shrink: f64) -> Option<Q
     let (x, _) = decide_sorted(&c, lanes::sorted(&c, shrink));
     if x.two {
         Some(QuadricHit::Two(x.lo as f32, x.hi as f32))
-    } else if c.none {
-        Some(QuadricHit::None)
-    } else if c.all {
-        Some(QuadricHit::All)
     } else {
-        None
+        c.none.then_some(QuadricHit::None)
     }
 }
 
