@@ -60,13 +60,13 @@
 //! * `t̂ = fl(n̂ι)` is within `γ₄|x|` of `x = n̂/2|α̂|`. With `w = E_α/|α̂|`,
 //!   `x − t = (n̂ − n)/2|α̂| + t(|α| − |α̂|)/|α̂|`, so `|x − t| ≤ A + w|t| ≤
 //!   A + w|x| + w|x − t|`, `A = |n̂ − n|/2|α̂|`: `|x − t| ≤ (A + w|x|)/(1 −
-//!   w)`, and the pass certifies only where `w < 1/4`, bounding `1/(1 −
-//!   w)` by `1 + 2w`.
+//!   w)`, and the pass certifies only where `w < 2⁻¹⁰` (`α̂` cancelling
+//!   by less than about 40 bits), bounding `1/(1 − w)` by `1 + 2⁻⁹`.
 //!
-//! Altogether `|t̂ − t| ≤ |t̂|(w(1 + 2w) + 5.6u) + (1 + 2w)(E_β + E_s)/2|α̂|`
-//! to first order (`4.01u` from `t̂`'s roundings, `1.01u(1 + 2w)` from
-//! `n̂`'s). The pass uses `r = w(1 + 2w) + 20u` and `a = (1 + 2w)(E_β +
-//! E_s)/2|α̂|`, each factor widened by `1 + 2⁻³⁰`, which covers the
+//! Altogether `|t̂ − t| ≤ |t̂|((1 + 2⁻⁹)w + 5.6u) + (1 + 2⁻⁹)(E_β +
+//! E_s)/2|α̂|` to first order (`4.01u` from `t̂`'s roundings, `1.01u(1 +
+//! 2⁻⁹)` from `n̂`'s). The pass uses `r = (1 + 2⁻⁹)w + 20u` and `a = (1 +
+//! 2⁻⁹)(E_β + E_s)/2|α̂|`, each factor widened by `1 + 2⁻³⁰`, which covers the
 //! roundings of `ι`, `ŝ|ρ|` and of the bound's own evaluation. `shrink`
 //! multiplies every bound: `E_α`, `E_β`, `E_Δ`, `2uŝ` and `20u`.
 //!
@@ -228,7 +228,7 @@ pub(crate) struct Sorted<L: Real> {
 #[inline(always)]
 pub(crate) fn sorted<L: Real>(k: &Classes<L>, shrink: f64) -> Sorted<L> {
     let c = |x: f64| L::splat(x * U * shrink);
-    let (one, slack) = (L::splat(1.0), L::splat(SLACK));
+    let one = L::splat(1.0);
     let (alpha, disc) = (k.alpha, k.disc);
     let p = (alpha + alpha) * disc;
     let pa = p.abs();
@@ -237,16 +237,17 @@ pub(crate) fn sorted<L: Real>(k: &Classes<L>, shrink: f64) -> Sorted<L> {
     // ι = 1/2|α̂|, and β' = σβ.
     let ia = (disc * rho).abs();
     let beta = k.beta * one.copysign(alpha);
-    let w = (k.ea + k.ea) * ia * slack;
-    let g = (one + w + w) * slack;
+    // w = E_α/|α̂|, and 1 + 2w ≤ 1 + 2⁻⁹ where w < 2⁻¹⁰, widened.
+    let w = k.ea * ia * L::splat(2.0 * SLACK);
+    let g = 1.0 + 2f64.powi(-9);
     let r = L::select(
-        L::splat(0.25).gt(w) & in_range,
-        w * g + c(20.0),
+        L::splat(2f64.powi(-10)).gt(w) & in_range,
+        w * L::splat(g * SLACK) + c(20.0),
         L::splat(f64::INFINITY),
     );
-    // E_s/2|α̂| but for the factor ŝ, and E_β/2|α̂|, each times 1 + 2w.
-    let es = rho.abs() * ((k.ed + c(2.0) * disc) * slack) * g;
-    let eb = k.eb * ia * g;
+    // E_s/2|α̂| but for the factor ŝ, and E_β/2|α̂|, each times 1 + 2⁻⁹.
+    let es = rho.abs() * ((k.ed + c(2.0) * disc) * L::splat(g * SLACK * SLACK));
+    let eb = k.eb * ia * L::splat(g * SLACK);
     let s = disc.sqrt();
     Sorted {
         lo: (-beta - s) * ia,
