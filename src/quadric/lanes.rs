@@ -1,8 +1,8 @@
 //! The x4 kernels' first pass over the quadric: the classes of the
 //! [filter](super::stages) from sums taken pairwise, and both roots in
 //! the form `(−β ∓ √Δ)/2α`, sorted, which no division waits for after the
-//! square root. Lanes it leaves (a linear root, a root that cancels, a
-//! product out of range) go to the filter's quotients.
+//! square root. Lanes it leaves (α = 0, a root that cancels, an `α̂`
+//! that cancels, a product out of range) go to the filter's quotients.
 //!
 //! # The bound
 //!

@@ -316,8 +316,8 @@ fn finish<L: Real4>(
 /// The kernel over any four-lane [`Real4`]. A packet whose every lane
 /// certainly misses needs no roots (their square root, division and
 /// bounds): a camera's coherent rays often come so. A packet with a lane
-/// the first pass leaves (a linear root, a root near 0 against the other)
-/// takes [`quotients`] whole.
+/// the first pass leaves (α = 0, a root near 0 against the other, an `α̂`
+/// that cancels or a product out of range) takes [`quotients`] whole.
 #[inline(always)]
 fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit4 {
     let k = widen10::<L>(&q.coeffs);
