@@ -8,24 +8,30 @@
 use super::{Quadric, QuadricHit, lanes, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
-use crate::num::certify::{certify, certify_end, flush_prone4, results_stand, subnormals_work};
+use crate::num::certify::{
+    certify, certify_end, flush_prone4, narrow_exact, results_stand, subnormals_work, widen_lanes,
+};
 use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::Ray4;
 use crate::ray4::class::{ALL, NONE, ONE, TWO};
 use wide::bytemuck::cast;
 use wide::{f32x4, i32x4};
 
-/// Four quadrics, structure-of-arrays: one `f32x4` per coefficient.
+/// Four quadrics, structure-of-arrays, one lane per quadric for each
+/// coefficient, held as f64 lanes: widened once when packed (exactly, with
+/// integer arithmetic, so that denormals-are-zero at that moment changes
+/// nothing), so that each packet's call loads them as they are.
 ///
 /// ```
 /// use rayoracle::quadric::{Quadric, x4::Quadric4};
 /// let q = Quadric4::splat(&Quadric::new([1.0; 10]));
-/// assert_eq!(q.coeffs[9].to_array(), [1.0; 4]);
+/// assert_eq!(q.coeffs()[9].to_array(), [1.0; 4]);
 /// ```
 #[derive(Clone, Copy, Debug)]
+#[repr(align(32))]
 pub struct Quadric4 {
-    /// `[A … J]`, lane `i` from quadric `i`.
-    pub coeffs: [f32x4; 10],
+    /// `[A … J]` in f64, lane `i` from quadric `i`.
+    wide: [[f64; 4]; 10],
 }
 
 impl Quadric4 {
@@ -34,21 +40,51 @@ impl Quadric4 {
     /// ```
     /// use rayoracle::quadric::{Quadric, x4::Quadric4};
     /// let q = [0.0, 1.0, 2.0, 3.0].map(|j| Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, j]));
-    /// assert_eq!(Quadric4::from_quadrics(q).coeffs[9].to_array(), [0.0, 1.0, 2.0, 3.0]);
+    /// assert_eq!(Quadric4::from_quadrics(q).coeffs()[9].to_array(), [0.0, 1.0, 2.0, 3.0]);
     /// ```
     pub fn from_quadrics(q: [Quadric; 4]) -> Quadric4 {
         Quadric4 {
-            coeffs: core::array::from_fn(|k| f32x4::from(q.map(|q| q.coeffs[k]))),
+            wide: core::array::from_fn(|k| widen_lanes(f32x4::from(q.map(|q| q.coeffs[k])))),
         }
+    }
+    /// `[A … J]` as given, lane `i` from quadric `i` (narrowed exactly,
+    /// whatever the environment; a signalling NaN comes back quiet).
+    ///
+    /// ```
+    /// use rayoracle::quadric::{Quadric, x4::Quadric4};
+    /// let k = [1e-40, -0.0, 2.5, 0.1, 0.0, 0.0, 0.0, 0.0, 0.0, f32::INFINITY];
+    /// let got = Quadric4::splat(&Quadric::new(k)).coeffs().map(|c| c.to_array()[3].to_bits());
+    /// assert_eq!(got, k.map(f32::to_bits));
+    /// ```
+    pub fn coeffs(&self) -> [f32x4; 10] {
+        self.wide.map(|c| f32x4::from(c.map(narrow_exact)))
     }
     /// The same quadric in every lane.
     ///
     /// ```
     /// use rayoracle::quadric::{Quadric, x4::Quadric4};
-    /// assert_eq!(Quadric4::splat(&Quadric::new([2.0; 10])).coeffs[0].to_array(), [2.0; 4]);
+    /// assert_eq!(Quadric4::splat(&Quadric::new([2.0; 10])).coeffs()[0].to_array(), [2.0; 4]);
     /// ```
     pub fn splat(q: &Quadric) -> Quadric4 {
         Quadric4::from_quadrics([*q; 4])
+    }
+    /// The coefficients in lanes of `L`, written out: `map` over ten lanes
+    /// is not always inlined.
+    #[inline(always)]
+    fn lanes<L: Real4>(&self) -> [L; 10] {
+        let (w, l) = (&self.wide, L::load);
+        [
+            l(&w[0]),
+            l(&w[1]),
+            l(&w[2]),
+            l(&w[3]),
+            l(&w[4]),
+            l(&w[5]),
+            l(&w[6]),
+            l(&w[7]),
+            l(&w[8]),
+            l(&w[9]),
+        ]
     }
 }
 
@@ -165,30 +201,11 @@ pub fn intersect_packets(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
     crate::num::batch::packets_dispatch!(packets_in, rays, q: Quadric4, out: QuadricHit4)
 }
 
-/// The ten coefficients widened, written out: `map` over ten lanes is not
-/// always inlined, and out of line the AVX conversion would be a call.
-#[inline(always)]
-fn widen10<L: Real4>(c: &[f32x4; 10]) -> [L; 10] {
-    let w = L::widen;
-    [
-        w(c[0]),
-        w(c[1]),
-        w(c[2]),
-        w(c[3]),
-        w(c[4]),
-        w(c[5]),
-        w(c[6]),
-        w(c[7]),
-        w(c[8]),
-        w(c[9]),
-    ]
-}
-
 /// [`intersect_packets`] over any eight-lane [`Real8`].
 #[inline(always)]
 fn packets_in<W: Real8>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
     let env = subnormals_work();
-    let k = widen10::<W::Half>(&q.coeffs);
+    let k = q.lanes::<W::Half>();
     let t = W::twice;
     let k2 = [
         t(k[0]),
@@ -320,7 +337,7 @@ fn finish<L: Real4>(
 /// that cancels or a product out of range) takes [`quotients`] whole.
 #[inline(always)]
 fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit4 {
-    let k = widen10::<L>(&q.coeffs);
+    let k = q.lanes::<L>();
     let c = lanes::classes(&k, ray.origin.map(L::widen), ray.dir.map(L::widen), 1.0);
     if L::all(c.none) && env(false) {
         return QuadricHit4::MISS;
@@ -360,7 +377,7 @@ fn decide_sorted<L: Real>(c: &lanes::Classes<L>, f: lanes::Sorted<L>) -> (Decide
 #[cold]
 #[inline(never)]
 fn quotients(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit4 {
-    let k = widen10::<F64x4>(&q.coeffs);
+    let k = q.lanes::<F64x4>();
     let w = F64x4::widen;
     finish(decide(&k, ray.origin.map(w), ray.dir.map(w)), env, ray, q)
 }
@@ -409,7 +426,7 @@ impl QuadricHit4 {
         let [class, t0, t1] = h;
         let (t0, t1): (f32x4, f32x4) = (cast(t0), cast(t1));
         let rays = ray.to_rays();
-        let k = q.coeffs.map(|c| c.to_array());
+        let k = q.coeffs().map(|c| c.to_array());
         let (mut class, mut t0, mut t1) = (class.to_array(), t0.to_array(), t1.to_array());
         let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
