@@ -65,7 +65,7 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
         } else if c.all {
             (QuadricHit::All, Stage::Filter)
         } else {
-            later(ray, quadric, &k, o, d, shrink)
+            later(ray, quadric, shrink)
         };
     }
     let f = stages::roots(c, shrink);
@@ -91,7 +91,7 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
     } else if f.all {
         (QuadricHit::All, Stage::Filter)
     } else {
-        later(ray, quadric, &k, o, d, shrink)
+        later(ray, quadric, shrink)
     }
 }
 
@@ -115,31 +115,20 @@ fn escalate_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, St
     if denormals_are_zero() && needs_probe(&inputs(ray, quadric), &[]) {
         return (exact_stage(ray, quadric), Stage::Exact);
     }
-    let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    later(
-        ray,
-        quadric,
-        &widen(&quadric.coeffs),
-        w(ray.origin),
-        w(ray.dir),
-        shrink,
-    )
+    later(ray, quadric, shrink)
 }
 
-/// [`stages::later`] on inputs already checked by [`needs_probe`] and
-/// widened, then the exact oracle where it gives nothing or a result that
-/// FTZ could have flushed.
+/// [`stages::later`] on inputs already checked by [`needs_probe`], widened
+/// here rather than passed: the fast path would otherwise store the
+/// widened inputs to memory on every call, for a call it rarely makes.
+/// Then the exact oracle where it gives nothing or a result that FTZ could
+/// have flushed.
 #[cold]
 #[inline(never)]
-fn later(
-    ray: &Ray,
-    quadric: &Quadric,
-    k: &[f64; 10],
-    o: [f64; 3],
-    d: [f64; 3],
-    shrink: f64,
-) -> (QuadricHit, Stage) {
-    match stages::later(k, o, d, shrink) {
+fn later(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
+    match stages::later(&k, o, d, shrink) {
         Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
             (exact_stage(ray, quadric), Stage::Exact)
         }
