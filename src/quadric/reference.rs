@@ -68,19 +68,30 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
             later(ray, quadric, shrink)
         };
     }
+    if c.two {
+        // The second root's numerator cancels. Where it is the smaller by
+        // more than a factor 16 its bound, relative to it, is more than
+        // 16 times the first's, and γ/q of `roots` is the form to take.
+        let f = stages::sorted(&c, shrink);
+        if f.t1.abs() * 16.0 >= f.t0.abs() && certify(f.t0, f.r, f.a) && certify(f.t1, f.r, f.a) {
+            return two(ray, quadric, f.t0, f.t1);
+        }
+    }
+    quotients(ray, quadric, c, shrink)
+}
+
+/// The roots by [`stages::roots`], as `q/α` and `γ/q`: for the linear
+/// class, and for two roots that [`stages::sorted`] did not certify.
+#[inline(never)]
+fn quotients(
+    ray: &Ray,
+    quadric: &Quadric,
+    c: stages::Classes<f64>,
+    shrink: f64,
+) -> (QuadricHit, Stage) {
     let f = stages::roots(c, shrink);
     if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
-        if needs_probe(&[], &[f.t0, f.t1]) && !subnormals_work() {
-            return (exact_stage(ray, quadric), Stage::Exact);
-        }
-        // Disjoint enclosures are in the exact order; overlapping ones
-        // round to the same f32.
-        let (t0, t1) = if f.t0 <= f.t1 {
-            (f.t0, f.t1)
-        } else {
-            (f.t1, f.t0)
-        };
-        (QuadricHit::Two(t0 as f32, t1 as f32), Stage::Filter)
+        two(ray, quadric, f.t0, f.t1)
     } else if f.linear && certify(f.t1, f.r1, f.a1) {
         if needs_probe(&[], &[f.t1]) && !subnormals_work() {
             return (exact_stage(ray, quadric), Stage::Exact);
@@ -93,6 +104,19 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
     } else {
         later(ray, quadric, shrink)
     }
+}
+
+/// Two certified roots, sorted, or the oracle's answer where FTZ could
+/// have flushed one.
+#[inline(always)]
+fn two(ray: &Ray, quadric: &Quadric, t0: f64, t1: f64) -> (QuadricHit, Stage) {
+    if needs_probe(&[], &[t0, t1]) && !subnormals_work() {
+        return (exact_stage(ray, quadric), Stage::Exact);
+    }
+    // Disjoint enclosures are in the exact order; overlapping ones round
+    // to the same f32.
+    let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
+    (QuadricHit::Two(t0 as f32, t1 as f32), Stage::Filter)
 }
 
 /// The stages after the filter: f64 arithmetic that proves itself exact

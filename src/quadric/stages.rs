@@ -35,7 +35,9 @@
 //! `E_s = E_Δ/ŝ + 2u ŝ` and `E_q = ½(E_β + E_s) + 2u|q̂|`.
 //!
 //! The roots need `1/α̂` (α̂ taken as 1 where α = 0), `1/q̂` and `1/ŝ`. On
-//! one lane they are three divisions, which run in parallel; on four, where
+//! one lane they are three divisions, which run in parallel (the scalar
+//! reference first tries `sorted`, whose divisions do not wait on `ŝ`);
+//! on four, where
 //! division throughput is what counts, they come from one, `ρ = 1/(q̂α̂ŝ)`:
 //! `1/α̂ = q̂ŝρ`, `1/q̂ = α̂ŝρ`, `1/ŝ = q̂α̂ρ`, each within `4u` relatively.
 //! That product is of degree nine in the inputs and may leave f64's range,
@@ -294,6 +296,88 @@ pub(crate) fn roots<L: Real>(k: Classes<L>, shrink: f64) -> Filtered<L> {
         t1,
         r1,
         a1,
+    }
+}
+
+/// The two roots as `(−β̂ ∓ ŝ)/(2α̂)`, both with one bound: see
+/// [`sorted`].
+pub(crate) struct Sorted {
+    /// `(−β̂ − sign(β̂)ŝ)/(2α̂)`, whose numerator does not cancel: `q̂/α̂`,
+    /// as [`roots`] computes it.
+    pub(crate) t0: f64,
+    /// `(−β̂ + sign(β̂)ŝ)/(2α̂)`, whose numerator may cancel.
+    pub(crate) t1: f64,
+    /// The relative part of either root's error bound.
+    pub(crate) r: f64,
+    /// The absolute part of either root's error bound.
+    pub(crate) a: f64,
+}
+
+/// The scalar reference's roots where the [`classes`] certify two: both
+/// as `(−β̂ ∓ ŝ)/(2α̂)`, with `1/α̂` and `1/Δ̂` divided while the square
+/// root runs, so that no division waits on `ŝ` and the bound waits on it
+/// for one product and one sum. [`roots`] waits on `ŝ` for `1/q̂` and
+/// `1/ŝ`, and its bounds on both. The root whose numerator cancels loses
+/// what cancels, and where it is far smaller than the other (`γ` near 0)
+/// its bound is too wide to certify: the reference then takes [`roots`]'s
+/// `γ/q`. (x4 takes [`roots`], which its throughput favours.)
+///
+/// # The bound
+///
+/// In the notation of the [module](self), where [`Classes::two`] (so
+/// `|α̂| > E_α` and `Δ̂ > E_Δ ≥ 0`):
+///
+/// * `1/α̂` and `1/Δ̂` are each within `u` relatively; `ŝ = fl(√Δ̂)`, and
+///   `E_s = E_Δ/ŝ + 2uŝ` as for [`roots`], evaluated as `ŝ(E_Δ·fl(1/Δ̂) +
+///   2u)`: `1/ŝ = ŝ/ŝ²` and `ŝ² ≥ Δ̂(1 − u)²`, so the product is within
+///   `4u` of `E_Δ/ŝ` relatively, and the widening by `1 + 2⁻³⁰` covers it.
+/// * `n̂ = fl(−β̂ ∓ ŝ)` against `n = −β ∓ √Δ` (the sign of `ŝ` taken
+///   from `β̂`, which pairs the same two roots whatever it is): `|n̂ − n| ≤
+///   u|n̂| + E_β + E_s`.
+/// * `t̂ = fl(n̂·(½·fl(1/α̂)))` (the halving exact) is within `2.01u|t̂|` of
+///   `n̂/(2α̂)`, and with `x = E_α/|α̂|`, `|n̂/(2α̂) − n/(2α)|` is at most
+///   `(|n̂/(2α̂)|x + |n̂ − n|/(2|α̂|))/(1 − x)`, the bound of [`quotient_bound`] with
+///   `E_y = E_α` and `E_x = |n̂ − n|/2`. Where `x < 1/4`, with `1/(1 − x)`
+///   bounded by `1 + 2x` and `u|n̂|/(2|α̂|) ≤ 1.01u|t̂|`: `e ≤ (x(1 + 2x) +
+///   5u)|t̂| + (1 + 2x)(E_β + E_s)/(2|α̂|)`.
+///
+/// The filter uses `r = x(1 + 2x) + 20u` (`∞` where `x ≥ 1/4`) and `a =
+/// (1 + 2x)(E_β + E_s)/(2|α̂|)`, every part widened by `1 + 2⁻³⁰` and
+/// multiplied by `shrink`, as [`roots`] does. `a` is split as `P + ŝQ`,
+/// `P` and `Q` ready before the square root. For the root that does not
+/// cancel this is [`roots`]'s bound on `q̂/α̂`, less its `2u|q̂|/|α̂|`,
+/// which the `20u` covers. `a > 0` (it holds `uŝ/|α̂|`), so a root that
+/// comes out ±0 never certifies: the exact root 0 is left to [`roots`].
+///
+/// # Range
+///
+/// `α̂` is a nonzero sum of products of up to three f32 values, a
+/// multiple of `2⁻⁴⁹⁹` below `2³⁹⁰` in magnitude, so `1/α̂` is finite and
+/// normal. `Δ̂ > 0` may be so small that `1/Δ̂` overflows: `a` is then
+/// infinite or NaN and nothing certifies. Otherwise `a ≥ uŝ|fl(1/α̂)|`,
+/// with `ŝ ≥ 2⁻⁵³⁷`, is at least `2⁻⁹⁸⁰`: no underflow.
+#[inline(always)]
+pub(crate) fn sorted(k: &Classes<f64>, shrink: f64) -> Sorted {
+    let c = |x: f64| x * U * shrink;
+    let (beta, disc) = (k.beta, k.disc);
+    // Both divisions and the square root start together.
+    let (ia, id) = (1.0 / k.alpha, 1.0 / disc);
+    let s = disc.sqrt();
+    let x = k.ea * ia.abs() * SLACK;
+    let g = (1.0 + x + x) * SLACK;
+    let r = if x < 0.25 {
+        x * g + c(20.0)
+    } else {
+        f64::INFINITY
+    };
+    let hg = 0.5 * ia.abs() * g * SLACK;
+    let (p, q) = (k.eb * hg, (k.ed * id * SLACK + c(2.0)) * hg);
+    let (half, ss) = (0.5 * ia, s.copysign(beta));
+    Sorted {
+        t0: (-beta - ss) * half,
+        t1: (ss - beta) * half,
+        r,
+        a: p + s * q,
     }
 }
 
