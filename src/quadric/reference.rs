@@ -68,14 +68,10 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
             later(ray, quadric, shrink)
         };
     }
-    if c.two {
-        // The second root's numerator cancels. Where it is the smaller by
-        // more than a factor 16 its bound, relative to it, is more than
-        // 16 times the first's, and γ/q of `roots` is the form to take.
-        let f = stages::sorted(&c, shrink);
-        if f.t1.abs() * 16.0 >= f.t0.abs() && certify(f.t0, f.r, f.a) && certify(f.t1, f.r, f.a) {
-            return two(ray, quadric, f.t0, f.t1);
-        }
+    if c.two
+        && let Some((t0, t1)) = stages::sorted(&c, shrink)
+    {
+        return two(ray, quadric, t0, t1);
     }
     quotients(ray, quadric, c, shrink)
 }

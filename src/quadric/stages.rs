@@ -36,8 +36,8 @@
 //!
 //! The roots need `1/α̂` (α̂ taken as 1 where α = 0), `1/q̂` and `1/ŝ`. On
 //! one lane they are three divisions, which run in parallel (the scalar
-//! reference first tries `sorted`, whose divisions do not wait on `ŝ`);
-//! on four, where
+//! reference first tries the form `(−β ∓ s)/2α` of `sorted`, whose
+//! divisions do not wait on `ŝ`); on four, where
 //! division throughput is what counts, they come from one, `ρ = 1/(q̂α̂ŝ)`:
 //! `1/α̂ = q̂ŝρ`, `1/q̂ = α̂ŝρ`, `1/ŝ = q̂α̂ρ`, each within `4u` relatively.
 //! That product is of degree nine in the inputs and may leave f64's range,
@@ -224,9 +224,15 @@ pub(crate) struct Classes<L: Real> {
 
 #[inline(always)]
 pub(crate) fn classes<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Classes<L> {
+    classify(coefficients(k, o, d), shrink)
+}
+
+/// The classes from α, β, γ and their magnitude sums.
+#[inline(always)]
+fn classify<L: Real>(coefficients: [(L, L); 3], shrink: f64) -> Classes<L> {
     let c = |x: f64| L::splat(x * U * shrink);
     let zero = L::splat(0.0);
-    let [(alpha, ma), (beta, mb), (gamma, mg)] = coefficients(k, o, d);
+    let [(alpha, ma), (beta, mb), (gamma, mg)] = coefficients;
     let (ea, eb, eg) = (c(12.0) * ma, c(24.0) * mb, c(20.0) * mg);
     let four = L::splat(4.0);
     let disc = beta * beta - four * alpha * gamma;
@@ -299,28 +305,20 @@ pub(crate) fn roots<L: Real>(k: Classes<L>, shrink: f64) -> Filtered<L> {
     }
 }
 
-/// The two roots as `(−β̂ ∓ ŝ)/(2α̂)`, both with one bound: see
-/// [`sorted`].
-pub(crate) struct Sorted {
-    /// `(−β̂ − sign(β̂)ŝ)/(2α̂)`, whose numerator does not cancel: `q̂/α̂`,
-    /// as [`roots`] computes it.
-    pub(crate) t0: f64,
-    /// `(−β̂ + sign(β̂)ŝ)/(2α̂)`, whose numerator may cancel.
-    pub(crate) t1: f64,
-    /// The relative part of either root's error bound.
-    pub(crate) r: f64,
-    /// The absolute part of either root's error bound.
-    pub(crate) a: f64,
-}
-
-/// The scalar reference's roots where the [`classes`] certify two: both
-/// as `(−β̂ ∓ ŝ)/(2α̂)`, with `1/α̂` and `1/Δ̂` divided while the square
-/// root runs, so that no division waits on `ŝ` and the bound waits on it
-/// for one product and one sum. [`roots`] waits on `ŝ` for `1/q̂` and
-/// `1/ŝ`, and its bounds on both. The root whose numerator cancels loses
-/// what cancels, and where it is far smaller than the other (`γ` near 0)
-/// its bound is too wide to certify: the reference then takes [`roots`]'s
-/// `γ/q`. (x4 takes [`roots`], which its throughput favours.)
+/// The scalar reference's roots where the [`classes`] certify two, both
+/// as `(−β̂ ∓ ŝ)/(2α̂)`, certified: `Some((t₀, t₁))` with `t₀ = q̂/α̂`, the
+/// root whose numerator does not cancel, as [`roots`] computes it, and
+/// `t₁` the other, where both certify; `None` otherwise. `1/α̂` and `1/Δ̂`
+/// are divided while the square root runs, so that no division waits on
+/// `ŝ` and the bound waits on it for one product and one sum; [`roots`]
+/// waits on `ŝ` for `1/q̂` and `1/ŝ`, and its bounds on both. (x4 takes
+/// [`roots`], which its throughput favours.)
+///
+/// `t₁`'s numerator cancels: `|t₁/t₀| = ||β̂| − ŝ|/(|β̂| + ŝ)`, below
+/// 1/16 where `Δ̂/β̂²` lies between `(15/17)²` and `(17/15)²`. There its
+/// bound, relative to it, is over 16 times `t₀`'s, and `γ/q` of [`roots`]
+/// is the form to take: `None`, without trying. (That test only chooses
+/// the form.)
 ///
 /// # The bound
 ///
@@ -331,54 +329,63 @@ pub(crate) struct Sorted {
 ///   `E_s = E_Δ/ŝ + 2uŝ` as for [`roots`], evaluated as `ŝ(E_Δ·fl(1/Δ̂) +
 ///   2u)`: `1/ŝ = ŝ/ŝ²` and `ŝ² ≥ Δ̂(1 − u)²`, so the product is within
 ///   `4u` of `E_Δ/ŝ` relatively, and the widening by `1 + 2⁻³⁰` covers it.
-/// * `n̂ = fl(−β̂ ∓ ŝ)` against `n = −β ∓ √Δ` (the sign of `ŝ` taken
-///   from `β̂`, which pairs the same two roots whatever it is): `|n̂ − n| ≤
-///   u|n̂| + E_β + E_s`.
-/// * `t̂ = fl(n̂·(½·fl(1/α̂)))` (the halving exact) is within `2.01u|t̂|` of
-///   `n̂/(2α̂)`, and with `x = E_α/|α̂|`, `|n̂/(2α̂) − n/(2α)|` is at most
-///   `(|n̂/(2α̂)|x + |n̂ − n|/(2|α̂|))/(1 − x)`, the bound of [`quotient_bound`] with
-///   `E_y = E_α` and `E_x = |n̂ − n|/2`. Where `x < 1/4`, with `1/(1 − x)`
-///   bounded by `1 + 2x` and `u|n̂|/(2|α̂|) ≤ 1.01u|t̂|`: `e ≤ (x(1 + 2x) +
-///   5u)|t̂| + (1 + 2x)(E_β + E_s)/(2|α̂|)`.
+/// * `n̂ = fl(|β̂| ± ŝ)` against `n = |β| ± √Δ`, up to the sign of `β̂`
+///   (which pairs the same two roots whatever it is): `|n̂ − n| ≤ u|n̂| +
+///   E_β + E_s`. The roots are `n̂·h` with `h = −sign(β̂)·½·fl(1/α̂)` (the
+///   halving and the sign exact).
+/// * `t̂ = fl(n̂h)` is within `2.01u|t̂|` of `∓n̂/(2α̂)`, and with `x =
+///   E_α/|α̂|`, `|n̂/(2α̂) − n/(2α)|` is at most `(|n̂/(2α̂)|x + |n̂ −
+///   n|/(2|α̂|))/(1 − x)`, the bound of [`quotient_bound`] with `E_y = E_α`
+///   and `E_x = |n̂ − n|/2`. Where `x < 1/4`, with `1/(1 − x)` bounded by
+///   `1 + 2x` and `u|n̂|/(2|α̂|) ≤ 1.01u|t̂|`: `e ≤ (x(1 + 2x) + 5u)|t̂| +
+///   (1 + 2x)(E_β + E_s)/(2|α̂|)`.
 ///
-/// The filter uses `r = x(1 + 2x) + 20u` (`∞` where `x ≥ 1/4`) and `a =
-/// (1 + 2x)(E_β + E_s)/(2|α̂|)`, every part widened by `1 + 2⁻³⁰` and
-/// multiplied by `shrink`, as [`roots`] does. `a` is split as `P + ŝQ`,
-/// `P` and `Q` ready before the square root. For the root that does not
-/// cancel this is [`roots`]'s bound on `q̂/α̂`, less its `2u|q̂|/|α̂|`,
-/// which the `20u` covers. `a > 0` (it holds `uŝ/|α̂|`), so a root that
-/// comes out ±0 never certifies: the exact root 0 is left to [`roots`].
+/// The filter uses `r = x(1 + 2x) + 20u` and `a = (1 + 2x)(E_β +
+/// E_s)/(2|α̂|)`, every part widened by `1 + 2⁻³⁰` and multiplied by
+/// `shrink`, as [`roots`] does, and certifies each root as [`certify`]
+/// does. `a` is split as `P + ŝQ`, `P` and `Q` ready before the square
+/// root. For `t₀` this is [`roots`]'s bound on `q̂/α̂`, less its
+/// `2u|q̂|/|α̂|`, which the `20u` covers. Where `x ≥ 1/4` the filter takes
+/// `r = 1`, which certifies nothing: the enclosure's ends `t̂(1 ∓ w) ∓ a`,
+/// `w > 1`, have opposite signs. So does a root that comes out ±0, since
+/// `a > 0` (it holds `uŝ|fl(1/α̂)|`): the exact root 0 is left to
+/// [`roots`].
 ///
 /// # Range
 ///
 /// `α̂` is a nonzero sum of products of up to three f32 values, a
 /// multiple of `2⁻⁴⁹⁹` below `2³⁹⁰` in magnitude, so `1/α̂` is finite and
-/// normal. `Δ̂ > 0` may be so small that `1/Δ̂` overflows: `a` is then
-/// infinite or NaN and nothing certifies. Otherwise `a ≥ uŝ|fl(1/α̂)|`,
-/// with `ŝ ≥ 2⁻⁵³⁷`, is at least `2⁻⁹⁸⁰`: no underflow.
+/// normal, and the roots are finite. `Δ̂ > 0` may be so small that `1/Δ̂`
+/// overflows: `a` is then infinite, or NaN where `E_Δ` underflowed to 0
+/// (or `shrink` is 0), and nothing certifies. Otherwise `a ≥
+/// uŝ|fl(1/α̂)|`, with `ŝ ≥ 2⁻⁵³⁷`, is at least `2⁻⁹⁸⁰`: no underflow.
 #[inline(always)]
-pub(crate) fn sorted(k: &Classes<f64>, shrink: f64) -> Sorted {
+pub(crate) fn sorted(k: &Classes<f64>, shrink: f64) -> Option<(f64, f64)> {
+    const SIGN: u64 = 1 << 63;
     let c = |x: f64| x * U * shrink;
     let (beta, disc) = (k.beta, k.disc);
     // Both divisions and the square root start together.
     let (ia, id) = (1.0 / k.alpha, 1.0 / disc);
     let s = disc.sqrt();
+    let bb = beta * beta;
+    let apart = 289.0 * disc <= 225.0 * bb || 225.0 * disc >= 289.0 * bb;
     let x = k.ea * ia.abs() * SLACK;
     let g = (1.0 + x + x) * SLACK;
-    let r = if x < 0.25 {
-        x * g + c(20.0)
-    } else {
-        f64::INFINITY
-    };
+    let r = if x < 0.25 { x * g + c(20.0) } else { 1.0 };
+    let w = r + 2f64.powi(-51);
     let hg = 0.5 * ia.abs() * g * SLACK;
     let (p, q) = (k.eb * hg, (k.ed * id * SLACK + c(2.0)) * hg);
-    let (half, ss) = (0.5 * ia, s.copysign(beta));
-    Sorted {
-        t0: (-beta - ss) * half,
-        t1: (ss - beta) * half,
-        r,
-        a: p + s * q,
-    }
+    let h = f64::from_bits((0.5 * ia).to_bits() ^ (beta.to_bits() & SIGN) ^ SIGN);
+    let ab = beta.abs();
+    let (t0, t1) = ((ab + s) * h, (ab - s) * h);
+    let a = p + s * q;
+    // `certify`, both roots at once; `t0`, `t1` and `r` are finite, so
+    // only `a` can make an end NaN.
+    let (a0, a1) = (a.copysign(t0), a.copysign(t1));
+    let same = |lo: f64, hi: f64| (lo as f32).to_bits() == (hi as f32).to_bits();
+    let ok = same(t0 * (1.0 - w) - a0, t0 * (1.0 + w) + a0)
+        & same(t1 * (1.0 - w) - a1, t1 * (1.0 + w) + a1);
+    (apart & ok & !a.is_nan()).then_some((t0, t1))
 }
 
 /// The terms of α, β and γ, each exactly as two words ([`Pair`]): `k·x`
