@@ -58,7 +58,7 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
     }
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
-    let c = stages::classes(&k, o, d, shrink);
+    let c = stages::classes_paired(&k, o, d, shrink);
     if !(c.two || c.linear) {
         return if c.none {
             (QuadricHit::None, Stage::Filter)

@@ -8,7 +8,8 @@
 //! computed values, `E` for error bounds), with f32 inputs exact in f64.
 //! Every term of α, β and γ is a coefficient times one or two inputs: `k·x`
 //! is exact (two f32 values), `k·x·y` rounds once, and the factor 2 of β's
-//! square terms is exact. Summed left to right:
+//! square terms is exact. Summed left to right (the scalar reference sums
+//! them pairwise, through fewer roundings still: `classes_paired`):
 //!
 //! * α, 6 terms: `E_α = γ₆ m_α`;
 //! * β, 12 terms: `E_β = γ₁₂ m_β`;
@@ -225,6 +226,85 @@ pub(crate) struct Classes<L: Real> {
 #[inline(always)]
 pub(crate) fn classes<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Classes<L> {
     classify(coefficients(k, o, d), shrink)
+}
+
+/// [`classes`] for one lane, the scalar reference's: the same terms,
+/// evaluated in the two lanes of an `f64x2` (SSE2, which every x86-64 CPU
+/// has; elsewhere two f64 values) and summed pairwise.
+///
+/// With `X = (d_x, o_x)`, `Y` and `Z` alike, and `X' = (o_x, d_x)`:
+///
+/// * `A·X·X + B·Y·Y + C·Z·Z + D·X·Y + E·X·Z + F·Y·Z` holds α's six
+///   terms in its first lane and γ's six quadratic ones in its second;
+/// * `A·X·X' + … + F·Y·Z'` holds β's twelve products `k·x·y`: each square
+///   term `A·o_x·d_x` once in each lane (`(A·d_x)·o_x` and `(A·o_x)·d_x`
+///   are the same exact product, rounded once), so the sum of the lanes
+///   holds it twice, as β does, and each cross term's two products one in
+///   each lane;
+/// * `G·X + H·Y + I·Z` holds β's three linear terms and γ's, exact.
+///
+/// Six terms summed as `((t₀ + t₁) + (t₂ + t₃)) + (t₄ + t₅)` pass
+/// through three additions each, where the sum left to right takes five
+/// for the first two, and the chain of dependent additions is three long
+/// rather than five. Then `β̂ = (B₀ + L₀) + B₁` and `γ̂ = (Q₁ + L₁) + J`:
+/// a term of α passes through at most 4 roundings (its product's and three
+/// additions), one of β through 6 and one of γ through 6, within the `6`,
+/// `12` and `10` of the [module's bound](self); the magnitudes are summed
+/// the same way. The sums and their magnitudes differ from [`classes`]'s
+/// only by the order of the additions, so a non-finite term makes the same
+/// sums infinite or NaN.
+#[inline(always)]
+pub(crate) fn classes_paired(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Classes<f64> {
+    use wide::f64x2 as P;
+    let kk = |i: usize| P::splat(k[i]);
+    let pair = |a: f64, b: f64| P::from([a, b]);
+    let (x, y, z) = (pair(d[0], o[0]), pair(d[1], o[1]), pair(d[2], o[2]));
+    let (xs, ys, zs) = (pair(o[0], d[0]), pair(o[1], d[1]), pair(o[2], d[2]));
+    // α's and γ's quadratic terms, `k·v·v`, and β's, `k·v·v'`: the
+    // coefficient and the two inputs of each.
+    const QUADRATIC: [(usize, usize, usize); 6] = [
+        (0, 0, 0),
+        (1, 1, 1),
+        (2, 2, 2),
+        (3, 0, 1),
+        (4, 0, 2),
+        (5, 1, 2),
+    ];
+    let (v, vs) = ([x, y, z], [xs, ys, zs]);
+    let (mut quad, mut bil) = ([P::ZERO; 6], [P::ZERO; 6]);
+    for (n, &(c, i, j)) in QUADRATIC.iter().enumerate() {
+        quad[n] = kk(c) * v[i] * v[j];
+        bil[n] = kk(c) * v[i] * vs[j];
+    }
+    let ((q, mq), (b, mb)) = (sum6(quad), sum6(bil));
+    let (l, ml) = sum3([kk(6) * x, kk(7) * y, kk(8) * z]);
+    // Lane by lane, not `array::map`, which is not always inlined: through
+    // memory, the lanes cost store-forwarding stalls.
+    let (q, mq, b, mb) = (q.to_array(), mq.to_array(), b.to_array(), mb.to_array());
+    let w = (pair(b[0], q[1]) + l).to_array();
+    let mw = (pair(mb[0], mq[1]) + ml).to_array();
+    classify(
+        [
+            (q[0], mq[0]),
+            (w[0] + b[1], mw[0] + mb[1]),
+            (w[1] + k[9], mw[1] + k[9].abs()),
+        ],
+        shrink,
+    )
+}
+
+/// Six terms' sum and the sum of their magnitudes, pairwise.
+#[inline(always)]
+fn sum6(t: [wide::f64x2; 6]) -> (wide::f64x2, wide::f64x2) {
+    let s = ((t[0] + t[1]) + (t[2] + t[3])) + (t[4] + t[5]);
+    let m = ((t[0].abs() + t[1].abs()) + (t[2].abs() + t[3].abs())) + (t[4].abs() + t[5].abs());
+    (s, m)
+}
+
+/// Three terms' sum and the sum of their magnitudes.
+#[inline(always)]
+fn sum3(t: [wide::f64x2; 3]) -> (wide::f64x2, wide::f64x2) {
+    ((t[0] + t[1]) + t[2], (t[0].abs() + t[1].abs()) + t[2].abs())
 }
 
 /// The classes from α, β, γ and their magnitude sums.
