@@ -433,12 +433,14 @@ pub(crate) fn roots<L: Real>(k: Classes<L>, shrink: f64) -> Filtered<L> {
 ///
 /// # Range
 ///
-/// `α̂` is a nonzero sum of products of up to three f32 values, a
-/// multiple of `2⁻⁴⁹⁹` below `2³⁹⁰` in magnitude, so `1/α̂` is finite and
-/// normal, and the roots are finite. `Δ̂ > 0` may be so small that `1/Δ̂`
-/// overflows: `a` is then infinite, or NaN where `E_Δ` underflowed to 0
-/// (or `shrink` is 0), and nothing certifies. Otherwise `a ≥
-/// uŝ|fl(1/α̂)|`, with `ŝ ≥ 2⁻⁵³⁷`, is at least `2⁻⁹⁸⁰`: no underflow.
+/// f32 values are multiples of `2⁻¹⁴⁹`, so every term, and `α̂`, `β̂` and
+/// `γ̂`, are multiples of `2⁻⁴⁴⁷`, and `β̂²` and `4α̂γ̂`, where nonzero
+/// (so at least `2⁻⁸⁹⁴`), multiples of `2⁻⁹⁴⁶`: `|α̂|` lies between
+/// `2⁻⁴⁴⁷` and `2³⁹⁰`, and `Δ̂ > 0` is at least `2⁻⁹⁴⁶`. So `1/α̂` and
+/// `1/Δ̂` are finite and normal, the roots finite, `E_Δ/Δ̂ < 1`, every end of an
+/// enclosure is finite (the comparison of bits needs no test for NaN),
+/// and `a ≥ uŝ|fl(1/α̂)|`, with `ŝ ≥ 2⁻⁴⁷³`, is at least `2⁻⁹¹⁶` for
+/// `shrink = 1`: no underflow.
 #[inline(always)]
 pub(crate) fn sorted(k: &Classes<f64>, shrink: f64) -> Option<(f64, f64)> {
     const SIGN: u64 = 1 << 63;
@@ -459,13 +461,12 @@ pub(crate) fn sorted(k: &Classes<f64>, shrink: f64) -> Option<(f64, f64)> {
     let ab = beta.abs();
     let (t0, t1) = ((ab + s) * h, (ab - s) * h);
     let a = p + s * q;
-    // `certify`, both roots at once; `t0`, `t1` and `r` are finite, so
-    // only `a` can make an end NaN.
+    // `certify`, both roots at once, every end finite (Range above).
     let (a0, a1) = (a.copysign(t0), a.copysign(t1));
     let same = |lo: f64, hi: f64| (lo as f32).to_bits() == (hi as f32).to_bits();
     let ok = same(t0 * (1.0 - w) - a0, t0 * (1.0 + w) + a0)
         & same(t1 * (1.0 - w) - a1, t1 * (1.0 + w) + a1);
-    (apart & ok & !a.is_nan()).then_some((t0, t1))
+    (apart & ok).then_some((t0, t1))
 }
 
 /// The terms of α, β and γ, each exactly as two words ([`Pair`]): `k·x`
