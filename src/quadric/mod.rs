@@ -38,10 +38,13 @@
 //! [`reference::intersect`](mod@reference) and [`x4`] return the exact class
 //! and every root correctly rounded to `f32`, for every finite input. The
 //! [filter](stages) evaluates α, β, γ and the discriminant in f64 with the
-//! error bound derived there and certifies what it decides; a double root,
-//! an α that is 0 in exact arithmetic but not term by term, a line on the
-//! surface or a root too close to a rounding boundary goes to the exact
-//! oracle ([`exact`]).
+//! error bound derived there and certifies what it decides (x4's first
+//! pass, [`lanes`], does the same with its own bound); a double root, an
+//! α that is 0 in exact arithmetic but not term by term, a line on the
+//! surface or a root too close to a rounding boundary goes to the later
+//! stages ([`stages::later`]: f64 arithmetic that proves itself exact,
+//! then double words), and what they leave to the exact oracle
+//! ([`exact`]).
 
 pub mod exact;
 pub mod lanes;

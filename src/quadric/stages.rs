@@ -35,10 +35,11 @@
 //! `γ/q` is then the linear root `−γ/β`, with `E_q = E_β`. Otherwise
 //! `E_s = E_Δ/ŝ + 2u ŝ` and `E_q = ½(E_β + E_s) + 2u|q̂|`.
 //!
-//! The roots need `1/α̂` (α̂ taken as 1 where α = 0), `1/q̂` and `1/ŝ`. On
-//! one lane they are three divisions, which run in parallel (the scalar
-//! reference first tries the form `(−β ∓ s)/2α` of `sorted`, whose
-//! divisions do not wait on `ŝ`); on four, where
+//! The roots need `1/α̂` (α̂ taken as 1 where α = 0), `1/q̂` and `1/ŝ`.
+//! Both kernels first try the form `(−β ∓ s)/2α`, whose divisions do not
+//! wait on `ŝ`: the scalar reference in `sorted`, x4 in
+//! [`super::lanes`]; these quotients are what they fall back to. On
+//! one lane they are three divisions, which run in parallel; on four, where
 //! division throughput is what counts, they come from one, `ρ = 1/(q̂α̂ŝ)`:
 //! `1/α̂ = q̂ŝρ`, `1/q̂ = α̂ŝρ`, `1/ŝ = q̂α̂ρ`, each within `4u` relatively.
 //! That product is of degree nine in the inputs and may leave f64's range,
@@ -391,8 +392,10 @@ pub(crate) fn roots<L: Real>(k: Classes<L>, shrink: f64) -> Filtered<L> {
 /// `t₁` the other, where both certify; `None` otherwise. `1/α̂` and `1/Δ̂`
 /// are divided while the square root runs, so that no division waits on
 /// `ŝ` and the bound waits on it for one product and one sum; [`roots`]
-/// waits on `ŝ` for `1/q̂` and `1/ŝ`, and its bounds on both. (x4 takes
-/// [`roots`], which its throughput favours.)
+/// waits on `ŝ` for `1/q̂` and `1/ŝ`, and its bounds on both. (x4's
+/// first pass, [`super::lanes`], takes the same form with one division
+/// for both reciprocals, as division throughput counts more than latency
+/// on four lanes, and [`roots`] for the lanes it leaves.)
 ///
 /// `t₁`'s numerator cancels: `|t₁/t₀| = ||β̂| − ŝ|/(|β̂| + ŝ)`, below
 /// 1/16 where `Δ̂/β̂²` lies between `(15/17)²` and `(17/15)²`. There its
