@@ -29,7 +29,7 @@
 //! about `r·2⁵³` bit patterns on either side of `t`'s. Three integer operations,
 //! exact, replace two products, two conversions and a comparison.
 
-use super::real::Real;
+use super::real::{Real, Real4};
 
 /// The unit roundoff of f64, `u = 2⁻⁵³`.
 pub const U: f64 = f64::EPSILON / 2.0;
@@ -76,6 +76,47 @@ pub fn certify_end<L: Real>(t: L, r: L, a: L) -> (L::Mask, L) {
     let a = a.copysign(t);
     let lo = t * (one - w) - a;
     (L::same_f32(lo, t * (one + w) + a), lo)
+}
+
+/// [`certify_end`] on four lanes, with the answer in `f32` lanes, for
+/// results that must also be normal: the mask as `i32` lanes (−1 where
+/// both ends of the enclosure round to one `f32` that is normal or
+/// infinite) and the first end rounded to `f32`, which is `t`'s correctly
+/// rounded value wherever the mask is set. The ends are [`certify_end`]'s;
+/// their `f32` values are compared as bits (so not −0 against +0), and
+/// the first must be at least `f32::MIN_POSITIVE` in magnitude, an
+/// ordered comparison that also fails for NaN. A lane whose result would
+/// be 0 or subnormal ([`flush_prone4`]) is left undecided, so a caller
+/// whose results must be checked against flush-to-zero has nothing left
+/// to check in the lanes set. The mask stays in the `f32` lanes the test
+/// compares: a caller that wants `f32` results neither widens it to
+/// 64-bit lanes nor narrows it back.
+///
+/// ```
+/// use rayoracle::num::certify::{certify, certify_normal4};
+/// use rayoracle::num::real::{F64x4, Real};
+/// let t = F64x4::from([1.0 / 3.0, 1.0 + f32::EPSILON as f64 / 2.0, -0.1, f64::NAN]);
+/// let (r, a) = (F64x4::splat(2f64.powi(-40)), F64x4::splat(1e-15));
+/// let (ok, end) = certify_normal4(t, r, a);
+/// assert_eq!(ok.to_array(), [-1, 0, -1, 0]);
+/// assert_eq!(ok.to_array().map(|m| m != 0), certify(t, r, a).lanes());
+/// assert_eq!(end.to_array()[0], 1.0f32 / 3.0);
+/// assert_eq!(end.to_array()[2], -0.1f32);
+/// // Certified by `certify`, but 0 and subnormal: left undecided here.
+/// let t = F64x4::from([0.0, 1e-40, -1e-39, f32::MAX as f64 * 4.0]);
+/// let (z, a) = (F64x4::splat(0.0), F64x4::splat(0.0));
+/// assert_eq!(certify(t, z, a).lanes(), [true; 4]);
+/// assert_eq!(certify_normal4(t, z, a).0.to_array(), [0, 0, 0, -1]);
+/// ```
+#[inline(always)]
+pub fn certify_normal4<L: Real4>(t: L, r: L, a: L) -> (wide::i32x4, wide::f32x4) {
+    use wide::bytemuck::cast;
+    let (one, w) = (L::splat(1.0), r + L::splat(2f64.powi(-51)));
+    let a = a.copysign(t);
+    let (lo, hi) = ((t * (one - w) - a).narrow(), (t * (one + w) + a).narrow());
+    let bits = cast::<_, wide::i32x4>(lo).simd_eq(cast::<_, wide::i32x4>(hi));
+    let normal = lo.abs().simd_ge(wide::f32x4::splat(f32::MIN_POSITIVE));
+    (bits & cast::<_, wide::i32x4>(normal), lo)
 }
 
 /// [`certify`] with a relative bound alone, `e = |t|·r`, read from `t`'s

@@ -6,7 +6,9 @@ use super::{Sphere, SphereHit, reference, stages};
 use crate::Ray;
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
-use crate::num::certify::{certify, certify_end, flush_prone4, results_stand, subnormals_work};
+use crate::num::certify::{
+    certify, certify_end, certify_normal4, flush_prone4, results_stand, subnormals_work,
+};
 use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::class::{NONE, ONE, TWO};
 use crate::ray4::{Ray4, gather3};
@@ -185,8 +187,8 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
             continue;
         }
         let [x, y] = decide_sorted(stages::sorted(k, 1.0)).halves();
-        o[0] = finish(x, |_| env, &pk[0], s);
-        o[1] = finish(y, |_| env, &pk[1], s);
+        o[0] = finish(x.packed(), |_| env, &pk[0], s);
+        o[1] = finish(y.packed(), |_| env, &pk[1], s);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
         *o = intersect_in::<W::Half>(one, s, |_| env);
@@ -197,7 +199,7 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
 /// lanes, the lanes done, the lanes whose class is two but whose roots are
 /// not certified yet (the only ones the second pass can decide), and, in
 /// the lanes `two`, values that round to the sorted roots' `f32` values
-/// (anything elsewhere: [`roots`] puts NaN there).
+/// (anything elsewhere: [`Decided::packed`] puts NaN there).
 struct Decided<L: Real> {
     two: L::Mask,
     done: L::Mask,
@@ -231,6 +233,50 @@ impl<W: Real8> Decided<W> {
     }
 }
 
+impl<L: Real4> Decided<L> {
+    /// The decisions in `f32` lanes, as [`Packed`] holds them: a lane
+    /// certified two whose root is 0 or subnormal is left open, for
+    /// [`finish_rest`].
+    #[inline(always)]
+    fn packed(&self) -> Packed {
+        let (lo, hi) = (self.lo.narrow(), self.hi.narrow());
+        let normal = |t: f32x4| cast::<_, i32x4>(t.abs().simd_ge(f32x4::splat(f32::MIN_POSITIVE)));
+        let certified = L::mask_i32(self.two);
+        let two = certified & normal(lo) & normal(hi);
+        // Lanes certified but not normal, moved from done to open.
+        let moved = certified ^ two;
+        Packed {
+            two,
+            done: L::mask_i32(self.done) ^ moved,
+            open: L::mask_i32(self.open) | moved,
+            t0: nan_but(two, lo),
+            t1: nan_but(two, hi),
+        }
+    }
+}
+
+/// A packet's decisions in `f32` lanes, as [`finish`] takes them: the
+/// masks of [`Decided`] as `i32` lanes (−1 where set), and the roots of
+/// the lanes `two`, NaN elsewhere. No root of a lane `two` is 0 or
+/// subnormal (such a lane is left open), so the results of a packet
+/// whose lanes are all done stand wherever denormals-are-zero is off,
+/// flush-to-zero or not.
+#[derive(Clone, Copy)]
+struct Packed {
+    two: i32x4,
+    done: i32x4,
+    open: i32x4,
+    t0: f32x4,
+    t1: f32x4,
+}
+
+/// `t` in the lanes `keep`, NaN elsewhere.
+#[inline(always)]
+fn nan_but(keep: i32x4, t: f32x4) -> f32x4 {
+    let nan: i32x4 = cast(f32x4::splat(f32::NAN));
+    cast(keep.bitselect(cast(t), nan))
+}
+
 /// The first pass over any [`Real`]: [`certify`] on the roots of
 /// [`stages::filter_sorted`], which decides every lane but those with a
 /// root near 0 against the other (and those the filter leaves undecided).
@@ -247,6 +293,27 @@ fn decide_sorted<L: Real>(f: stages::Sorted<L>) -> Decided<L> {
         open: f.two & !two,
         lo,
         hi,
+    }
+}
+
+/// [`decide_sorted`] on one packet, straight into `f32` lanes
+/// ([`certify_normal4`], which leaves a root 0 or subnormal undecided, as
+/// [`Packed`] needs): the masks go to `i32` lanes before the roots are
+/// ready, and the certification's own conversions give the roots, so no
+/// mask is widened to 64-bit lanes and narrowed back on the way from the
+/// roots to the result.
+#[inline(always)]
+fn decide_sorted4<L: Real4>(f: stages::Sorted<L>) -> Packed {
+    let (ok_lo, lo) = certify_normal4(f.lo, f.r, f.a);
+    let (ok_hi, hi) = certify_normal4(f.hi, f.r, f.a);
+    let certain = L::mask_i32(f.two);
+    let two = certain & ok_lo & ok_hi;
+    Packed {
+        two,
+        done: L::mask_i32(f.none) | two,
+        open: certain & !two,
+        t0: nan_but(two, lo),
+        t1: nan_but(two, hi),
     }
 }
 
@@ -268,77 +335,54 @@ fn decide_quotients<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L
     }
 }
 
-/// The roots of the lanes in `two` as `f32`, NaN elsewhere.
-#[inline(always)]
-fn roots<L: Real4>(x: &Decided<L>) -> (i32x4, f32x4, f32x4) {
-    let two = L::mask_i32(x.two);
-    let nan: i32x4 = cast(f32x4::splat(f32::NAN));
-    let root = |t: L| -> f32x4 { cast(two.bitselect(cast(t.narrow()), nan)) };
-    (two, root(x.lo), root(x.hi))
-}
-
 /// The results of one packet; `env(prone)` says whether they stand in the
 /// floating-point environment, `prone` where a root is 0 or subnormal
-/// ([`results_stand`]; asked only where every lane is done).
-/// Lanes the first pass leaves with the class two go to the second
-/// ([`finish_open`]); what is left (an undecided class, an undecided
-/// root) goes to the scalar stages.
+/// ([`results_stand`]), which no root of a lane done is ([`Packed`]). A
+/// packet whose lanes are all done is one test; any other (a lane the
+/// first pass leaves with the class two, an undecided class or root)
+/// goes out of line to [`finish_rest`].
 #[inline(always)]
-fn finish<L: Real4>(
-    x: Decided<L>,
-    env: impl FnOnce(bool) -> bool,
-    ray: &Ray4,
-    s: &Sphere4,
-) -> SphereHit4 {
-    let (two, t0, t1) = roots(&x);
-    let done = L::mask_i32(x.done);
-    if L::all(!x.open) {
-        finish_done(two, done, [t0, t1], env, ray, s)
+fn finish(x: Packed, env: impl Fn(bool) -> bool, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+    if x.done.all() && env(false) {
+        SphereHit4 {
+            class: x.two & i32x4::splat(TWO),
+            t0: x.t0,
+            t1: x.t1,
+        }
     } else {
-        finish_open(two, done, [t0, t1], env, ray, s)
+        finish_rest(x, env, ray, s)
     }
 }
 
-/// The packet's results from the lanes `two` with roots `t`, the lanes
-/// `done`, and the scalar stages for the rest.
-#[inline(always)]
-fn finish_done(
-    two: i32x4,
-    done: i32x4,
-    [t0, t1]: [f32x4; 2],
-    env: impl FnOnce(bool) -> bool,
-    ray: &Ray4,
-    s: &Sphere4,
-) -> SphereHit4 {
+/// [`finish`] for a packet with a lane not done, or with denormals
+/// treated as zero: lanes whose class is two but whose roots the first pass
+/// left go to the second pass ([`decide_quotients`], on the baseline
+/// lanes: the same bits on any), and what is left (an undecided class, an
+/// undecided root) to the scalar stages.
+#[cold]
+#[inline(never)]
+fn finish_rest(x: Packed, env: impl FnOnce(bool) -> bool, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+    let Packed {
+        mut two,
+        mut done,
+        open,
+        mut t0,
+        mut t1,
+    } = x;
+    if open.any() {
+        let (o, d, c, r) = widened::<F64x4>(ray, s);
+        let y = decide_quotients(o, d, c, r).packed();
+        let keep = |a: f32x4, b: f32x4| -> f32x4 { cast(done.bitselect(cast(a), cast(b))) };
+        (t0, t1) = (keep(t0, y.t0), keep(t1, y.t1));
+        two |= y.two & !done;
+        done |= y.done;
+    }
     let class = two & i32x4::splat(TWO);
     if done.all() && env(flush_prone4(t0) || flush_prone4(t1)) {
         SphereHit4 { class, t0, t1 }
     } else {
         SphereHit4::settle([class, cast(t0), cast(t1)], done, ray, s)
     }
-}
-
-/// [`finish`] for a packet with a lane whose class is two but whose roots
-/// the first pass left: the second pass ([`decide_quotients`]) on the
-/// packet, on the baseline lanes (the same bits on any), for the lanes
-/// not done.
-#[cold]
-#[inline(never)]
-fn finish_open(
-    two: i32x4,
-    done: i32x4,
-    [t0, t1]: [f32x4; 2],
-    env: impl FnOnce(bool) -> bool,
-    ray: &Ray4,
-    s: &Sphere4,
-) -> SphereHit4 {
-    let (o, d, c, r) = widened::<F64x4>(ray, s);
-    let y = decide_quotients(o, d, c, r);
-    let (two_y, u0, u1) = roots(&y);
-    let keep = |a: f32x4, b: f32x4| -> f32x4 { cast(done.bitselect(cast(a), cast(b))) };
-    let two = two | (two_y & !done);
-    let done = done | F64x4::mask_i32(y.done);
-    finish_done(two, done, [keep(t0, u0), keep(t1, u1)], env, ray, s)
 }
 
 /// The kernel over any four-lane [`Real4`].
@@ -351,19 +395,7 @@ fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl Fn(bool) -> bool) -
     if L::all(k.none) && env(false) {
         return SphereHit4::MISS;
     }
-    // Nor does one without a lane certified to have two (exact tangents).
-    if L::all(!k.two) {
-        let (no, nan) = (k.two, L::splat(f64::NAN));
-        let x = Decided {
-            two: no,
-            done: k.none,
-            open: no,
-            lo: nan,
-            hi: nan,
-        };
-        return finish(x, env, ray, s);
-    }
-    finish(decide_sorted(stages::sorted(k, 1.0)), env, ray, s)
+    finish(decide_sorted4(stages::sorted(k, 1.0)), env, ray, s)
 }
 
 /// A packet's inputs in f64 lanes.
@@ -531,8 +563,8 @@ mod tests {
     }
 
     /// A packet in which no lane's class is certified (four exact
-    /// tangents) skips the roots and settles every lane in the scalar
-    /// stages: the reference's bits, one packet or in pairs.
+    /// tangents) settles every lane in the scalar stages: the
+    /// reference's bits, one packet or in pairs.
     #[test]
     fn packets_without_a_certain_hit_settle_every_lane() {
         let s = Sphere::new(glam::Vec3::ZERO, 3.0);
@@ -551,6 +583,36 @@ mod tests {
         assert_eq!(want[0], SphereHit::Tangent(5.0));
         let mut out = vec![intersect(&r4, &s4); 3];
         packets_in::<Pair<F64x4>>(&[r4; 3], &s4, &mut out);
+        for h in out
+            .iter()
+            .chain([&intersect(&r4, &s4), &intersect_baseline(&r4, &s4)])
+        {
+            assert!(h.lanes().iter().zip(&want).all(|(x, y)| same_bits(x, y)));
+        }
+    }
+
+    /// Subnormal roots, which the first pass certifies, are left open in
+    /// the `f32` lanes ([`Packed`]) and settled out of line: the
+    /// reference's bits, one packet or in pairs.
+    #[test]
+    fn subnormal_roots_are_left_open_and_settled() {
+        let s = Sphere::new(glam::Vec3::ZERO, 1e-40);
+        let s4 = Sphere4::splat(&s);
+        let ray = |z: f32| crate::Ray::new(glam::Vec3::new(0.0, 0.0, z), glam::Vec3::Z);
+        let rays = [-1e-39, -2e-39, -5.0, -3e-39].map(ray);
+        let r4 = Ray4::from_rays(rays);
+        let (o, d, c, r) = widened::<F64x4>(&r4, &s4);
+        let first = decide_sorted(stages::filter_sorted(o, d, c, r, 1.0));
+        assert_eq!(first.two.lanes(), [true, true, false, true]);
+        let x = decide_sorted4(stages::filter_sorted(o, d, c, r, 1.0));
+        assert_eq!(x.two.to_array(), [0; 4]);
+        assert_eq!(x.open.to_array(), [-1, -1, 0, -1]);
+        assert_eq!(first.packed().open.to_array(), [-1, -1, 0, -1]);
+        let want = rays.map(|r| reference::intersect(&r, &s));
+        assert!(matches!(want[0], SphereHit::Two(t, _) if t.is_subnormal()));
+        let mut out = vec![intersect(&r4, &s4); 3];
+        packets_in::<Pair<F64x4>>(&[r4; 3], &s4, &mut out);
+        intersect_packets(&[r4; 3], &s4, &mut out[1..]);
         for h in out
             .iter()
             .chain([&intersect(&r4, &s4), &intersect_baseline(&r4, &s4)])
