@@ -340,7 +340,7 @@ fn decide_quotients<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L
 /// ([`results_stand`]), which no root of a lane done is ([`Packed`]). A
 /// packet whose lanes are all done is one test; any other (a lane the
 /// first pass leaves with the class two, an undecided class or root)
-/// goes out of line to [`finish_rest`].
+/// starts again out of line, in [`finish_rest`].
 #[inline(always)]
 fn finish(x: Packed, env: impl Fn(bool) -> bool, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
     if x.done.all() && env(false) {
@@ -350,27 +350,28 @@ fn finish(x: Packed, env: impl Fn(bool) -> bool, ray: &Ray4, s: &Sphere4) -> Sph
             t1: x.t1,
         }
     } else {
-        finish_rest(x, env, ray, s)
+        finish_rest(env, ray, s)
     }
 }
 
 /// [`finish`] for a packet with a lane not done, or with denormals
-/// treated as zero: lanes whose class is two but whose roots the first pass
-/// left go to the second pass ([`decide_quotients`], on the baseline
-/// lanes: the same bits on any), and what is left (an undecided class, an
-/// undecided root) to the scalar stages.
+/// treated as zero, from its inputs again, so that nothing of the common
+/// path waits on it: the first pass on the baseline lanes (the same bits
+/// on any), the second ([`decide_quotients`]) for the lanes whose class is
+/// two but whose roots the first left, and the scalar stages for what is
+/// left (an undecided class, an undecided root).
 #[cold]
 #[inline(never)]
-fn finish_rest(x: Packed, env: impl FnOnce(bool) -> bool, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+fn finish_rest(env: impl FnOnce(bool) -> bool, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+    let (o, d, c, r) = widened::<F64x4>(ray, s);
     let Packed {
         mut two,
         mut done,
         open,
         mut t0,
         mut t1,
-    } = x;
+    } = decide_sorted4(stages::filter_sorted(o, d, c, r, 1.0));
     if open.any() {
-        let (o, d, c, r) = widened::<F64x4>(ray, s);
         let y = decide_quotients(o, d, c, r).packed();
         let keep = |a: f32x4, b: f32x4| -> f32x4 { cast(done.bitselect(cast(a), cast(b))) };
         (t0, t1) = (keep(t0, y.t0), keep(t1, y.t1));
