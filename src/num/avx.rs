@@ -286,6 +286,17 @@ impl Real4 for Avx4 {
     fn all(m: AvxMask) -> bool {
         avx!(_mm256_movemask_pd(m.0)) == 0b1111
     }
+    #[inline(always)]
+    fn blend_f32(m: i32x4, a: f32x4, b: f32x4) -> f32x4 {
+        // One `blendvps`, which reads each lane's sign bit: the lanes of
+        // `m` are all ones or all zeros.
+        let (m, a, b) = (
+            cast::<i32x4, __m128>(m),
+            cast::<f32x4, __m128>(a),
+            cast::<f32x4, __m128>(b),
+        );
+        cast::<__m128, f32x4>(avx!(_mm_blendv_ps(b, a, m)))
+    }
 }
 
 #[cfg(test)]
@@ -355,6 +366,16 @@ mod tests {
         assert_eq!(cast::<__m256d, [f64; 4]>(Avx4::load(&w).0), w);
         assert_eq!(cast::<__m256d, [f64; 4]>(y.0), x.to_array().map(f64::from));
         assert_eq!(y.narrow().to_array(), x.to_array());
+        let (m, b) = (i32x4::from([-1, 0, 0, -1]), f32x4::splat(f32::NAN));
+        let bits = |v: f32x4| v.to_array().map(f32::to_bits);
+        assert_eq!(
+            bits(Avx4::blend_f32(m, x, b)),
+            bits(F64x4::blend_f32(m, x, b))
+        );
+        assert_eq!(
+            bits(Avx4::blend_f32(m, x, b))[..2],
+            [0.1f32.to_bits(), f32::NAN.to_bits()]
+        );
     }
 
     /// Every operation gives, lane by lane, the bits of the SSE2 lanes.

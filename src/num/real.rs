@@ -211,6 +211,13 @@ pub trait Real4: Real {
     fn all(m: Self::Mask) -> bool;
     /// Four lanes from memory.
     fn load(x: &[f64; 4]) -> Self;
+    /// `a` in the lanes of `m` set (−1), `b` where clear (0), on `f32`
+    /// lanes of the same width as the mask's.
+    #[inline(always)]
+    fn blend_f32(m: i32x4, a: f32x4, b: f32x4) -> f32x4 {
+        use wide::bytemuck::cast;
+        cast(m.bitselect(cast(a), cast(b)))
+    }
 }
 
 /// Two values of a lane type side by side, operated on together: eight

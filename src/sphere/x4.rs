@@ -187,8 +187,8 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
             continue;
         }
         let [x, y] = decide_sorted(stages::sorted(k, 1.0)).halves();
-        o[0] = finish(x.packed(), |_| env, &pk[0], s);
-        o[1] = finish(y.packed(), |_| env, &pk[1], s);
+        o[0] = finish(x.packed(), env, |_| env, &pk[0], s);
+        o[1] = finish(y.packed(), env, |_| env, &pk[1], s);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
         *o = intersect_in::<W::Half>(one, s, |_| env);
@@ -249,8 +249,8 @@ impl<L: Real4> Decided<L> {
             two,
             done: L::mask_i32(self.done) ^ moved,
             open: L::mask_i32(self.open) | moved,
-            t0: nan_but(two, lo),
-            t1: nan_but(two, hi),
+            t0: nan_but::<L>(two, lo),
+            t1: nan_but::<L>(two, hi),
         }
     }
 }
@@ -270,11 +270,10 @@ struct Packed {
     t1: f32x4,
 }
 
-/// `t` in the lanes `keep`, NaN elsewhere.
+/// `t` in the lanes `keep`, NaN elsewhere, as `L` blends.
 #[inline(always)]
-fn nan_but(keep: i32x4, t: f32x4) -> f32x4 {
-    let nan: i32x4 = cast(f32x4::splat(f32::NAN));
-    cast(keep.bitselect(cast(t), nan))
+fn nan_but<L: Real4>(keep: i32x4, t: f32x4) -> f32x4 {
+    L::blend_f32(keep, t, f32x4::splat(f32::NAN))
 }
 
 /// The first pass over any [`Real`]: [`certify`] on the roots of
@@ -312,8 +311,8 @@ fn decide_sorted4<L: Real4>(f: stages::Sorted<L>) -> Packed {
         two,
         done: L::mask_i32(f.none) | two,
         open: certain & !two,
-        t0: nan_but(two, lo),
-        t1: nan_but(two, hi),
+        t0: nan_but::<L>(two, lo),
+        t1: nan_but::<L>(two, hi),
     }
 }
 
@@ -342,8 +341,14 @@ fn decide_quotients<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L
 /// first pass leaves with the class two, an undecided class or root)
 /// starts again out of line, in [`finish_rest`].
 #[inline(always)]
-fn finish(x: Packed, env: impl Fn(bool) -> bool, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-    if x.done.all() && env(false) {
+fn finish(
+    x: Packed,
+    stands: bool,
+    env: impl Fn(bool) -> bool,
+    ray: &Ray4,
+    s: &Sphere4,
+) -> SphereHit4 {
+    if x.done.all() && stands {
         SphereHit4 {
             class: x.two & i32x4::splat(TWO),
             t0: x.t0,
@@ -390,13 +395,14 @@ fn finish_rest(env: impl FnOnce(bool) -> bool, ray: &Ray4, s: &Sphere4) -> Spher
 #[inline(always)]
 fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl Fn(bool) -> bool) -> SphereHit4 {
     let (o, d, c, r) = widened::<L>(ray, s);
+    let stands = env(false);
     let k = stages::classes(o, d, c, r, 1.0);
     // A packet whose every lane certainly misses needs no roots: coherent
     // rays, such as a camera's, often come so.
-    if L::all(k.none) && env(false) {
+    if L::all(k.none) && stands {
         return SphereHit4::MISS;
     }
-    finish(decide_sorted4(stages::sorted(k, 1.0)), env, ray, s)
+    finish(decide_sorted4(stages::sorted(k, 1.0)), stands, env, ray, s)
 }
 
 /// A packet's inputs in f64 lanes.
