@@ -151,6 +151,10 @@ pub(crate) struct Classes<L: Real> {
     /// `Δ̂`.
     pub(crate) disc: L,
     ed: L,
+    /// Certified: no root by the sign of `Δ̂` (`Δ̂ < −E_Δ`), a subset of
+    /// `none` (where `a = 0`, `Δ̂ = 0 = E_Δ`, or NaN), for an early exit
+    /// that waits on one comparison.
+    pub(crate) miss: L::Mask,
     /// Certified: no root.
     pub(crate) none: L::Mask,
     /// Certified: two roots.
@@ -163,6 +167,7 @@ impl Classes<f64> {
     #[inline(always)]
     pub(crate) fn open(self) -> Classes<f64> {
         Classes {
+            miss: false,
             none: false,
             two: false,
             ..self
@@ -180,6 +185,7 @@ pub(crate) fn classes<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f6
     let disc = b * b - a * cq;
     let ed = L::splat(20.0 * U * shrink) * (mb * mb + a * mc);
     let line = a.gt(L::splat(0.0));
+    let miss = (-ed).gt(disc);
     Classes {
         a,
         b,
@@ -189,7 +195,8 @@ pub(crate) fn classes<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f6
         cq,
         disc,
         ed,
-        none: !line | (-ed).gt(disc),
+        miss,
+        none: !line | miss,
         two: line & disc.gt(ed),
     }
 }

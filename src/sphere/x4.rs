@@ -182,7 +182,7 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
             W::widen3(&pk[0].dir, &pk[1].dir),
         );
         let k = stages::classes(o2, d2, c2, r2, 1.0);
-        if W::all(k.none) && env {
+        if W::all(k.miss) && env {
             o.fill(SphereHit4::MISS);
             continue;
         }
@@ -398,8 +398,10 @@ fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl Fn(bool) -> bool) -
     let stands = env(false);
     let k = stages::classes(o, d, c, r, 1.0);
     // A packet whose every lane certainly misses needs no roots: coherent
-    // rays, such as a camera's, often come so.
-    if L::all(k.none) && stands {
+    // rays, such as a camera's, often come so. The test is on the sign of
+    // Δ̂ alone (a lane without a line, `a = 0`, takes the roots and is
+    // done as `none`), one comparison from Δ̂.
+    if L::all(k.miss) && stands {
         return SphereHit4::MISS;
     }
     finish(decide_sorted4(stages::sorted(k, 1.0)), stands, env, ray, s)
@@ -548,7 +550,7 @@ mod tests {
         let miss = Ray4::from_rays([1.5, 2.0, -3.0, 1.0 + 1e-6].map(ray));
         let mixed = Ray4::from_rays([1.5, 2.0, 0.5, -3.0].map(ray));
         let (o, d, c, r) = widened::<F64x4>(&miss, &s4);
-        assert!(F64x4::all(stages::classes(o, d, c, r, 1.0).none));
+        assert!(F64x4::all(stages::classes(o, d, c, r, 1.0).miss));
         let (o, d, c, r) = widened::<F64x4>(&mixed, &s4);
         assert!(!F64x4::all(stages::classes(o, d, c, r, 1.0).none));
         let packets = [miss, miss, mixed, miss, miss];
