@@ -183,9 +183,12 @@ pub(crate) fn classes<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f6
     let cq = ff - rr;
     let mc = ff + rr;
     let disc = b * b - a * cq;
-    let ed = L::splat(20.0 * U * shrink) * (mb * mb + a * mc);
+    // −E_Δ first, exactly the negation of E_Δ, for `miss`, which the x4
+    // kernels' early exit waits on.
+    let ned = L::splat(-20.0 * U * shrink) * (mb * mb + a * mc);
+    let ed = -ned;
     let line = a.gt(L::splat(0.0));
-    let miss = (-ed).gt(disc);
+    let miss = ned.gt(disc);
     Classes {
         a,
         b,
