@@ -247,7 +247,7 @@ impl<L: Real4> Decided<L> {
         let moved = certified ^ two;
         Packed {
             two,
-            done: L::mask_i32(self.done) ^ moved,
+            left: L::mask_i32(!self.done) | moved,
             open: L::mask_i32(self.open) | moved,
             t0: nan_but::<L>(two, lo),
             t1: nan_but::<L>(two, hi),
@@ -256,15 +256,15 @@ impl<L: Real4> Decided<L> {
 }
 
 /// A packet's decisions in `f32` lanes, as [`finish`] takes them: the
-/// masks of [`Decided`] as `i32` lanes (−1 where set), and the roots of
-/// the lanes `two`, NaN elsewhere. No root of a lane `two` is 0 or
-/// subnormal (such a lane is left open), so the results of a packet
-/// whose lanes are all done stand wherever denormals-are-zero is off,
-/// flush-to-zero or not.
+/// masks of [`Decided`] as `i32` lanes (−1 where set), with the lanes not
+/// done (`left`) in place of those done, and the roots of the lanes
+/// `two`, NaN elsewhere. No root of a lane `two` is 0 or subnormal (such
+/// a lane is left open), so the results of a packet with no lane left
+/// stand wherever denormals-are-zero is off, flush-to-zero or not.
 #[derive(Clone, Copy)]
 struct Packed {
     two: i32x4,
-    done: i32x4,
+    left: i32x4,
     open: i32x4,
     t0: f32x4,
     t1: f32x4,
@@ -309,7 +309,9 @@ fn decide_sorted4<L: Real4>(f: stages::Sorted<L>) -> Packed {
     let two = certain & ok_lo & ok_hi;
     Packed {
         two,
-        done: L::mask_i32(f.none) | two,
+        // The lanes that may have a root (a line, not `miss`), but not
+        // two certified.
+        left: L::mask_i32(!f.none) & !two,
         open: certain & !two,
         t0: nan_but::<L>(two, lo),
         t1: nan_but::<L>(two, hi),
@@ -348,7 +350,7 @@ fn finish(
     ray: &Ray4,
     s: &Sphere4,
 ) -> SphereHit4 {
-    if x.done.all() && stands {
+    if !x.left.any() && stands {
         SphereHit4 {
             class: x.two & i32x4::splat(TWO),
             t0: x.t0,
@@ -371,17 +373,18 @@ fn finish_rest(env: impl FnOnce(bool) -> bool, ray: &Ray4, s: &Sphere4) -> Spher
     let (o, d, c, r) = widened::<F64x4>(ray, s);
     let Packed {
         mut two,
-        mut done,
+        left,
         open,
         mut t0,
         mut t1,
     } = decide_sorted4(stages::filter_sorted(o, d, c, r, 1.0));
+    let mut done = !left;
     if open.any() {
         let y = decide_quotients(o, d, c, r).packed();
         let keep = |a: f32x4, b: f32x4| -> f32x4 { cast(done.bitselect(cast(a), cast(b))) };
         (t0, t1) = (keep(t0, y.t0), keep(t1, y.t1));
         two |= y.two & !done;
-        done |= y.done;
+        done |= !y.left;
     }
     let class = two & i32x4::splat(TWO);
     if done.all() && env(flush_prone4(t0) || flush_prone4(t1)) {
