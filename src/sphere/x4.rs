@@ -336,12 +336,13 @@ fn decide_quotients<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L
     }
 }
 
-/// The results of one packet; `env(prone)` says whether they stand in the
-/// floating-point environment, `prone` where a root is 0 or subnormal
-/// ([`results_stand`]), which no root of a lane done is ([`Packed`]). A
-/// packet whose lanes are all done is one test; any other (a lane the
-/// first pass leaves with the class two, an undecided class or root)
-/// starts again out of line, in [`finish_rest`].
+/// The results of one packet. `stands` is `env(false)`: whether results
+/// with no root 0 or subnormal, as the lanes done have ([`Packed`]),
+/// stand in the floating-point environment; `env(prone)` says it for
+/// results with such a root ([`results_stand`]). A packet with no lane
+/// left is one test; any other (a lane the first pass leaves with the
+/// class two, an undecided class or root), or one whose results do not
+/// stand, starts again out of line, in [`finish_rest`].
 #[inline(always)]
 fn finish(
     x: Packed,
@@ -365,8 +366,9 @@ fn finish(
 /// treated as zero, from its inputs again, so that nothing of the common
 /// path waits on it: the first pass on the baseline lanes (the same bits
 /// on any), the second ([`decide_quotients`]) for the lanes whose class is
-/// two but whose roots the first left, and the scalar stages for what is
-/// left (an undecided class, an undecided root).
+/// two but whose roots the first left (a root 0 or subnormal included,
+/// which the environment then has to let stand), and the scalar stages
+/// for what is left (an undecided class, an undecided root).
 #[cold]
 #[inline(never)]
 fn finish_rest(env: impl FnOnce(bool) -> bool, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
@@ -380,11 +382,15 @@ fn finish_rest(env: impl FnOnce(bool) -> bool, ray: &Ray4, s: &Sphere4) -> Spher
     } = decide_sorted4(stages::filter_sorted(o, d, c, r, 1.0));
     let mut done = !left;
     if open.any() {
-        let y = decide_quotients(o, d, c, r).packed();
-        let keep = |a: f32x4, b: f32x4| -> f32x4 { cast(done.bitselect(cast(a), cast(b))) };
-        (t0, t1) = (keep(t0, y.t0), keep(t1, y.t1));
-        two |= y.two & !done;
-        done |= !y.left;
+        let y = decide_quotients(o, d, c, r);
+        let two_y = F64x4::mask_i32(y.two);
+        let keep = |a: f32x4, t: F64x4| -> f32x4 {
+            let b = nan_but::<F64x4>(two_y, t.narrow());
+            cast(done.bitselect(cast(a), cast(b)))
+        };
+        (t0, t1) = (keep(t0, y.lo), keep(t1, y.hi));
+        two |= two_y & !done;
+        done |= F64x4::mask_i32(y.done);
     }
     let class = two & i32x4::splat(TWO);
     if done.all() && env(flush_prone4(t0) || flush_prone4(t1)) {
@@ -604,7 +610,7 @@ mod tests {
     }
 
     /// Subnormal roots, which the first pass certifies, are left open in
-    /// the `f32` lanes ([`Packed`]) and settled out of line: the
+    /// the `f32` lanes ([`Packed`]) and decided out of line: the
     /// reference's bits, one packet or in pairs.
     #[test]
     fn subnormal_roots_are_left_open_and_settled() {
