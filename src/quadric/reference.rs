@@ -147,8 +147,8 @@ fn escalate_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, St
 #[inline(never)]
 fn later(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
-    match stages::later(&k, o, d, shrink) {
+    let inputs = || (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
+    match stages::later_of(inputs, shrink) {
         Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
             (exact_stage(ray, quadric), Stage::Exact)
         }

@@ -993,17 +993,27 @@ fn later_bounded<P: Product>(t: &ExactTerms, shrink: f64) -> Option<(QuadricHit,
 /// assert!(matches!(later(&k, o, d, 1.0), Some((QuadricHit::One(_), Stage::DoubleWord))));
 /// ```
 pub fn later(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<(QuadricHit, Stage)> {
+    later_of(|| (*k, o, d), shrink)
+}
+
+/// [`later`] on the inputs that `inputs` gives, called inside the copy
+/// that runs: the reference passes its `f32` data, widened there, since
+/// `f64` values stored by one function and read back by the other as
+/// vectors would stall store forwarding.
+#[inline(always)]
+pub(crate) fn later_of<I>(inputs: I, shrink: f64) -> Option<(QuadricHit, Stage)>
+where
+    I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
+{
     #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
     if let Some(fma) = Fma::detect() {
         #[target_feature(enable = "fma")]
-        fn run(
-            _: Fma,
-            k: &[f64; 10],
-            o: [f64; 3],
-            d: [f64; 3],
-            shrink: f64,
-        ) -> Option<(QuadricHit, Stage)> {
-            later_by::<Fused>(k, o, d, shrink)
+        fn run<I>(_: Fma, inputs: I, shrink: f64) -> Option<(QuadricHit, Stage)>
+        where
+            I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
+        {
+            let (k, o, d) = inputs();
+            later_by::<Fused>(&k, o, d, shrink)
         }
         // SAFETY: the token exists only where the CPU has FMA, the one
         // feature `run` is compiled for. In `rayoracle report` (default
@@ -1011,9 +1021,10 @@ pub fn later(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<(Qu
         // reference took 228.7 against 257.0 ns/ray on
         // quadric/double-plane, 200.2 against 219.2 on
         // alpha-near-zero-rotated and 122.6 against 144.1 on cone-apex.
-        return unsafe { run(fma, k, o, d, shrink) };
+        return unsafe { run(fma, inputs, shrink) };
     }
-    later_by::<BuildProduct>(k, o, d, shrink)
+    let (k, o, d) = inputs();
+    later_by::<BuildProduct>(&k, o, d, shrink)
 }
 
 #[cfg(test)]
