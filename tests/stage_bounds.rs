@@ -122,7 +122,7 @@ fn quadric_double_word(c: &Case, s: f64) -> Option<Answer> {
 
 fn quadric_x4_sorted(c: &Case, s: f64) -> Option<Answer> {
     let Case::Quadric(r, q) = c else { return None };
-    quadric::x4::first_pass_shrunk(r, q, s).map(|h| answer(&h))
+    quadric::x4::first_pass_shrunk(r, q, s, s).map(|h| answer(&h))
 }
 
 const STAGES: [Staged; 8] = [

@@ -67,8 +67,11 @@
 //! E_s)/2|α̂|` to first order (`4.01u` from `t̂`'s roundings, `1.01u(1 +
 //! 2⁻⁹)` from `n̂`'s). The pass uses `r = (1 + 2⁻⁹)w + 20u` and `a = (1 +
 //! 2⁻⁹)(E_β + E_s)/2|α̂|`, each factor widened by `1 + 2⁻³⁰`, which covers the
-//! roundings of `ι`, `ŝ|ρ|` and of the bound's own evaluation. `shrink`
-//! multiplies every bound: `E_α`, `E_β`, `E_Δ`, `2uŝ` and `20u`.
+//! roundings of `ι`, `ŝ|ρ|` and of the bound's own evaluation. Two
+//! factors multiply the bounds, for the tests that shrink each on its
+//! own: `shrink` those of the classes (`E_α` against `α̂`, `E_Δ` against
+//! `Δ̂`), `roots` those of the roots (`E_α` in `w`, `E_β`, `E_Δ` in
+//! `E_s`, `2uŝ` and `20u`); the kernels pass 1 for both.
 //!
 //! Rounding is monotone, `ŝ ≥ 0` and `ι > 0`, so the first root is at
 //! most the second without a comparison. A root that cancels (`|n̂|` far
@@ -100,6 +103,7 @@ pub(crate) struct Classes<L: Real> {
     alpha: L,
     beta: L,
     disc: L,
+    /// `E_α`, `E_β` and `E_Δ` as the roots take them.
     ea: L,
     eb: L,
     ed: L,
@@ -143,12 +147,18 @@ fn pairwise<L: Real, const N: usize>(t: [L; N]) -> Summed<L> {
     }
 }
 
-/// The classes of the line `o + t d` on the quadric `k`, every bound
-/// multiplied by `shrink`: the filter's decisions with the
-/// [module](self)'s sums and bounds. The products `k·x` shared by several
-/// terms are taken once.
+/// The classes of the line `o + t d` on the quadric `k`, their bounds
+/// multiplied by `shrink` and those kept for the roots by `roots`: the
+/// filter's decisions with the [module](self)'s sums and bounds. The
+/// products `k·x` shared by several terms are taken once.
 #[inline(always)]
-pub(crate) fn classes<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Classes<L> {
+pub(crate) fn classes<L: Real>(
+    k: &[L; 10],
+    o: [L; 3],
+    d: [L; 3],
+    shrink: f64,
+    roots: f64,
+) -> Classes<L> {
     // The exact products of two f32 values, each used by two terms or more.
     let (k0d0, k0o0) = (k[0] * d[0], k[0] * o[0]);
     let (k1d1, k1o1) = (k[1] * d[1], k[1] * o[1]);
@@ -191,12 +201,16 @@ pub(crate) fn classes<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -
     let Summed(rest, mrest) = pairwise([l0, l1, l2, k[9]]);
     let (gamma, mg) = (quad + rest, mquad + mrest);
 
-    let c = |x: f64| L::splat(x * U * shrink);
+    // The roots' bounds, then the classes': with the two factors equal (1
+    // in the kernels), the same expressions, taken once.
+    let cr = |x: f64| L::splat(x * U * roots);
     let zero = L::splat(0.0);
-    let (ea, eb) = (c(8.0) * ma, c(12.0) * mb);
+    let (ea, eb) = (cr(8.0) * ma, cr(12.0) * mb);
     let disc = beta * beta - L::splat(4.0) * alpha * gamma;
-    let ed = c(28.0) * mb * mb + c(88.0) * ma * mg;
-    let quadratic = alpha.abs().gt(ea);
+    let ed = cr(28.0) * mb * mb + cr(88.0) * ma * mg;
+    let c = |x: f64| L::splat(x * U * shrink);
+    let (ea_class, ed_class) = (c(8.0) * ma, c(28.0) * mb * mb + c(88.0) * ma * mg);
+    let quadratic = alpha.abs().gt(ea_class);
     Classes {
         alpha,
         beta,
@@ -204,8 +218,8 @@ pub(crate) fn classes<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -
         ea,
         eb,
         ed,
-        two: quadratic & disc.gt(ed),
-        none: quadratic & (-ed).gt(disc),
+        two: quadratic & disc.gt(ed_class),
+        none: quadratic & (-ed_class).gt(disc),
         lin: ma.eq(zero),
     }
 }
@@ -223,11 +237,12 @@ pub(crate) struct Sorted<L: Real> {
 }
 
 /// The roots `(−β ∓ √Δ)/2α`, sorted, and their bound, as the
-/// [module](self) derives them, every bound multiplied by `shrink`;
-/// meaningful in the lanes [`Classes::two`] certifies.
+/// [module](self) derives them, every bound multiplied by `roots` (the
+/// factor [`classes`] took for them too); meaningful in the lanes
+/// [`Classes::two`] certifies.
 #[inline(always)]
-pub(crate) fn sorted<L: Real>(k: &Classes<L>, shrink: f64) -> Sorted<L> {
-    let c = |x: f64| L::splat(x * U * shrink);
+pub(crate) fn sorted<L: Real>(k: &Classes<L>, roots: f64) -> Sorted<L> {
+    let c = |x: f64| L::splat(x * U * roots);
     let one = L::splat(1.0);
     let (alpha, disc) = (k.alpha, k.disc);
     let p = (alpha + alpha) * disc;

@@ -227,7 +227,7 @@ fn packets_in<W: Real8>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
             W::widen3(&pk[0].origin, &pk[1].origin),
             W::widen3(&pk[0].dir, &pk[1].dir),
         );
-        let c = lanes::classes(&k2, o2, d2, 1.0);
+        let c = lanes::classes(&k2, o2, d2, 1.0, 1.0);
         if W::all(c.none) && env {
             o.fill(QuadricHit4::MISS);
             continue;
@@ -338,7 +338,13 @@ fn finish<L: Real4>(
 #[inline(always)]
 fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit4 {
     let k = q.lanes::<L>();
-    let c = lanes::classes(&k, ray.origin.map(L::widen), ray.dir.map(L::widen), 1.0);
+    let c = lanes::classes(
+        &k,
+        ray.origin.map(L::widen),
+        ray.dir.map(L::widen),
+        1.0,
+        1.0,
+    );
     if L::all(c.none) && env(false) {
         return QuadricHit4::MISS;
     }
@@ -382,8 +388,9 @@ fn quotients(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit
     finish(decide(&k, ray.origin.map(w), ray.dir.map(w)), env, ray, q)
 }
 
-/// The first pass of [`intersect`] alone on one line, every bound of
-/// [`lanes`] multiplied by `shrink`: the answer where it certifies one
+/// The first pass of [`intersect`] alone on one line, the bounds of
+/// [`lanes`] multiplied by `shrink` where they decide the class and by
+/// `roots` where they certify the roots: the answer where it certifies one
 /// (two roots or none), `None` where it leaves the line to the quotients
 /// or the scalar stages. Each lane of the kernel
 /// computes the same bits, every operation being one IEEE-754 operation
@@ -395,14 +402,19 @@ fn quotients(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit
 /// use glam::Vec3;
 /// let cyl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
 /// let r = Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X);
-/// assert_eq!(x4::first_pass_shrunk(&r, &cyl, 1.0), Some(QuadricHit::Two(4.0, 6.0)));
+/// assert_eq!(x4::first_pass_shrunk(&r, &cyl, 1.0, 1.0), Some(QuadricHit::Two(4.0, 6.0)));
 /// ```
 #[doc(hidden)]
-pub fn first_pass_shrunk(ray: &crate::Ray, q: &Quadric, shrink: f64) -> Option<QuadricHit> {
+pub fn first_pass_shrunk(
+    ray: &crate::Ray,
+    q: &Quadric,
+    shrink: f64,
+    roots: f64,
+) -> Option<QuadricHit> {
     let w = |v: glam::Vec3| v.to_array().map(f64::from);
     let k = q.coeffs.map(f64::from);
-    let c = lanes::classes(&k, w(ray.origin), w(ray.dir), shrink);
-    let (x, _) = decide_sorted(&c, lanes::sorted(&c, shrink));
+    let c = lanes::classes(&k, w(ray.origin), w(ray.dir), shrink, roots);
+    let (x, _) = decide_sorted(&c, lanes::sorted(&c, roots));
     if x.two {
         Some(QuadricHit::Two(x.lo as f32, x.hi as f32))
     } else {
