@@ -8,7 +8,8 @@
 //! sphere's tight, compensated and double-word stages; the quadric's
 //! double-word stage, and the first pass of its x4 kernel,
 //! `quadric::x4::first_pass_shrunk`) is called alone, every bound it uses multiplied by
-//! a factor `s < 1`, on the cases of
+//! a factor `s < 1` (the x4 first pass twice: its class bounds alone,
+//! `x4-class`, and its roots' bound alone, `x4-roots`), on the cases of
 //! `fixtures/bounds/stages.jsonl`. A seeded hill-climb found them by
 //! maximising the largest `s` at which the stage answers wrong (its
 //! *critical factor*), from seeds whose exact root lies next to an f32
@@ -28,7 +29,9 @@
 //! leading words of `Δ/4` each round by a full half ulp
 //! ([`bounds_search::quadric_rounding_seeds`]); for the quadric's x4
 //! first pass, the cases `bounds.rs` commits for the filter too
-//! (`fixtures/bounds/quadric.jsonl`). The stages with
+//! (`fixtures/bounds/quadric.jsonl`), and for its roots, lines whose `α̂`
+//! cancels after every rounding of its sum went one way
+//! ([`quadric_cancelling_seeds`]). The stages with
 //! arithmetic proven exact (`tracked`, `grid_exact`) have no bound to
 //! shrink.
 //!
@@ -120,12 +123,17 @@ fn quadric_double_word(c: &Case, s: f64) -> Option<Answer> {
     quadric::stages::double_word(&k, w(r.origin), w(r.dir), s).map(|h| answer(&h))
 }
 
-fn quadric_x4_sorted(c: &Case, s: f64) -> Option<Answer> {
+fn quadric_x4_class(c: &Case, s: f64) -> Option<Answer> {
     let Case::Quadric(r, q) = c else { return None };
-    quadric::x4::first_pass_shrunk(r, q, s, s).map(|h| answer(&h))
+    quadric::x4::first_pass_shrunk(r, q, s, 1.0).map(|h| answer(&h))
 }
 
-const STAGES: [Staged; 8] = [
+fn quadric_x4_roots(c: &Case, s: f64) -> Option<Answer> {
+    let Case::Quadric(r, q) = c else { return None };
+    quadric::x4::first_pass_shrunk(r, q, 1.0, s).map(|h| answer(&h))
+}
+
+const STAGES: [Staged; 9] = [
     Staged {
         kind: "plane",
         name: "first",
@@ -163,8 +171,13 @@ const STAGES: [Staged; 8] = [
     },
     Staged {
         kind: "quadric",
-        name: "x4-sorted",
-        run: quadric_x4_sorted,
+        name: "x4-class",
+        run: quadric_x4_class,
+    },
+    Staged {
+        kind: "quadric",
+        name: "x4-roots",
+        run: quadric_x4_roots,
     },
 ];
 
@@ -189,11 +202,15 @@ const STAGES: [Staged; 8] = [
 /// its `Δ/4` rounds by a full half ulp the same way
 /// (`bounds_search::quadric_rounding_seeds`); the sphere's tight stage by
 /// searched cases, its `E_c` that of the filter (see `docs/accuracy.md`).
-/// The quadric's x4 first pass (`quadric::lanes`) by searched double
-/// planes opened by a tiny constant, whose class it takes on the wrong
-/// side of 0 up to about 2^-2.2: its `E_Δ` is twice the first-order proof
-/// and its sums are shorter than the filter's, so fewer roundings add up.
-const CAUGHT_AT: [(&str, f64); 8] = [
+/// The quadric's x4 first pass (`quadric::lanes`), its class bounds
+/// alone, by searched double planes opened by a tiny constant, whose
+/// class it takes on the wrong side of 0 up to about 2^-2.2: its `E_Δ` is
+/// twice the first-order proof and its sums are shorter than the
+/// filter's, so fewer roundings add up; its roots' bound alone at a
+/// quarter, by lines whose `α̂` cancels after every rounding of its sum
+/// went one way ([`quadric_cancelling_seeds`]): the roots are off by
+/// about 0.29 of the relative part `w = E_α/|α̂|` that leads their bound.
+const CAUGHT_AT: [(&str, f64); 9] = [
     ("bounds/plane/first", 0.5),
     ("bounds/plane/second", 0.25),
     ("bounds/plane/tight", 0.25),
@@ -201,7 +218,8 @@ const CAUGHT_AT: [(&str, f64); 8] = [
     ("bounds/sphere/compensated", 0.25),
     ("bounds/sphere/double-word", 0.25),
     ("bounds/quadric/double-word", 0.25),
-    ("bounds/quadric/x4-sorted", 0.125),
+    ("bounds/quadric/x4-class", 0.125),
+    ("bounds/quadric/x4-roots", 0.25),
 ];
 
 impl Staged {
@@ -311,9 +329,14 @@ fn sphere_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
 /// root just inside the midpoint (for `ε > 0`, which moves the computed
 /// roots outward) and, in a second case, just outside it (for `ε < 0`).
 fn sphere_grazing_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
+    gather(rng, n, sphere_grazing)
+}
+
+/// The first `n` cases of as many draws of `one` as that takes.
+fn gather(rng: &mut SmallRng, n: usize, one: fn(&mut SmallRng) -> Vec<Case>) -> Vec<Case> {
     let mut out = Vec::new();
     while out.len() < n {
-        out.extend(sphere_grazing(rng));
+        out.extend(one(rng));
     }
     out.truncate(n);
     out
@@ -366,12 +389,7 @@ fn sphere_grazing(rng: &mut SmallRng) -> Vec<Case> {
 /// about `2⁻³⁶` of it: a bisection on `d₀` finds where the exact root
 /// crosses an f32 rounding midpoint, and both cases beside it are kept.
 fn sphere_near_surface_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
-    let mut out = Vec::new();
-    while out.len() < n {
-        out.extend(sphere_near_surface(rng));
-    }
-    out.truncate(n);
-    out
+    gather(rng, n, sphere_near_surface)
 }
 
 /// One draw of [`sphere_near_surface_seeds`]: `o`, `C`, `R` and the
@@ -457,25 +475,34 @@ fn sphere_near_surface(rng: &mut SmallRng) -> Vec<Case> {
         let d = Vec3::new(f32::from_bits(bits), v[1] as f32, v[2] as f32);
         Case::Sphere(Ray::new(Vec3::from(o), d), Sphere::new(Vec3::from(c), r))
     };
-    // The exact root nearer the origin, as an f32.
-    let near = |bits: u32| match exact(&case(bits)) {
-        Some(("two", t)) => Some(if t[0] & 0x7fff_ffff < t[1] & 0x7fff_ffff {
-            t[0]
-        } else {
-            t[1]
-        }),
+    crossing(
+        case,
+        d0.to_bits() - (1 << 14),
+        d0.to_bits() + (1 << 14),
+        false,
+    )
+}
+
+/// The two cases `case(b)`, `case(b + 1)` between `lo` and `hi` where
+/// the exact root nearer the origin (or, `far`, the other) as an f32
+/// changes, found by bisection; none where it is the same at both ends.
+fn crossing(case: impl Fn(u32) -> Case, mut lo: u32, mut hi: u32, far: bool) -> Vec<Case> {
+    let root = |bits: u32| match exact(&case(bits)) {
+        Some(("two", t)) => {
+            let nearer = t[0] & 0x7fff_ffff < t[1] & 0x7fff_ffff;
+            Some(if nearer != far { t[0] } else { t[1] })
+        }
         _ => None,
     };
-    let (mut lo, mut hi) = (d0.to_bits() - (1 << 14), d0.to_bits() + (1 << 14));
-    let Some(at_lo) = near(lo) else {
+    let Some(at_lo) = root(lo) else {
         return Vec::new();
     };
-    if near(hi) == Some(at_lo) {
+    if root(hi) == Some(at_lo) {
         return Vec::new();
     }
     while hi - lo > 1 {
         let mid = lo + (hi - lo) / 2;
-        if near(mid) == Some(at_lo) {
+        if root(mid) == Some(at_lo) {
             lo = mid;
         } else {
             hi = mid;
@@ -544,6 +571,95 @@ fn quadric_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
         .collect()
 }
 
+/// Lines from the origin (`o = 0`) for the roots of the quadric's x4
+/// first pass, whose bound is mostly `w|t| = E_α|t|/|α̂|` where `α̂`
+/// cancels: `α = ((t₀ + t₁) + (t₂ + t₃)) + (t₄ + t₅)`, summed pairwise as
+/// the pass sums it, each `tᵢ = kᵢ·dⱼ·dₖ` rounding up by at least 0.9 of
+/// a half ulp (of draws of `kᵢ` one ulp apart, the first that does):
+/// `t₀` and `t₂` just above 2 and `t₄` just beyond −4, whose roundings
+/// carry `u m_α` (`m_α ≈ 8`), and `t₁`, `t₃`, `t₅` about `2⁻¹⁰`, drawn so
+/// that `t₀ + t₁`, `t₂ + t₃` (just above 2) and `t₄ + t₅` (just beyond
+/// −4) round up by 0.9 of a half ulp or more, `2u`, `2u` and `4u` at
+/// most, and their sum `X` of the first two rounds up by a tie, `4u`
+/// (a tie rounds to even, so only one level of ties adds up). The last
+/// sum, `X + Y`, is exact and cancels to `2⁻¹⁶ … 2⁻¹²`. Then `α̂` is high
+/// by up to `20u = 2.5u m_α`, and at least about `18.4u`, against `E_α =
+/// 8u m_α`: the computed roots, `n̂/2α̂`, are off by about `0.29w` of
+/// themselves. With `o = 0`, `β = k₆d₀ + k₇d₁` and `γ = k₉`: the root
+/// `−β/α`, about `2¹²`, carries that error, and the other, `−γ/β` of
+/// about `2⁻²`, is far from cancelling (`t₂/t₁ ≈ 2⁻¹⁴`), so that `E_Δ`'s
+/// share of the bound is small. A bisection on `k₇ ≈ 2⁻¹⁸`, which moves
+/// `β` finely, finds where the exact root crosses an f32 rounding
+/// midpoint, and both cases beside it are kept: in one, the computed
+/// root is across it.
+fn quadric_cancelling_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
+    gather(rng, n, quadric_cancelling)
+}
+
+/// One pair of [`quadric_cancelling_seeds`], or none.
+fn quadric_cancelling(rng: &mut SmallRng) -> Vec<Case> {
+    let half = |x: f64| f64::from_bits(x.abs().to_bits() & 0x7ff0_0000_0000_0000) * U;
+    // Whether fl(a + b) is a tie that rounds up.
+    let tie_up = |a: f64, b: f64| {
+        let (s, r) = two_sum(a, b);
+        -r >= half(s)
+    };
+    let d = [0; 3].map(|_| 1.0 + rng.random_range(1..1u32 << 12) as f32 * f32::EPSILON);
+    // fl(k·dᵢ·dⱼ), its magnitude in [|v|, |v|(1 + 2⁻⁸)) and rounding up
+    // by 0.9 of a half ulp or more, with `fits`: the first such `k`
+    // stepping from `v/(dᵢdⱼ)` away from 0.
+    let product = |v: f64, i: usize, j: usize, fits: &dyn Fn(f64) -> bool| {
+        let (di, dj) = (f64::from(d[i]), f64::from(d[j]));
+        let start = ((v / (di * dj)) as f32).to_bits();
+        (0..1u32 << 15).find_map(|step| {
+            let k = f32::from_bits(start + step);
+            let (h, e) = two_prod(f64::from(k) * di, dj);
+            let near = h.abs() >= v.abs() && h.abs() < v.abs() * (1.0 + 2f64.powi(-8));
+            (near && -e >= 0.9 * half(h) && fits(h)).then_some((k, h))
+        })
+    };
+    // Each sum rounds up by 0.9 of a half ulp or more.
+    let up = |a: f64, b: f64| {
+        let (s, r) = two_sum(a, b);
+        -r >= 0.9 * half(s)
+    };
+    let small = 2f64.powi(-10);
+    let Some((k0, t0)) = product(2.0, 0, 0, &|_| true) else {
+        return Vec::new();
+    };
+    let Some((k1, t1)) = product(small, 1, 1, &|h| up(t0, h)) else {
+        return Vec::new();
+    };
+    let Some((k2, t2)) = product(2.0, 2, 2, &|_| true) else {
+        return Vec::new();
+    };
+    let s01 = t0 + t1;
+    let Some((k3, t3)) = product(small, 0, 1, &|h| up(t2, h) && tie_up(s01, t2 + h)) else {
+        return Vec::new();
+    };
+    let x = s01 + (t2 + t3);
+    let Some((k4, t4)) = product(small - x, 0, 2, &|_| true) else {
+        return Vec::new();
+    };
+    // t₅ from 2⁻¹² short of −X − t₄ on, while X + Y stays above 2⁻¹⁶.
+    let fits = |h: f64| up(t4, h) && (2f64.powi(-16)..2f64.powi(-12)).contains(&(x + (t4 + h)));
+    let Some((k5, t5)) = product(2f64.powi(-12) - x - t4, 1, 2, &fits) else {
+        return Vec::new();
+    };
+    let alpha = x + (t4 + t5);
+    // β = k₆d₀ + k₇d₁ with −β/α about 2¹², γ = k₉ with −γ/β about 2⁻².
+    let t = rng.random_range(1.0..2.0) * 2f64.powi(12);
+    let k6 = (-alpha * t / f64::from(d[0])) as f32;
+    let k9 = k6 * rng.random_range(0.25f32..0.5);
+    let case = |bits: u32| {
+        let k7 = f32::from_bits(bits);
+        let k = [k0, k1, k2, k3, k4, k5, k6, k7, 0.0, k9];
+        Case::Quadric(Ray::new(Vec3::ZERO, Vec3::from(d)), Quadric::new(k))
+    };
+    let (lo, hi) = (2f32.powi(-18).to_bits(), 2f32.powi(-17).to_bits());
+    crossing(case, lo, hi, true)
+}
+
 /// The committed cases, as (family, case).
 fn committed() -> Vec<(String, Case)> {
     let path =
@@ -598,8 +714,11 @@ fn seeds(st: &Staged, rng: &mut SmallRng, n: usize) -> Vec<Case> {
             let mut out = [quadric_seeds(rng, n), bounds_search::quadric_seeds(rng, n)].concat();
             // The kernels' searched cases, on the edge of the filter's
             // class and roots, whose bounds the x4 pass shares or mirrors.
-            if name == "x4-sorted" {
+            if name.starts_with("x4") {
                 out.extend(crate::bounds::found("quadric"));
+            }
+            if name == "x4-roots" {
+                out.extend(quadric_cancelling_seeds(rng, n / 16));
             }
             // Double planes whose double-word `Δ̂` rounds by most of its
             // bound: for the long search alone, as above.
@@ -713,16 +832,32 @@ fn the_stage_search_climbs_and_regenerates_on_request() {
     }
 }
 
+/// The stage of `family`.
+fn stage(family: &str) -> &'static Staged {
+    STAGES
+        .iter()
+        .find(|s| s.family() == family)
+        .unwrap_or_else(|| panic!("no stage {family}"))
+}
+
+/// The construction of [`quadric_cancelling_seeds`] works: from a fixed
+/// seed, some of its lines make the x4 first pass's roots wrong with
+/// their bound alone shrunk to a quarter, with no search at all.
+#[test]
+fn the_constructed_cancelling_lines_use_most_of_the_bound() {
+    let st = stage("bounds/quadric/x4-roots");
+    let mut rng = SmallRng::seed_from_u64(0xca9);
+    let cases = quadric_cancelling_seeds(&mut rng, 8);
+    bounds_search::reaches_a_quarter(&cases, |c| st.critical_log2(c));
+}
+
 /// The construction of [`bounds_search::sphere_rounding_up_seeds`] works:
 /// from a fixed seed, some of its lines make the compensated stage answer
 /// two roots where there are none or one with every bound shrunk to a
 /// quarter, with no search at all.
 #[test]
 fn the_constructed_misses_use_most_of_the_bound() {
-    let st = STAGES
-        .iter()
-        .find(|s| s.family() == "bounds/sphere/compensated")
-        .expect("the compensated stage");
+    let st = stage("bounds/sphere/compensated");
     let mut rng = SmallRng::seed_from_u64(0x5e1);
     let cases = bounds_search::sphere_rounding_up_seeds(&mut rng, 4, 2048);
     bounds_search::reaches_a_quarter(&cases, |c| st.critical_log2(c));
