@@ -204,7 +204,7 @@ const STAGES: [Staged; 9] = [
 /// searched cases, its `E_c` that of the filter (see `docs/accuracy.md`).
 /// The quadric's x4 first pass (`quadric::lanes`), its class bounds
 /// alone, by searched double planes opened by a tiny constant, whose
-/// class it takes on the wrong side of 0 up to about 2^-2.2: its `E_Δ` is
+/// class it takes on the wrong side of 0 up to about 2^-2.0: its `E_Δ` is
 /// twice the first-order proof and its sums are shorter than the
 /// filter's, so fewer roundings add up; its roots' bound alone at a
 /// quarter, by lines whose `α̂` cancels after every rounding of its sum
