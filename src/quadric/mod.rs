@@ -50,6 +50,7 @@ pub mod exact;
 pub mod lanes;
 pub mod plain;
 pub mod reference;
+pub mod square;
 pub mod stages;
 pub mod textbook;
 pub mod x4;

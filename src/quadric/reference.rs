@@ -65,7 +65,7 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
         } else if c.all {
             (QuadricHit::All, Stage::Filter)
         } else {
-            later(ray, quadric, shrink)
+            later(ray, quadric, c.left(), shrink)
         };
     }
     if c.two
@@ -85,7 +85,7 @@ fn quotients(
     c: stages::Classes<f64>,
     shrink: f64,
 ) -> (QuadricHit, Stage) {
-    let f = stages::roots(c, shrink);
+    let f = stages::roots(&c, shrink);
     if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
         two(ray, quadric, f.t0, f.t1)
     } else if f.linear && certify(f.t1, f.r1, f.a1) {
@@ -98,7 +98,7 @@ fn quotients(
     } else if f.all {
         (QuadricHit::All, Stage::Filter)
     } else {
-        later(ray, quadric, shrink)
+        later(ray, quadric, c.left(), shrink)
     }
 }
 
@@ -135,20 +135,42 @@ fn escalate_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, St
     if denormals_are_zero() && needs_probe(&inputs(ray, quadric), &[]) {
         return (exact_stage(ray, quadric), Stage::Exact);
     }
-    later(ray, quadric, shrink)
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
+    later(
+        ray,
+        quadric,
+        stages::classes_paired(&k, o, d, 1.0).left(),
+        shrink,
+    )
 }
 
 /// [`stages::later`] on inputs already checked by [`needs_probe`], widened
 /// here rather than passed: the fast path would otherwise store the
 /// widened inputs to memory on every call, for a call it rarely makes.
 /// Then the exact oracle where it gives nothing or a result that FTZ could
-/// have flushed.
+/// have flushed. The filter's sums ([`stages::Left`]) come as three
+/// pairs, in registers.
+#[inline(always)]
+fn later(ray: &Ray, quadric: &Quadric, left: stages::Left, shrink: f64) -> (QuadricHit, Stage) {
+    later_in(ray, quadric, left.alpha, left.beta, left.gamma, shrink)
+}
+
+/// [`later`], out of line.
 #[cold]
 #[inline(never)]
-fn later(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
+fn later_in(
+    ray: &Ray,
+    quadric: &Quadric,
+    alpha: (f64, f64),
+    beta: (f64, f64),
+    gamma: (f64, f64),
+    shrink: f64,
+) -> (QuadricHit, Stage) {
+    let left = stages::Left { alpha, beta, gamma };
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let inputs = || (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
-    match stages::later_of(inputs, shrink) {
+    match stages::later_of(inputs, left, shrink) {
         Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
             (exact_stage(ray, quadric), Stage::Exact)
         }

@@ -197,7 +197,7 @@ pub fn coefficients<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3]) -> [(L, L); 3] {
 /// ```
 #[inline(always)]
 pub fn filter<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3], shrink: f64) -> Filtered<L> {
-    roots(classes(k, o, d, shrink), shrink)
+    roots(&classes(k, o, d, shrink), shrink)
 }
 
 /// The filter's first half: α, β, γ, `Δ` and their bounds, and the
@@ -213,6 +213,9 @@ pub(crate) struct Classes<L: Real> {
     eb: L,
     eg: L,
     ed: L,
+    ma: L,
+    mb: L,
+    mg: L,
     lin: L::Mask,
     /// Certified: two roots (which still need [`certify`]).
     pub(crate) two: L::Mask,
@@ -222,6 +225,31 @@ pub(crate) struct Classes<L: Real> {
     pub(crate) none: L::Mask,
     /// Certified: every `t`.
     pub(crate) all: L::Mask,
+}
+
+impl Classes<f64> {
+    /// What the later stages take from the filter.
+    #[inline(always)]
+    pub(crate) fn left(&self) -> Left {
+        Left {
+            alpha: (self.alpha, self.ma),
+            beta: (self.beta, self.mb),
+            gamma: (self.gamma, self.mg),
+        }
+    }
+}
+
+/// What the filter leaves the later stages: α̂, β̂ and γ̂, each with the
+/// sum of its terms' magnitudes (`m_α`, `m_β`, `m_γ`), from
+/// [`classes_paired`], which bounds them by its `E_α`, `E_β` and `E_γ`.
+/// Passed between functions that are not inlined as six `f64` arguments,
+/// in registers: a struct goes through memory, where a copy by vector
+/// loads of fields stored one by one stalls store forwarding.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Left {
+    pub(crate) alpha: (f64, f64),
+    pub(crate) beta: (f64, f64),
+    pub(crate) gamma: (f64, f64),
 }
 
 #[inline(always)]
@@ -261,16 +289,7 @@ pub(crate) fn classes_paired(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f6
     let pair = |a: f64, b: f64| P::from([a, b]);
     let (x, y, z) = (pair(d[0], o[0]), pair(d[1], o[1]), pair(d[2], o[2]));
     let (xs, ys, zs) = (pair(o[0], d[0]), pair(o[1], d[1]), pair(o[2], d[2]));
-    // α's and γ's quadratic terms, `k·v·v`, and β's, `k·v·v'`: the
-    // coefficient and the two inputs of each.
-    const QUADRATIC: [(usize, usize, usize); 6] = [
-        (0, 0, 0),
-        (1, 1, 1),
-        (2, 2, 2),
-        (3, 0, 1),
-        (4, 0, 2),
-        (5, 1, 2),
-    ];
+    // α's and γ's quadratic terms, `k·v·v`, and β's, `k·v·v'`.
     let (v, vs) = ([x, y, z], [xs, ys, zs]);
     let (mut quad, mut bil) = ([P::ZERO; 6], [P::ZERO; 6]);
     for (n, &(c, i, j)) in QUADRATIC.iter().enumerate() {
@@ -293,6 +312,17 @@ pub(crate) fn classes_paired(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f6
         shrink,
     )
 }
+
+/// The quadratic terms: the coefficient and the two inputs of each, `k·x·y`
+/// (α's with `x` and `y` from the direction).
+const QUADRATIC: [(usize, usize, usize); 6] = [
+    (0, 0, 0),
+    (1, 1, 1),
+    (2, 2, 2),
+    (3, 0, 1),
+    (4, 0, 2),
+    (5, 1, 2),
+];
 
 /// Six terms' sum and the sum of their magnitudes, pairwise.
 #[inline(always)]
@@ -332,6 +362,9 @@ fn classify<L: Real>(coefficients: [(L, L); 3], shrink: f64) -> Classes<L> {
         eb,
         eg,
         ed,
+        ma,
+        mb,
+        mg,
         lin,
         two: quad & disc.gt(ed),
         linear: lin & beta_clear,
@@ -343,7 +376,7 @@ fn classify<L: Real>(coefficients: [(L, L); 3], shrink: f64) -> Classes<L> {
 /// The filter's second half: the roots and their bounds from the
 /// [`classes`].
 #[inline(always)]
-pub(crate) fn roots<L: Real>(k: Classes<L>, shrink: f64) -> Filtered<L> {
+pub(crate) fn roots<L: Real>(k: &Classes<L>, shrink: f64) -> Filtered<L> {
     let c = |x: f64| L::splat(x * U * shrink);
     let (zero, half, inf) = (L::splat(0.0), L::splat(0.5), L::splat(f64::INFINITY));
     let (beta, gamma, disc, lin) = (k.beta, k.gamma, k.disc, k.lin);
@@ -483,12 +516,17 @@ struct ExactTerms([Pair; 6], [Pair; 12], [Pair; 10], f64);
 impl ExactTerms {
     #[inline(always)]
     fn new<P: Product>(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> ExactTerms {
+        ExactTerms::on::<P>(k, o, d, grid(k, o, d))
+    }
+    /// [`ExactTerms::new`] with the data's [`grid`] already found.
+    #[inline(always)]
+    fn on<P: Product>(k: &[f64; 10], o: [f64; 3], d: [f64; 3], grid: f64) -> ExactTerms {
         let (kp, op, dp) = (pairs(k), pairs(&o), pairs(&d));
         let (a, b, g) = terms(&kp, op, dp, Pair(1.0, 0.0), |c, x, y| {
             let (h, l) = P::two_prod(c.0 * x.0, y.0);
             Pair(h, l)
         });
-        ExactTerms(a, b, g, grid(k, o, d))
+        ExactTerms(a, b, g, grid)
     }
 }
 
@@ -821,10 +859,6 @@ fn double_word_rest<P: Product>(
     (alpha, beta, gamma): (Dd, Dd, Dd),
     shrink: f64,
 ) -> Option<QuadricHit> {
-    let exact = match sums {
-        Sums::Exact(v) => Some(v),
-        _ => None,
-    };
     // Where the grid test fails (data of widely spread exponents), the
     // sums again with every low addition checked.
     let (alpha, beta, gamma) = if alpha.err == 0.0 && beta.err == 0.0 && gamma.err == 0.0 {
@@ -837,6 +871,20 @@ fn double_word_rest<P: Product>(
         };
         (sum(&t.0), sum(&t.1), sum(&t.2))
     };
+    let exact = matches!(sums, Sums::Exact(_));
+    double_word_coefficients::<P>(t.3, exact, (alpha, beta, gamma), shrink)
+}
+
+/// The double-word stage from α, β and γ as double words with their
+/// bounds (`exact` where each is one f64, exactly), on the data's
+/// [`grid`].
+#[inline(always)]
+fn double_word_coefficients<P: Product>(
+    grid: f64,
+    exact: bool,
+    (alpha, beta, gamma): (Dd, Dd, Dd),
+    shrink: f64,
+) -> Option<QuadricHit> {
     // The bounds as derived; `shrink` scales each once, where it decides:
     // the classes through `shrunk`, the roots in `quotient`, `disc_near`'s
     // test and `two_roots`.
@@ -868,7 +916,7 @@ fn double_word_rest<P: Product>(
     // the leading words; the exact sum below only where that fails, and
     // at once where α, β and γ are single exact words (two products).
     let near = disc_near(a, bb, c, 1.0);
-    if exact.is_none() && near.v.abs() > 2.0 * near.e * shrink {
+    if !exact && near.v.abs() > 2.0 * near.e * shrink {
         if near.v < 0.0 {
             return Some(QuadricHit::None);
         }
@@ -879,7 +927,7 @@ fn double_word_rest<P: Product>(
     // β/2's words are multiples of g/2, α's and γ's of g: the products,
     // of g²/4 (at least 2⁻⁸⁹⁶, a normal f64).
     let mut disc = GridAcc::wide();
-    if exact.is_some() {
+    if exact {
         // One word each: the two exact products alone.
         disc.add_pair(P::two_prod(b.hi, b.hi));
         disc.add_pair(P::two_prod(-alpha.hi, gamma.hi));
@@ -887,7 +935,7 @@ fn double_word_rest<P: Product>(
         disc.add_square_by::<P>(b);
         disc.add_dd_prod_by::<P>(alpha.scale(-1.0), gamma);
     }
-    let mut disc = disc.finish(t.3 * t.3 * 0.25);
+    let mut disc = disc.finish(grid * grid * 0.25);
     // As for the coefficients: where exact data fails the grid test, the
     // sum with every low addition checked.
     if disc.err != 0.0 && alpha.err == 0.0 && beta.err == 0.0 && gamma.err == 0.0 {
@@ -939,17 +987,127 @@ pub fn disc_near(a: Approx, b: Approx, c: Approx, shrink: f64) -> Approx {
     Approx { v, e }
 }
 
-/// The stages after the filter, [`tracked`] then [`double_word`], on one
-/// computation of the exact terms, with the products' errors found by `P`;
-/// and the stage that answered.
+/// The tight stage: α exactly, as the sum of its six terms in double
+/// words ([`Acc`], each term exact by TwoProduct), and β and γ as the
+/// filter left them, within its `E_β = 24u m_β` and `E_γ = 20u m_γ`. That
+/// settles a line nearly parallel to an axis of a cylinder or a
+/// paraboloid, whose α cancels below the filter's `E_α` while β and γ are
+/// clear of their bounds:
+///
+/// * α = 0 exactly and `|β̂| > E_β`: the linear root `−γ/β`, the
+///   [`quotient`] of values with bounds;
+/// * α's sign certain: `Δ/4 = (β/2)² − αγ` by [`disc_near`], no root
+///   where it is certainly negative, else the roots by [`two_roots`],
+///   certified.
+///
+/// Every bound is multiplied by `shrink` where it decides. `None` where
+/// nothing is certain.
+///
+/// ```
+/// use rayoracle::quadric::{QuadricHit, stages::tight};
+/// // The cylinder x² + y² = 1 along (1, 0, 2⁻³⁰) from (−2, 0, 0) after
+/// // a rotation that makes α = 1 − 2⁻⁶⁰… cancel in f64: here α = 2⁻⁶⁰
+/// // outright, along (2⁻³⁰, 0, 1).
+/// let cyl = [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+/// let h = tight(&cyl, [-2.0, 0.0, 0.0], [2f64.powi(-30), 0.0, 1.0], 1.0);
+/// assert!(matches!(h, Some(QuadricHit::Two(..))));
+/// ```
+pub fn tight(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<QuadricHit> {
+    tight_by::<Dekker>(k, o, d, &classes_paired(k, o, d, 1.0).left(), shrink)
+}
+
+/// [`tight`] from what the filter left, the products' errors found by `P`.
+#[inline(always)]
+fn tight_by<P: Product>(
+    k: &[f64; 10],
+    _o: [f64; 3],
+    d: [f64; 3],
+    left: &Left,
+    shrink: f64,
+) -> Option<QuadricHit> {
+    let mut acc = Acc::new();
+    for &(c, i, j) in &QUADRATIC {
+        acc.add_pair(P::two_prod(k[c] * d[i], d[j]));
+    }
+    let alpha = acc.finish();
+    let ((beta, mb), (gamma, mg)) = (left.beta, left.gamma);
+    let (eb, eg) = (24.0 * U * mb, 20.0 * U * mg);
+    // Whatever α is, the root near `−γ/β` is within about `E_γ/|γ̂| +
+    // E_β/|β̂|` of it relatively, which must be below 2⁻²⁴ for it to
+    // certify: where it is not (β or γ may be 0, or cancels), the double
+    // words, without computing α.
+    let (b24, g24) = (eb * 16_777_216.0, eg * 16_777_216.0);
+    if !(beta.abs() > b24 && gamma.abs() >= g24) {
+        return None;
+    }
+    let sa = alpha.shrunk(shrink);
+    if sa.is_zero() {
+        let (x, y) = (Approx { v: -gamma, e: eg }, Approx { v: beta, e: eb });
+        return quotient(x, y, shrink).map(QuadricHit::One);
+    }
+    if !sa.sign_known() {
+        return None;
+    }
+    let a = alpha.approx();
+    let (b, c) = (
+        Approx {
+            v: 0.5 * beta,
+            e: 0.5 * eb,
+        },
+        Approx { v: gamma, e: eg },
+    );
+    let near = disc_near(a, b, c, 1.0);
+    if !(near.v.abs() > 2.0 * near.e * shrink) {
+        return None;
+    }
+    if near.v < 0.0 {
+        return Some(QuadricHit::None);
+    }
+    two_roots(a, b, c, near, shrink).map(|(t0, t1)| QuadricHit::Two(t0, t1))
+}
+
+/// The stages after the filter, with the products' errors found by `P`,
+/// and the stage that answered: a perfect square ([`super::square`]);
+/// where the filter's α̂, β̂ and γ̂ are exact, [`tracked`]'s roots and
+/// then [`double_word`] on them; the [`tight`] stage; then [`tracked`] and
+/// [`double_word`] on one computation of the exact terms.
+///
+/// The filter's sums are exact where `(m_α + m_β + m_γ)(1 + 2⁻³⁰) <
+/// 2⁵²g`, `g` the data's [`grid`]: every term is a multiple of `g`, and
+/// the computed magnitudes, each a sum of rounded products, are within
+/// `28u` of the exact ones, so the exact terms' magnitudes sum below
+/// `2⁵²g`. Then each term is below `2⁵³g` and representable, so its
+/// product did not round, and so is every partial sum, in any order.
 #[inline(always)]
 fn later_by<P: Product>(
     k: &[f64; 10],
     o: [f64; 3],
     d: [f64; 3],
+    left: Left,
     shrink: f64,
 ) -> Option<(QuadricHit, Stage)> {
-    let t = ExactTerms::new::<P>(k, o, d);
+    if let Some(h) = super::square::intersect(k, o, d, shrink) {
+        return Some((h, Stage::Tight));
+    }
+    let g = grid(k, o, d);
+    let ((alpha, ma), (beta, mb), (gamma, mg)) = (left.alpha, left.beta, left.gamma);
+    if (ma + mb + mg) * SLACK < g * 4_503_599_627_370_496.0 {
+        if let Some(h) = tracked_roots::<P>(&mut Tracked::new(), alpha, beta, gamma) {
+            return Some((h, Stage::Tracked));
+        }
+        let one = |hi: f64| Dd {
+            hi,
+            lo: 0.0,
+            err: 0.0,
+        };
+        let sums = (one(alpha), one(beta), one(gamma));
+        return double_word_coefficients::<P>(g, true, sums, shrink)
+            .map(|h| (h, Stage::DoubleWord));
+    }
+    if let Some(h) = tight_by::<P>(k, o, d, &left, shrink) {
+        return Some((h, Stage::Tight));
+    }
+    let t = ExactTerms::on::<P>(k, o, d, g);
     // The sums without their running bounds first; the rare data whose
     // grid tests fail takes both stages again with them.
     let sums = match tracked_by::<P, true>(&t, shrink) {
@@ -990,10 +1148,11 @@ fn later_bounded<P: Product>(t: &ExactTerms, shrink: f64) -> Option<(QuadricHit,
 /// assert_eq!(h, Some((QuadricHit::One(1.0), Stage::Tracked)));
 /// let k = [1.0, 0.0, 1.0, 0.0, -2.0, 0.0, 0.0, 0.0, 0.0, 0.0];
 /// let (o, d) = ([0.1f32 as f64, 0.0, 0.0], [0.3f32 as f64, 0.0, 0.1f32 as f64]);
-/// assert!(matches!(later(&k, o, d, 1.0), Some((QuadricHit::One(_), Stage::DoubleWord))));
+/// // A double plane: a perfect square, whose Δ is 0 on every line.
+/// assert!(matches!(later(&k, o, d, 1.0), Some((QuadricHit::One(_), Stage::Tight))));
 /// ```
 pub fn later(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<(QuadricHit, Stage)> {
-    later_of(|| (*k, o, d), shrink)
+    later_of(|| (*k, o, d), classes_paired(k, o, d, 1.0).left(), shrink)
 }
 
 /// [`later`] on the inputs that `inputs` gives, called inside the copy
@@ -1001,19 +1160,32 @@ pub fn later(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<(Qu
 /// `f64` values stored by one function and read back by the other as
 /// vectors would stall store forwarding.
 #[inline(always)]
-pub(crate) fn later_of<I>(inputs: I, shrink: f64) -> Option<(QuadricHit, Stage)>
+pub(crate) fn later_of<I>(inputs: I, left: Left, shrink: f64) -> Option<(QuadricHit, Stage)>
 where
     I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
 {
     #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
     if let Some(fma) = Fma::detect() {
         #[target_feature(enable = "fma")]
-        fn run<I>(_: Fma, inputs: I, shrink: f64) -> Option<(QuadricHit, Stage)>
+        #[allow(clippy::too_many_arguments)]
+        fn run<I>(
+            _: Fma,
+            inputs: I,
+            (alpha, ma): (f64, f64),
+            (beta, mb): (f64, f64),
+            (gamma, mg): (f64, f64),
+            shrink: f64,
+        ) -> Option<(QuadricHit, Stage)>
         where
             I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
         {
             let (k, o, d) = inputs();
-            later_by::<Fused>(&k, o, d, shrink)
+            let left = Left {
+                alpha: (alpha, ma),
+                beta: (beta, mb),
+                gamma: (gamma, mg),
+            };
+            later_by::<Fused>(&k, o, d, left, shrink)
         }
         // SAFETY: the token exists only where the CPU has FMA, the one
         // feature `run` is compiled for. In `rayoracle report` (default
@@ -1021,10 +1193,10 @@ where
         // reference took 228.7 against 257.0 ns/ray on
         // quadric/double-plane, 200.2 against 219.2 on
         // alpha-near-zero-rotated and 122.6 against 144.1 on cone-apex.
-        return unsafe { run(fma, inputs, shrink) };
+        return unsafe { run(fma, inputs, left.alpha, left.beta, left.gamma, shrink) };
     }
     let (k, o, d) = inputs();
-    later_by::<BuildProduct>(&k, o, d, shrink)
+    later_by::<BuildProduct>(&k, o, d, left, shrink)
 }
 
 #[cfg(test)]
