@@ -154,6 +154,28 @@ lanewise!(Sub, sub, _mm256_sub_pd);
 lanewise!(Mul, mul, _mm256_mul_pd);
 lanewise!(Div, div, _mm256_div_pd);
 
+impl Avx4 {
+    /// Four lanes from values in registers, lowest first: built there,
+    /// not stored and loaded back, which would stall store forwarding.
+    #[inline(always)]
+    #[cfg_attr(not(feature = "quadric"), allow(dead_code))]
+    pub(crate) fn new(a: f64, b: f64, c: f64, d: f64) -> Avx4 {
+        Avx4(avx!(_mm256_set_pd(d, c, b, a)))
+    }
+    /// The lanes, lowest first.
+    #[inline(always)]
+    #[cfg_attr(not(feature = "quadric"), allow(dead_code))]
+    pub(crate) fn to_array(self) -> [f64; 4] {
+        cast::<__m256d, [f64; 4]>(self.0)
+    }
+    /// `self·b − c`, rounded once (a fused multiply-subtract).
+    #[inline(always)]
+    #[cfg_attr(not(feature = "quadric"), allow(dead_code))]
+    pub(crate) fn mul_sub(self, b: Avx4, c: Avx4) -> Avx4 {
+        Avx4(avx!(_mm256_fmsub_pd(self.0, b.0, c.0)))
+    }
+}
+
 impl Neg for Avx4 {
     type Output = Avx4;
     #[inline(always)]

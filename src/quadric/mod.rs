@@ -53,6 +53,8 @@ pub mod reference;
 pub mod square;
 pub mod stages;
 pub mod textbook;
+#[cfg(target_arch = "x86_64")]
+mod words;
 pub mod x4;
 
 use crate::Ray;

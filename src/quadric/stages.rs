@@ -61,6 +61,8 @@
 //! subnormals for any finite input. A non-finite input certifies nothing.
 
 use super::QuadricHit;
+#[cfg(target_arch = "x86_64")]
+use crate::num::avx::Avx2;
 use crate::num::certify::{SLACK, U, certify, div, quotient_bound};
 #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
 use crate::num::dd::Fma;
@@ -315,7 +317,7 @@ pub(crate) fn classes_paired(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f6
 
 /// The quadratic terms: the coefficient and the two inputs of each, `k·x·y`
 /// (α's with `x` and `y` from the direction).
-const QUADRATIC: [(usize, usize, usize); 6] = [
+pub(crate) const QUADRATIC: [(usize, usize, usize); 6] = [
     (0, 0, 0),
     (1, 1, 1),
     (2, 2, 2),
@@ -1067,17 +1069,8 @@ fn tight_by<P: Product>(
 }
 
 /// The stages after the filter, with the products' errors found by `P`,
-/// and the stage that answered: a perfect square ([`super::square`]);
-/// where the filter's α̂, β̂ and γ̂ are exact, [`tracked`]'s roots and
-/// then [`double_word`] on them; the [`tight`] stage; then [`tracked`] and
+/// and the stage that answered: [`later_head`], then [`tracked`] and
 /// [`double_word`] on one computation of the exact terms.
-///
-/// The filter's sums are exact where `(m_α + m_β + m_γ)(1 + 2⁻³⁰) <
-/// 2⁵²g`, `g` the data's [`grid`]: every term is a multiple of `g`, and
-/// the computed magnitudes, each a sum of rounded products, are within
-/// `28u` of the exact ones, so the exact terms' magnitudes sum below
-/// `2⁵²g`. Then each term is below `2⁵³g` and representable, so its
-/// product did not round, and so is every partial sum, in any order.
 #[inline(always)]
 fn later_by<P: Product>(
     k: &[f64; 10],
@@ -1086,27 +1079,10 @@ fn later_by<P: Product>(
     left: Left,
     shrink: f64,
 ) -> Option<(QuadricHit, Stage)> {
-    if let Some(h) = super::square::intersect(k, o, d, shrink) {
-        return Some((h, Stage::Tight));
-    }
-    let g = grid(k, o, d);
-    let ((alpha, ma), (beta, mb), (gamma, mg)) = (left.alpha, left.beta, left.gamma);
-    if (ma + mb + mg) * SLACK < g * 4_503_599_627_370_496.0 {
-        if let Some(h) = tracked_roots::<P>(&mut Tracked::new(), alpha, beta, gamma) {
-            return Some((h, Stage::Tracked));
-        }
-        let one = |hi: f64| Dd {
-            hi,
-            lo: 0.0,
-            err: 0.0,
-        };
-        let sums = (one(alpha), one(beta), one(gamma));
-        return double_word_coefficients::<P>(g, true, sums, shrink)
-            .map(|h| (h, Stage::DoubleWord));
-    }
-    if let Some(h) = tight_by::<P>(k, o, d, &left, shrink) {
-        return Some((h, Stage::Tight));
-    }
+    let g = match later_head::<P>(k, o, d, left, shrink) {
+        Ok(h) => return h,
+        Err(g) => g,
+    };
     let t = ExactTerms::on::<P>(k, o, d, g);
     // The sums without their running bounds first; the rare data whose
     // grid tests fail takes both stages again with them.
@@ -1120,6 +1096,78 @@ fn later_by<P: Product>(
         None => return later_bounded::<P>(&t, shrink),
     }
     .map(|h| (h, Stage::DoubleWord))
+}
+
+/// [`later_by`]'s exact sums on a CPU with AVX2 and FMA, after
+/// [`later_head`]: α, β and γ summed exactly on four lanes
+/// ([`super::words`]), then [`tracked`]'s roots where each is one f64,
+/// and the [`double_word`] stage on them. The same sums as [`later_by`]'s,
+/// so the same answers. Out of line, with the inputs widened again here:
+/// inlined, its registers' spills made the head's own loads wait on
+/// stores of other widths (cone-apex 29 against 46 ns a ray in some
+/// builds).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+#[inline(never)]
+fn later_avx<I>(_: Avx2, inputs: &I, g: f64, shrink: f64) -> Option<(QuadricHit, Stage)>
+where
+    I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
+{
+    let (k, o, d) = inputs();
+    let Some([a, b, c]) = super::words::exact(&k, o, d, g) else {
+        return later_bounded::<Fused>(&ExactTerms::on::<Fused>(&k, o, d, g), shrink);
+    };
+    let single = a.lo == 0.0 && b.lo == 0.0 && c.lo == 0.0;
+    if single && let Some(h) = tracked_roots::<Fused>(&mut Tracked::new(), a.hi, b.hi, c.hi) {
+        return Some((h, Stage::Tracked));
+    }
+    double_word_coefficients::<Fused>(g, single, (a, b, c), shrink).map(|h| (h, Stage::DoubleWord))
+}
+
+/// The first of the stages after the filter, with the products' errors
+/// found by `P`: a perfect square ([`super::square`]); where the filter's
+/// α̂, β̂ and γ̂ are exact, [`tracked`]'s roots and then [`double_word`]
+/// on them; the [`tight`] stage. `Ok` with what they decide, or `Err`
+/// with the data's [`grid`] for the stages that sum the exact terms.
+///
+/// The filter's sums are exact where `(m_α + m_β + m_γ)(1 + 2⁻³⁰) <
+/// 2⁵²g`, `g` the data's [`grid`]: every term is a multiple of `g`, and
+/// the computed magnitudes, each a sum of rounded products, are within
+/// `28u` of the exact ones, so the exact terms' magnitudes sum below
+/// `2⁵²g`. Then each term is below `2⁵³g` and representable, so its
+/// product did not round, and so is every partial sum, in any order.
+#[inline(always)]
+#[allow(clippy::type_complexity)]
+fn later_head<P: Product>(
+    k: &[f64; 10],
+    o: [f64; 3],
+    d: [f64; 3],
+    left: Left,
+    shrink: f64,
+) -> Result<Option<(QuadricHit, Stage)>, f64> {
+    if let Some(h) = super::square::intersect(k, o, d, shrink) {
+        return Ok(Some((h, Stage::Tight)));
+    }
+    let g = grid(k, o, d);
+    let ((alpha, ma), (beta, mb), (gamma, mg)) = (left.alpha, left.beta, left.gamma);
+    if (ma + mb + mg) * SLACK < g * 4_503_599_627_370_496.0 {
+        if let Some(h) = tracked_roots::<P>(&mut Tracked::new(), alpha, beta, gamma) {
+            return Ok(Some((h, Stage::Tracked)));
+        }
+        let one = |hi: f64| Dd {
+            hi,
+            lo: 0.0,
+            err: 0.0,
+        };
+        let sums = (one(alpha), one(beta), one(gamma));
+        return Ok(
+            double_word_coefficients::<P>(g, true, sums, shrink).map(|h| (h, Stage::DoubleWord))
+        );
+    }
+    if let Some(h) = tight_by::<P>(k, o, d, &left, shrink) {
+        return Ok(Some((h, Stage::Tight)));
+    }
+    Err(g)
 }
 
 /// [`later_by`] with the running bounds of every sum, out of line: for
@@ -1164,6 +1212,36 @@ pub(crate) fn later_of<I>(inputs: I, left: Left, shrink: f64) -> Option<(Quadric
 where
     I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
 {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(avx2) = Avx2::detect() {
+        #[target_feature(enable = "avx2,fma")]
+        #[allow(clippy::too_many_arguments)]
+        fn run<I>(
+            avx2: Avx2,
+            inputs: I,
+            alpha: (f64, f64),
+            beta: (f64, f64),
+            gamma: (f64, f64),
+            shrink: f64,
+        ) -> Option<(QuadricHit, Stage)>
+        where
+            I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
+        {
+            let (k, o, d) = inputs();
+            let left = Left { alpha, beta, gamma };
+            match later_head::<Fused>(&k, o, d, left, shrink) {
+                Ok(h) => h,
+                Err(g) => later_avx(avx2, &inputs, g, shrink),
+            }
+        }
+        // SAFETY: the token exists only where the CPU has AVX2 and FMA,
+        // the features `run` is compiled for. In `rayoracle report`
+        // (default build, AMD EPYC, interleaved with a build that takes
+        // the copy below, for FMA alone), the reference took 37.9 against
+        // 51.5 ns/ray on quadric/alpha-zero-cylinder, 83.1 against 102.0 on
+        // alpha-near-zero-rotated and 39.3 against 45.3 on double-plane.
+        return unsafe { run(avx2, inputs, left.alpha, left.beta, left.gamma, shrink) };
+    }
     #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
     if let Some(fma) = Fma::detect() {
         #[target_feature(enable = "fma")]
@@ -1171,20 +1249,16 @@ where
         fn run<I>(
             _: Fma,
             inputs: I,
-            (alpha, ma): (f64, f64),
-            (beta, mb): (f64, f64),
-            (gamma, mg): (f64, f64),
+            alpha: (f64, f64),
+            beta: (f64, f64),
+            gamma: (f64, f64),
             shrink: f64,
         ) -> Option<(QuadricHit, Stage)>
         where
             I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
         {
             let (k, o, d) = inputs();
-            let left = Left {
-                alpha: (alpha, ma),
-                beta: (beta, mb),
-                gamma: (gamma, mg),
-            };
+            let left = Left { alpha, beta, gamma };
             later_by::<Fused>(&k, o, d, left, shrink)
         }
         // SAFETY: the token exists only where the CPU has FMA, the one
@@ -1324,6 +1398,73 @@ mod tests {
             let got = crate::num::certify::in_environment(ftz, daz, move || grids(&c));
             check(got, daz, &format!("FTZ {ftz}, DAZ {daz}"));
         }
+    }
+
+    /// The four-lane exact sums (`words::exact`) are the scalar ones
+    /// ([`grid_sums`]): wherever both prove their words exact, the same
+    /// words, on f32 data of every kind (zeros, subnormals, small integers,
+    /// powers of two, any bits) and on integer quadrics crossed by rays of
+    /// spread exponents; and both prove most, and fail some, alike.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn the_four_lane_sums_are_the_scalar_sums() {
+        use crate::num::avx::Avx2;
+        let Some(avx2) = Avx2::detect() else {
+            println!("no AVX2 and FMA: the four-lane sums are not run here");
+            return;
+        };
+        #[target_feature(enable = "avx2,fma")]
+        fn four(_: Avx2, k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> Option<[Dd; 3]> {
+            super::super::words::exact(k, o, d, grid(k, o, d))
+        }
+        let mut rng = SmallRng::seed_from_u64(0x4_1a7e5);
+        let any = |rng: &mut SmallRng| match rng.random_range(0..6) {
+            0 => 0.0,
+            1 => f64::from(f32::from_bits(rng.random_range(1..1 << 23))),
+            2 => f64::from(rng.random_range(-64i32..64)),
+            3 => 2f64.powi(rng.random_range(-60..60)),
+            _ => f64::from(f32::from_bits(
+                rng.random::<u32>() & !(0xff << 23) | rng.random_range(60..190) << 23,
+            )),
+        };
+        let (mut both, mut neither, mut one) = (0, 0, 0);
+        for n in 0..40_000 {
+            let (k, o, d) = if n % 2 == 0 {
+                let k: [f64; 10] = core::array::from_fn(|_| any(&mut rng));
+                (
+                    k,
+                    [0; 3].map(|_| any(&mut rng)),
+                    [0; 3].map(|_| any(&mut rng)),
+                )
+            } else {
+                let k = [0; 10].map(|_| f64::from(rng.random_range(-9i32..10)));
+                let spread = |rng: &mut SmallRng| {
+                    let m = rng.random_range(-(1i32 << 23)..1 << 23) as f32;
+                    f64::from(m * 2f32.powi(rng.random_range(-40..0)))
+                };
+                (
+                    k,
+                    [0; 3].map(|_| spread(&mut rng)),
+                    [0; 3].map(|_| spread(&mut rng)),
+                )
+            };
+            // SAFETY: the token exists only where AVX2 and FMA were
+            // detected, the features `four` is compiled for.
+            let got = unsafe { four(avx2, &k, o, d) };
+            let want = grid_sums::<true>(&ExactTerms::new::<Dekker>(&k, o, d));
+            match (got, want) {
+                (Some(a), Some(b)) => {
+                    assert_eq!(a, b, "{k:?} {o:?} {d:?}");
+                    both += 1;
+                }
+                (None, None) => neither += 1,
+                _ => one += 1,
+            }
+        }
+        assert!(
+            both > 10_000 && neither > 1_000 && one * 100 < both,
+            "{both} {neither} {one}"
+        );
     }
 
     /// The stiff catalogue's quadric cases, in a build with every kind
