@@ -1102,10 +1102,10 @@ fn later_by<P: Product>(
 /// [`later_head`]: α, β and γ summed exactly on four lanes
 /// ([`super::words`]), then [`tracked`]'s roots where each is one f64,
 /// and the [`double_word`] stage on them. The same sums as [`later_by`]'s,
-/// so the same answers. Out of line, with the inputs widened again here:
-/// inlined, its registers' spills made the head's own loads wait on
-/// stores of other widths (cone-apex 29 against 46 ns a ray in some
-/// builds).
+/// so the same answers. The inputs are widened again here, from
+/// `inputs`, rather than passed on: the head's widened values, spilled
+/// and read back at other widths, stalled store forwarding (cone-apex 29
+/// against 46 ns a ray in some builds).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 #[inline(never)]
