@@ -241,6 +241,17 @@ impl Classes<f64> {
     }
 }
 
+impl Left {
+    /// Which of α̂, β̂ and γ̂ are exact as the filter summed them, on the
+    /// data's [`grid`] `g`: those whose terms' magnitudes sum below
+    /// `2⁵²g` ([`later_by`]).
+    #[inline(always)]
+    pub(crate) fn exact(&self, g: f64) -> [bool; 3] {
+        let limit = g * 4_503_599_627_370_496.0;
+        [self.alpha.1, self.beta.1, self.gamma.1].map(|m| m * SLACK < limit)
+    }
+}
+
 /// What the filter leaves the later stages: α̂, β̂ and γ̂, each with the
 /// sum of its terms' magnitudes (`m_α`, `m_β`, `m_γ`), from
 /// [`classes_paired`], which bounds them by its `E_α`, `E_β` and `E_γ`.
@@ -989,13 +1000,17 @@ pub fn disc_near(a: Approx, b: Approx, c: Approx, shrink: f64) -> Approx {
     Approx { v, e }
 }
 
-/// The tight stage: α exactly, as the sum of its six terms in double
-/// words ([`Acc`], each term exact by TwoProduct), and β and γ as the
-/// filter left them, within its `E_β = 24u m_β` and `E_γ = 20u m_γ`. That
-/// settles a line nearly parallel to an axis of a cylinder or a
-/// paraboloid, whose α cancels below the filter's `E_α` while β and γ are
-/// clear of their bounds:
+/// The tight stage: α exactly, and β and γ as the filter left them,
+/// within its `E_β = 24u m_β` and `E_γ = 20u m_γ`. That settles a line
+/// nearly parallel to an axis of a cylinder or a paraboloid, whose α
+/// cancels below the filter's `E_α` while β and γ are clear of their
+/// bounds. A coefficient whose terms' magnitudes sum below `2⁵²g` (`g`
+/// the data's [`grid`]) is exact as the filter summed it, as in
+/// [`later_by`], and its bound is 0; otherwise α is the sum of its six
+/// terms in double words ([`Acc`], each term exact by TwoProduct).
 ///
+/// * α = β = 0, both exact: no root where `|γ̂| > E_γ`, every `t` where
+///   γ is exactly 0 too;
 /// * α = 0 exactly and `|β̂| > E_β`: the linear root `−γ/β`, the
 ///   [`quotient`] of values with bounds;
 /// * α's sign certain: `Δ/4 = (β/2)² − αγ` by [`disc_near`], no root
@@ -1015,7 +1030,8 @@ pub fn disc_near(a: Approx, b: Approx, c: Approx, shrink: f64) -> Approx {
 /// assert!(matches!(h, Some(QuadricHit::Two(..))));
 /// ```
 pub fn tight(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<QuadricHit> {
-    tight_by::<Dekker>(k, o, d, &classes_paired(k, o, d, 1.0).left(), shrink)
+    let left = classes_paired(k, o, d, 1.0).left();
+    tight_by::<Dekker>(k, o, d, &left, left.exact(grid(k, o, d)), shrink)
 }
 
 /// [`tight`] from what the filter left, the products' errors found by `P`.
@@ -1025,15 +1041,19 @@ fn tight_by<P: Product>(
     _o: [f64; 3],
     d: [f64; 3],
     left: &Left,
+    [xa, xb, xg]: [bool; 3],
     shrink: f64,
 ) -> Option<QuadricHit> {
-    let mut acc = Acc::new();
-    for &(c, i, j) in &QUADRATIC {
-        acc.add_pair(P::two_prod(k[c] * d[i], d[j]));
+    let ((alpha, _), (beta, mb), (gamma, mg)) = (left.alpha, left.beta, left.gamma);
+    let bound = |exact: bool, e: f64| if exact { 0.0 } else { e };
+    let (eb, eg) = (bound(xb, 24.0 * U * mb), bound(xg, 20.0 * U * mg));
+    if xa && xb && alpha == 0.0 && beta == 0.0 {
+        return if gamma.abs() > eg * shrink {
+            Some(QuadricHit::None)
+        } else {
+            (xg && gamma == 0.0).then_some(QuadricHit::All)
+        };
     }
-    let alpha = acc.finish();
-    let ((beta, mb), (gamma, mg)) = (left.beta, left.gamma);
-    let (eb, eg) = (24.0 * U * mb, 20.0 * U * mg);
     // Whatever α is, the root near `−γ/β` is within about `E_γ/|γ̂| +
     // E_β/|β̂|` of it relatively, which must be below 2⁻²⁴ for it to
     // certify: where it is not (β or γ may be 0, or cancels), the double
@@ -1042,6 +1062,19 @@ fn tight_by<P: Product>(
     if !(beta.abs() > b24 && gamma.abs() >= g24) {
         return None;
     }
+    let alpha = if xa {
+        Dd {
+            hi: alpha,
+            lo: 0.0,
+            err: 0.0,
+        }
+    } else {
+        let mut acc = Acc::new();
+        for &(c, i, j) in &QUADRATIC {
+            acc.add_pair(P::two_prod(k[c] * d[i], d[j]));
+        }
+        acc.finish()
+    };
     let sa = alpha.shrunk(shrink);
     if sa.is_zero() {
         let (x, y) = (Approx { v: -gamma, e: eg }, Approx { v: beta, e: eb });
@@ -1164,7 +1197,7 @@ fn later_head<P: Product>(
             double_word_coefficients::<P>(g, true, sums, shrink).map(|h| (h, Stage::DoubleWord))
         );
     }
-    if let Some(h) = tight_by::<P>(k, o, d, &left, shrink) {
+    if let Some(h) = tight_by::<P>(k, o, d, &left, left.exact(g), shrink) {
         return Ok(Some((h, Stage::Tight)));
     }
     Err(g)
