@@ -158,35 +158,49 @@ fn status(out: Result<check::CaseReport, check::Violation>) -> Result<Status, St
 
 /// Each stage after the filter, called on its own on every plane, sphere
 /// and quadric case of the catalogue (not only the cases the earlier
-/// stages leave), answers the oracle's bits wherever it answers; and the
-/// double-word stage answers most of the cases of the families it is for.
+/// stages leave), answers the oracle's bits wherever it answers; the
+/// double-word stage answers most of the cases of the families it is for,
+/// the quadric's perfect-square stage (`quadric::square`) nearly every
+/// double plane, and its tight stage a share of the rotated α ≈ 0
+/// cylinders, the lines nearly parallel to an axis it is for.
 #[test]
 fn every_later_stage_alone_matches_the_oracle() {
     use rayoracle::stage::Stage::{self, DoubleWord, Tight, Tracked};
     let w = |v: glam::Vec3| v.to_array().map(f64::from);
     let mut failures = Vec::new();
-    let mut answered = std::collections::BTreeMap::<(&str, Stage), (usize, usize)>::new();
+    // Per family and stage function: (answered right, cases).
+    let mut answered = std::collections::BTreeMap::<(&str, &str), (usize, usize)>::new();
     let c = catalogue();
     for family in &c.families {
         for (i, case) in family.cases.iter().enumerate() {
-            let outs: Vec<(Stage, Option<Result<Status, String>>)> = match case {
+            type Out = Option<Result<Status, String>>;
+            let outs: Vec<(Stage, &str, Out)> = match case {
                 Case::Plane(r, p) => {
                     let (o, d, a, n) = (w(r.origin), w(r.dir), w(p.point), w(p.normal));
                     let ck = |h: Option<_>| h.map(|h| status(check::check_plane(r, p, h)));
                     vec![
-                        (Tight, ck(plane::stages::tight(o, d, a, n, 1.0))),
-                        (DoubleWord, ck(plane::stages::double_word(o, d, a, n, 1.0))),
+                        (Tight, "tight", ck(plane::stages::tight(o, d, a, n, 1.0))),
+                        (
+                            DoubleWord,
+                            "double-word",
+                            ck(plane::stages::double_word(o, d, a, n, 1.0)),
+                        ),
                     ]
                 }
                 Case::Sphere(r, s) => {
                     let (o, d, m, rr) = (w(r.origin), w(r.dir), w(s.center), f64::from(s.radius));
                     let ck = |h: Option<_>| h.map(|h| status(check::check_sphere(r, s, h)));
                     vec![
-                        (Tight, ck(sphere::stages::tight(o, d, m, rr, 1.0))),
-                        (Tight, ck(sphere::stages::compensated(o, d, m, rr, 1.0))),
-                        (Tracked, ck(sphere::stages::tracked(o, d, m, rr))),
+                        (Tight, "tight", ck(sphere::stages::tight(o, d, m, rr, 1.0))),
+                        (
+                            Tight,
+                            "compensated",
+                            ck(sphere::stages::compensated(o, d, m, rr, 1.0)),
+                        ),
+                        (Tracked, "tracked", ck(sphere::stages::tracked(o, d, m, rr))),
                         (
                             Tracked,
+                            "grid-exact",
                             ck(sphere::stages::grid_exact(
                                 r.origin.to_array(),
                                 r.dir.to_array(),
@@ -196,6 +210,7 @@ fn every_later_stage_alone_matches_the_oracle() {
                         ),
                         (
                             DoubleWord,
+                            "double-word",
                             ck(sphere::stages::double_word(o, d, m, rr, 1.0)),
                         ),
                     ]
@@ -204,21 +219,33 @@ fn every_later_stage_alone_matches_the_oracle() {
                     let (k, o, d) = (q.coeffs.map(f64::from), w(r.origin), w(r.dir));
                     let ck = |h: Option<_>| h.map(|h| status(check::check_quadric(r, q, h)));
                     vec![
-                        (Tracked, ck(quadric::stages::tracked(&k, o, d))),
-                        (DoubleWord, ck(quadric::stages::double_word(&k, o, d, 1.0))),
+                        (
+                            Tight,
+                            "square",
+                            ck(quadric::square::intersect(&k, o, d, 1.0)),
+                        ),
+                        (Tight, "tight", ck(quadric::stages::tight(&k, o, d, 1.0))),
+                        (Tracked, "tracked", ck(quadric::stages::tracked(&k, o, d))),
+                        (
+                            DoubleWord,
+                            "double-word",
+                            ck(quadric::stages::double_word(&k, o, d, 1.0)),
+                        ),
                     ]
                 }
                 Case::Camera(..) => continue,
             };
-            for (stage, out) in outs {
-                let e = answered.entry((family.name.as_str(), stage)).or_default();
+            for (stage, name, out) in outs {
+                let e = answered.entry((family.name.as_str(), name)).or_default();
                 e.1 += 1;
                 match out {
                     None => {}
                     Some(Ok(Status::Checked)) => e.0 += 1,
-                    Some(other) => {
-                        failures.push(format!("{} #{i} {}: {other:?}", family.name, stage.name()))
-                    }
+                    Some(other) => failures.push(format!(
+                        "{} #{i} {} ({name}): {other:?}",
+                        family.name,
+                        stage.name()
+                    )),
                 }
             }
         }
@@ -229,13 +256,35 @@ fn every_later_stage_alone_matches_the_oracle() {
         failures.len(),
         failures[..failures.len().min(20)].join("\n")
     );
+    for ((family, name), (ok, n)) in &answered {
+        if family.starts_with("quadric/") {
+            println!("{family} {name}: {ok} of {n}");
+        }
+    }
+    // The perfect-square stage on double planes, whose matrix has rank 1,
+    // and on no other family (rank 2 at least: the crossing and parallel
+    // plane pairs, cones, cylinders).
+    for ((family, name), &(ok, n)) in &answered {
+        if *name == "square" {
+            if *family == "quadric/double-plane" {
+                assert!(ok * 64 >= n * 63, "{family}: square answered {ok} of {n}");
+            } else {
+                assert_eq!(ok, 0, "{family}: square answered {ok} of {n}");
+            }
+        }
+    }
+    // The tight stage: 116 of 256 rotated cylinders nearly along their
+    // axis; of the rest, β̂ is within 2²⁴E_β of 0 on 88 (its test) and the
+    // roots do not certify under the filter's bounds on 52.
+    let (ok, n) = answered[&("quadric/alpha-near-zero-rotated", "tight")];
+    assert!(ok * 3 > n, "the tight stage answered {ok} of {n}");
     for name in [
         "sphere/far-tiny",
         "plane/near-parallel",
         "quadric/double-plane",
         "quadric/alpha-near-zero-rotated",
     ] {
-        let (ok, n) = answered[&(name, DoubleWord)];
+        let (ok, n) = answered[&(name, "double-word")];
         assert!(
             ok * 2 > n,
             "{name}: the double-word stage answered {ok} of {n}"
