@@ -599,58 +599,26 @@ fn quadric_cancelling_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
 
 /// One pair of [`quadric_cancelling_seeds`], or none.
 fn quadric_cancelling(rng: &mut SmallRng) -> Vec<Case> {
-    let half = |x: f64| f64::from_bits(x.abs().to_bits() & 0x7ff0_0000_0000_0000) * U;
-    // Whether fl(a + b) is a tie that rounds up.
-    let tie_up = |a: f64, b: f64| {
-        let (s, r) = two_sum(a, b);
-        -r >= half(s)
-    };
     let d = [0; 3].map(|_| 1.0 + rng.random_range(1..1u32 << 12) as f32 * f32::EPSILON);
-    // fl(k·dᵢ·dⱼ), its magnitude in [|v|, |v|(1 + 2⁻⁸)) and rounding up
-    // by 0.9 of a half ulp or more, with `fits`: the first such `k`
-    // stepping from `v/(dᵢdⱼ)` away from 0.
-    let product = |v: f64, i: usize, j: usize, fits: &dyn Fn(f64) -> bool| {
-        let (di, dj) = (f64::from(d[i]), f64::from(d[j]));
-        let start = ((v / (di * dj)) as f32).to_bits();
-        (0..1u32 << 15).find_map(|step| {
-            let k = f32::from_bits(start + step);
-            let (h, e) = two_prod(f64::from(k) * di, dj);
-            let near = h.abs() >= v.abs() && h.abs() < v.abs() * (1.0 + 2f64.powi(-8));
-            (near && -e >= 0.9 * half(h) && fits(h)).then_some((k, h))
-        })
+    let Some(([k0, k1, k2, k3], x)) = four_terms_up(d) else {
+        return Vec::new();
     };
-    // Each sum rounds up by 0.9 of a half ulp or more.
-    let up = |a: f64, b: f64| {
-        let (s, r) = two_sum(a, b);
-        -r >= 0.9 * half(s)
-    };
+    let [d0, d1, d2] = d.map(f64::from);
     let small = 2f64.powi(-10);
-    let Some((k0, t0)) = product(2.0, 0, 0, &|_| true) else {
-        return Vec::new();
-    };
-    let Some((k1, t1)) = product(small, 1, 1, &|h| up(t0, h)) else {
-        return Vec::new();
-    };
-    let Some((k2, t2)) = product(2.0, 2, 2, &|_| true) else {
-        return Vec::new();
-    };
-    let s01 = t0 + t1;
-    let Some((k3, t3)) = product(small, 0, 1, &|h| up(t2, h) && tie_up(s01, t2 + h)) else {
-        return Vec::new();
-    };
-    let x = s01 + (t2 + t3);
-    let Some((k4, t4)) = product(small - x, 0, 2, &|_| true) else {
+    let Some((k4, t4)) = product_up(small - x, d0, d2, &|_| true) else {
         return Vec::new();
     };
     // t₅ from 2⁻¹² short of −X − t₄ on, while X + Y stays above 2⁻¹⁶.
-    let fits = |h: f64| up(t4, h) && (2f64.powi(-16)..2f64.powi(-12)).contains(&(x + (t4 + h)));
-    let Some((k5, t5)) = product(2f64.powi(-12) - x - t4, 1, 2, &fits) else {
+    let fits = |h: f64| {
+        rounds_up(t4, h, 0.9) && (2f64.powi(-16)..2f64.powi(-12)).contains(&(x + (t4 + h)))
+    };
+    let Some((k5, t5)) = product_up(2f64.powi(-12) - x - t4, d1, d2, &fits) else {
         return Vec::new();
     };
     let alpha = x + (t4 + t5);
     // β = k₆d₀ + k₇d₁ with −β/α about 2¹², γ = k₉ with −γ/β about 2⁻².
     let t = rng.random_range(1.0..2.0) * 2f64.powi(12);
-    let k6 = (-alpha * t / f64::from(d[0])) as f32;
+    let k6 = (-alpha * t / d0) as f32;
     let k9 = k6 * rng.random_range(0.25f32..0.5);
     let case = |bits: u32| {
         let k7 = f32::from_bits(bits);
@@ -659,6 +627,53 @@ fn quadric_cancelling(rng: &mut SmallRng) -> Vec<Case> {
     };
     let (lo, hi) = (2f32.powi(-18).to_bits(), 2f32.powi(-17).to_bits());
     crossing(case, lo, hi, true)
+}
+
+/// Half an ulp of `x`'s binade, `u·2^⌊log₂|x|⌋`: the largest rounding
+/// error of an f64 result there.
+fn half_ulp(x: f64) -> f64 {
+    f64::from_bits(x.abs().to_bits() & 0x7ff0_0000_0000_0000) * U
+}
+
+/// Whether `fl(a + b)` rounds up, above the exact sum, by `f` of half an
+/// ulp or more (`f = 1`: a tie rounding up).
+fn rounds_up(a: f64, b: f64, f: f64) -> bool {
+    let (s, r) = two_sum(a, b);
+    -r >= f * half_ulp(s)
+}
+
+/// `fl(fl(k·x)·y)` for an f32 `k`, its magnitude in `[|v|, |v|(1 +
+/// 2⁻⁸))`, rounding up by 0.9 of a half ulp or more, with `fits`: the
+/// first such `k` stepping from `v/(xy)` away from 0, and the product.
+fn product_up(v: f64, x: f64, y: f64, fits: &dyn Fn(f64) -> bool) -> Option<(f32, f64)> {
+    let start = ((v / (x * y)) as f32).to_bits();
+    (0..1u32 << 15).find_map(|step| {
+        let k = f32::from_bits(start + step);
+        let (h, e) = two_prod(f64::from(k) * x, y);
+        let near = h.abs() >= v.abs() && h.abs() < v.abs() * (1.0 + 2f64.powi(-8));
+        (near && -e >= 0.9 * half_ulp(h) && fits(h)).then_some((k, h))
+    })
+}
+
+/// The first four quadratic terms on the inputs `v`, `tᵢ = kᵢ·vⱼ·vₖ`
+/// (`k₀v₀²`, `k₁v₁²`, `k₂v₂²`, `k₃v₀v₁`), summed as the kernels'
+/// pairwise sums do, `X = (t₀ + t₁) + (t₂ + t₃)`, every rounding up:
+/// `t₀` and `t₂` just above 2 and `t₁`, `t₃` about `2⁻¹⁰`, each product
+/// rounding up by 0.9 of a half ulp or more (of draws of `kᵢ` one ulp
+/// apart, the first that does), `t₀ + t₁` and `t₂ + t₃` (just above 2)
+/// by 0.9 of a half ulp or more, `2u` at most, and `X`, just above 4, by
+/// a tie, `4u` (a tie rounds to even, so only one level of ties adds
+/// up). The four coefficients and `X`, or `None` where no draw fits.
+fn four_terms_up(v: [f32; 3]) -> Option<([f32; 4], f64)> {
+    let [v0, v1, v2] = v.map(f64::from);
+    let small = 2f64.powi(-10);
+    let (k0, t0) = product_up(2.0, v0, v0, &|_| true)?;
+    let (k1, t1) = product_up(small, v1, v1, &|h| rounds_up(t0, h, 0.9))?;
+    let (k2, t2) = product_up(2.0, v2, v2, &|_| true)?;
+    let s01 = t0 + t1;
+    let fits = |h: f64| rounds_up(t2, h, 0.9) && rounds_up(s01, t2 + h, 1.0);
+    let (k3, t3) = product_up(small, v0, v1, &fits)?;
+    Some(([k0, k1, k2, k3], s01 + (t2 + t3)))
 }
 
 /// The committed cases, as (family, case).
