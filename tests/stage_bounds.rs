@@ -6,7 +6,7 @@
 //! the larger ones of the full filter. Each stage that certifies with a
 //! bound (the plane's first and second passes, tight and double-word stages; the
 //! sphere's tight, compensated and double-word stages; the quadric's
-//! double-word stage, and the first pass of its x4 kernel,
+//! tight and double-word stages, and the first pass of its x4 kernel,
 //! `quadric::x4::first_pass_shrunk`) is called alone, every bound it uses multiplied by
 //! a factor `s < 1` (the x4 first pass twice: its class bounds alone,
 //! `x4-class`, and its roots' bound alone, `x4-roots`), on the cases of
@@ -31,14 +31,16 @@
 //! first pass, the cases `bounds.rs` commits for the filter too
 //! (`fixtures/bounds/quadric.jsonl`), and for its roots, lines whose `α̂`
 //! cancels after every rounding of its sum went one way
-//! ([`quadric_cancelling_seeds`]). The stages with
-//! arithmetic proven exact (`tracked`, `grid_exact`) have no bound to
-//! shrink.
+//! ([`quadric_cancelling_seeds`]); for the quadric's tight stage, lines
+//! from just off a quadric's surface whose `γ̂` cancels after every
+//! rounding of its sums went one way ([`quadric_near_surface_seeds`]).
+//! The stages with arithmetic proven exact (`tracked`, `grid_exact`) have
+//! no bound to shrink.
 //!
 //! Each committed case is right at the factor 1, and for each stage some
 //! case is wrong at the factor of [`CAUGHT_AT`]: a constant of that stage
-//! cut to that fraction is caught here. Regenerate the cases (about 75 s
-//! with `--release`) with
+//! cut to that fraction is caught here. Regenerate the cases (about two
+//! minutes with `--release`) with
 //!
 //! ```text
 //! RAYORACLE_STAGE_SEARCH=400000 cargo test --release --test all stage_bounds -- --nocapture
@@ -123,6 +125,12 @@ fn quadric_double_word(c: &Case, s: f64) -> Option<Answer> {
     quadric::stages::double_word(&k, w(r.origin), w(r.dir), s).map(|h| answer(&h))
 }
 
+fn quadric_tight(c: &Case, s: f64) -> Option<Answer> {
+    let Case::Quadric(r, q) = c else { return None };
+    let k = q.coeffs.map(f64::from);
+    quadric::stages::tight(&k, w(r.origin), w(r.dir), s).map(|h| answer(&h))
+}
+
 fn quadric_x4_class(c: &Case, s: f64) -> Option<Answer> {
     let Case::Quadric(r, q) = c else { return None };
     quadric::x4::first_pass_shrunk(r, q, s, 1.0).map(|h| answer(&h))
@@ -133,7 +141,7 @@ fn quadric_x4_roots(c: &Case, s: f64) -> Option<Answer> {
     quadric::x4::first_pass_shrunk(r, q, 1.0, s).map(|h| answer(&h))
 }
 
-const STAGES: [Staged; 9] = [
+const STAGES: [Staged; 10] = [
     Staged {
         kind: "plane",
         name: "first",
@@ -179,6 +187,11 @@ const STAGES: [Staged; 9] = [
         name: "x4-roots",
         run: quadric_x4_roots,
     },
+    Staged {
+        kind: "quadric",
+        name: "tight",
+        run: quadric_tight,
+    },
 ];
 
 /// The factor at which the committed cases must show each stage wrong:
@@ -211,7 +224,28 @@ const STAGES: [Staged; 9] = [
 /// quarter, by lines whose `α̂` cancels after every rounding of its sum
 /// went one way ([`quadric_cancelling_seeds`]): the roots are off by
 /// about 0.29 of the relative part `w = E_α/|α̂|` that leads their bound.
-const CAUGHT_AT: [(&str, f64); 9] = [
+///
+/// The quadric's tight stage at an eighth, by lines from just off a
+/// quadric's surface ([`quadric_near_surface_seeds`]), wrong up to about
+/// 2^-2.75; a quarter is out of its reach. It decides with the filter's
+/// `E_β = 24u m_β` and `E_γ = 20u m_γ`, twice the bounds of sums taken
+/// left to right, and a root moves by more than the certificate's
+/// `2⁻⁵¹|t|` only where `β` or `γ` cancels, at some addition `A + B`,
+/// `|A| ≈ |B|`: the roundings after it are at most `u` of the small
+/// result, and those before it at most `u` of each term per rounding on
+/// its path. In `γ̂ = fl(fl(Q̂ + L̂) + k₉)` a quadratic term passes through at
+/// most 4 roundings before `Q̂ + L̂` (its product and three sums), a
+/// linear one through 2, so `γ̂` is off by at most `(4 + 2)/2 · u m_γ =
+/// 3u m_γ`, 0.15 of `E_γ` (cancelling at the last sum, or inside `Q̂`,
+/// leaves `2.5u m_γ`); in `β̂ = fl(fl(B̂₀ + L̂₀) + B̂₁)` a term passes
+/// through at most 5 roundings before the last sum and 4 in `B̂₁`, `4.5u
+/// m_β`, 0.19 of `E_β`. With `α ≠ 0`, `β`'s share of the roots' bound is
+/// half as large again, through `√Δ`, and the class is taken where `|Δ̂|`
+/// exceeds twice its bound. The built lines put `22.4u` or more of those
+/// `24u` into `γ̂`, 0.14 of `E_γ`; the committed ones reach 0.149. Their
+/// `β` does not cancel, so they catch `E_γ` cut to an eighth, not `E_β`
+/// alone.
+const CAUGHT_AT: [(&str, f64); 10] = [
     ("bounds/plane/first", 0.5),
     ("bounds/plane/second", 0.25),
     ("bounds/plane/tight", 0.25),
@@ -221,6 +255,7 @@ const CAUGHT_AT: [(&str, f64); 9] = [
     ("bounds/quadric/double-word", 0.25),
     ("bounds/quadric/x4-class", 0.25),
     ("bounds/quadric/x4-roots", 0.25),
+    ("bounds/quadric/tight", 0.125),
 ];
 
 impl Staged {
@@ -655,6 +690,17 @@ fn product_up(v: f64, x: f64, y: f64, fits: &dyn Fn(f64) -> bool) -> Option<(f32
     })
 }
 
+/// The product `k·x` of an f32 `k` and `x`, exact in f64, that `fits`: the
+/// first such `k` stepping from `v/x` away from 0, and the product.
+fn exact_product(v: f64, x: f64, fits: &dyn Fn(f64) -> bool) -> Option<(f32, f64)> {
+    let start = ((v / x) as f32).to_bits();
+    (0..1u32 << 15).find_map(|step| {
+        let k = f32::from_bits(start + step);
+        let h = f64::from(k) * x;
+        fits(h).then_some((k, h))
+    })
+}
+
 /// The first four quadratic terms on the inputs `v`, `tᵢ = kᵢ·vⱼ·vₖ`
 /// (`k₀v₀²`, `k₁v₁²`, `k₂v₂²`, `k₃v₀v₁`), summed as the kernels'
 /// pairwise sums do, `X = (t₀ + t₁) + (t₂ + t₃)`, every rounding up:
@@ -674,6 +720,61 @@ fn four_terms_up(v: [f32; 3]) -> Option<([f32; 4], f64)> {
     let fits = |h: f64| rounds_up(t2, h, 0.9) && rounds_up(s01, t2 + h, 1.0);
     let (k3, t3) = product_up(small, v0, v1, &fits)?;
     Some(([k0, k1, k2, k3], s01 + (t2 + t3)))
+}
+
+/// Lines from just off a quadric's surface, for the near root `c/q` of
+/// the quadric's tight stage, which takes `γ` (the quadric's value at the
+/// origin) as the filter sums it, `γ̂ = fl(fl(Q̂ + L̂) + k₉)`, with its
+/// bound `E_γ = 20u m_γ`. Here `Q̂`, the quadratic terms `kᵢoⱼoₖ` summed
+/// pairwise, and `L̂ = fl(fl(k₆o₀ + k₇o₁) + k₈o₂)` nearly cancel, and
+/// every rounding before their difference, exact, goes up. With `o`
+/// drawn in `[1, 2)³`, `k₅ = k₉ = 0`:
+///
+/// * `Q̂ = fl(X + t₄)`, `X` from [`four_terms_up`] on `o` and `t₄ =
+///   k₄o₀o₂` just over half an ulp of `X`, so that adding it rounds up
+///   by nearly half an ulp: `Q̂` is high by up to `16u`, `2u` from each
+///   of the products `t₀`, `t₂` and the sums `t₀ + t₁`, `t₂ + t₃` (at
+///   least 0.9 of each), `4u` from the tie and `4u` from `t₄`;
+/// * `L = k₆o₀ + k₇o₁ + k₈o₂`, each product exact, `k₆o₀` just beyond
+///   `−4`, `k₇o₁` about `2⁻¹⁰` and `k₈o₂` about `2⁻²⁰`, drawn so that both
+///   sums, just beyond −4, round up by 0.9 of a half ulp or more (`4u` at
+///   most each) and `γ = Q + L` is about `2⁻ʲ` (`j` from 16 to 21).
+///
+/// So `γ̂` is high by about `22.4u` of the `24u` it can be at most, while
+/// `m_γ ≈ 8` makes `E_γ ≈ 160u`: the near root `γ̂/q̂` is off by about
+/// 0.14 of the share `E_γ/|γ|` that leads its bound (the rest, from `β`
+/// and the roundings of the roots, is under `2⁻¹⁷` of it). The direction
+/// `d = (d₀, d₁, d₂)`, `d₀` and `|d₂|` in `[1, 2)`, gives `β ≈ 4d₂/o₂`
+/// (in `∂β/∂d₀ = 2k₀o₀ + k₆ + …` the quadratic and linear terms cancel)
+/// and `α` from 1 to 16, exact; `d₁ ∈ [2⁻¹⁰, 2⁻⁹)`, with `∂β/∂d₁` from
+/// `2⁻⁹` to `2⁻⁸`, moves the root by about `2⁻⁴⁴` of it an ulp: a bisection on
+/// `d₁` finds where the exact root crosses an f32 rounding midpoint, and
+/// both cases beside it are kept.
+fn quadric_near_surface_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
+    gather(rng, n, |rng| quadric_near_surface(rng).unwrap_or_default())
+}
+
+/// One pair of [`quadric_near_surface_seeds`], or none.
+fn quadric_near_surface(rng: &mut SmallRng) -> Option<Vec<Case>> {
+    let o = [0; 3].map(|_| mant(rng, 0));
+    let ([k0, k1, k2, k3], x) = four_terms_up(o)?;
+    let [o0, o1, o2] = o.map(f64::from);
+    let over_half = half_ulp(x) * (1.0 + 2f64.powi(-9));
+    let (k4, t4) = product_up(over_half, o0, o2, &|h| rounds_up(x, h, 0.9))?;
+    // L̂ = γ − Q̂, its two sums rounding up.
+    let l = 2f64.powi(-rng.random_range(16..22)) - (x + t4);
+    let (k6, l0) = exact_product(l - 2f64.powi(-10), o0, &|_| true)?;
+    let (k7, l1) = exact_product(l - 2f64.powi(-20) - l0, o1, &|h| rounds_up(l0, h, 0.9))?;
+    let (k8, _) = exact_product(l - (l0 + l1), o2, &|h| rounds_up(l0 + l1, h, 0.9))?;
+    let k = [k0, k1, k2, k3, k4, 0.0, k6, k7, k8, 0.0];
+    let sign = if rng.random() { 1.0 } else { -1.0 };
+    let (d0, d2) = (mant(rng, 0), sign * mant(rng, 0));
+    let case = |bits: u32| {
+        let d = Vec3::new(d0, f32::from_bits(bits), d2);
+        Case::Quadric(Ray::new(Vec3::from(o), d), Quadric::new(k))
+    };
+    let (lo, hi) = (2f32.powi(-10).to_bits(), 2f32.powi(-9).to_bits());
+    Some(crossing(case, lo, hi, false))
 }
 
 /// The committed cases, as (family, case).
@@ -735,6 +836,9 @@ fn seeds(st: &Staged, rng: &mut SmallRng, n: usize) -> Vec<Case> {
             }
             if name == "x4-roots" {
                 out.extend(quadric_cancelling_seeds(rng, n / 16));
+            }
+            if name == "tight" {
+                out.extend(quadric_near_surface_seeds(rng, n / 16));
             }
             // Double planes whose double-word `Δ̂` rounds by most of its
             // bound: for the long search alone, as above.
@@ -865,6 +969,17 @@ fn the_constructed_cancelling_lines_use_most_of_the_bound() {
     let mut rng = SmallRng::seed_from_u64(0xca9);
     let cases = quadric_cancelling_seeds(&mut rng, 8);
     bounds_search::reaches_a_quarter(&cases, |c| st.critical_log2(c));
+}
+
+/// The construction of [`quadric_near_surface_seeds`] works: from a fixed
+/// seed, some of its lines make the tight stage's near root wrong with
+/// every bound shrunk to an eighth, with no search at all.
+#[test]
+fn the_constructed_near_surface_lines_use_most_of_the_bound() {
+    let st = stage("bounds/quadric/tight");
+    let mut rng = SmallRng::seed_from_u64(0x9e5);
+    let cases = quadric_near_surface_seeds(&mut rng, 8);
+    bounds_search::reaches(&cases, |c| st.critical_log2(c), -3.0);
 }
 
 /// The construction of [`bounds_search::sphere_rounding_up_seeds`] works:
