@@ -35,7 +35,12 @@
 //! from just off a quadric's surface whose `γ̂` cancels after every
 //! rounding of its sums went one way ([`quadric_near_surface_seeds`]).
 //! The stages with arithmetic proven exact (`tracked`, `grid_exact`) have
-//! no bound to shrink.
+//! no bound to shrink, and the quadric's perfect-square stage
+//! (`quadric::square`) none that decides: its error stays within the
+//! certificate's own margin, which is not shrunk, so no factor makes it
+//! wrong ([`the_square_stage_is_right_however_shrunk`], on double planes
+//! whose roots lie within `8u` of a midpoint,
+//! [`double_plane_midpoint_seeds`]).
 //!
 //! Each committed case is right at the factor 1, and for each stage some
 //! case is wrong at the factor of [`CAUGHT_AT`]: a constant of that stage
@@ -57,7 +62,7 @@ use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
 use rayoracle::case::{Case, parse_line};
 use rayoracle::num::certify::U;
-use rayoracle::num::dd::{two_prod, two_sum};
+use rayoracle::num::dd::{Acc, two_prod, two_sum};
 use rayoracle::plane::Plane;
 use rayoracle::quadric::Quadric;
 use rayoracle::sphere::Sphere;
@@ -131,6 +136,12 @@ fn quadric_tight(c: &Case, s: f64) -> Option<Answer> {
     quadric::stages::tight(&k, w(r.origin), w(r.dir), s).map(|h| answer(&h))
 }
 
+fn quadric_square(c: &Case, s: f64) -> Option<Answer> {
+    let Case::Quadric(r, q) = c else { return None };
+    let k = q.coeffs.map(f64::from);
+    quadric::square::intersect(&k, w(r.origin), w(r.dir), s).map(|h| answer(&h))
+}
+
 fn quadric_x4_class(c: &Case, s: f64) -> Option<Answer> {
     let Case::Quadric(r, q) = c else { return None };
     quadric::x4::first_pass_shrunk(r, q, s, 1.0).map(|h| answer(&h))
@@ -193,6 +204,14 @@ const STAGES: [Staged; 10] = [
         run: quadric_tight,
     },
 ];
+
+/// The quadric's perfect-square stage (`quadric::square`), which no
+/// factor makes wrong (see [`the_square_stage_is_right_however_shrunk`]).
+const SQUARE: Staged = Staged {
+    kind: "quadric",
+    name: "square",
+    run: quadric_square,
+};
 
 /// The factor at which the committed cases must show each stage wrong:
 /// the best factor the search reached (run with `--nocapture` to see
@@ -777,6 +796,64 @@ fn quadric_near_surface(rng: &mut SmallRng) -> Option<Vec<Case>> {
     Some(crossing(case, lo, hi, false))
 }
 
+/// Double planes `(n·p − e)² = 0`, `n = (1, n₁, n₂)` with `n₁`, `n₂` and
+/// `e` of 12 significant bits (so that every coefficient, `n₁²`,
+/// `2n₁n₂`, `e²` and the rest, is an f32), crossed by lines whose root
+/// `−b/a` lies within `8u` of an f32 rounding midpoint, for the
+/// perfect-square stage: `a = n·d` of a `d` spread over 40 binades needs
+/// two words, and `o` is solved for `b = n·o − e = −τa`, `τ` the midpoint
+/// moved by up to `8u` of itself, one component at a time (`o₀`, then
+/// `o₁` and `o₂` from the residual each leaves, rounded to f32), to
+/// within about `2⁻⁷⁰` of `b`, which then needs two words too.
+fn double_plane_midpoint_seeds(rng: &mut SmallRng, n: usize) -> Vec<Case> {
+    (0..n).map(|_| double_plane_near_midpoint(rng)).collect()
+}
+
+/// One of [`double_plane_midpoint_seeds`].
+fn double_plane_near_midpoint(rng: &mut SmallRng) -> Case {
+    let sign = |rng: &mut SmallRng| if rng.random() { 1.0 } else { -1.0 };
+    let twelve = |rng: &mut SmallRng| {
+        let e = rng.random_range(-15..-7);
+        rng.random_range(2048..4096) as f32 * 2f32.powi(e) * sign(rng)
+    };
+    let (n1, n2, e) = (twelve(rng), twelve(rng), twelve(rng));
+    let k = [
+        1.0,
+        n1 * n1,
+        n2 * n2,
+        2.0 * n1,
+        2.0 * n2,
+        2.0 * n1 * n2,
+        -2.0 * e,
+        -2.0 * n1 * e,
+        -2.0 * n2 * e,
+        e * e,
+    ];
+    let (e1, e2) = (rng.random_range(-30..-10), rng.random_range(-40..-20));
+    let d = [mant(rng, 0), mant(rng, e1), mant(rng, e2)].map(|x| x * sign(rng));
+    let [n1, n2, e] = [n1, n2, e].map(f64::from);
+    let sum = |terms: &[f64]| {
+        let mut acc = Acc::new();
+        terms.iter().for_each(|&t| acc.add(t));
+        acc.finish()
+    };
+    let a = sum(&[f64::from(d[0]), n1 * f64::from(d[1]), n2 * f64::from(d[2])]);
+    let ey = rng.random_range(-4..4);
+    let y = mant(rng, ey);
+    let mid = f64::from(y) + f64::from(f32::from_bits(y.to_bits() + 1) - y) / 2.0;
+    let tau = mid * (1.0 + rng.random_range(-8.0..8.0) * U);
+    // b + e = −τa + e, less each component's share as it is fixed.
+    let (p, q) = two_prod(tau, a.hi);
+    let mut rest = vec![-p, -q, -tau * a.lo, e];
+    let o0 = sum(&rest).hi as f32;
+    rest.push(-f64::from(o0));
+    let o1 = (sum(&rest).hi / n1) as f32;
+    rest.push(-n1 * f64::from(o1));
+    let o2 = (sum(&rest).hi / n2) as f32;
+    let ray = Ray::new(Vec3::new(o0, o1, o2), Vec3::from(d));
+    Case::Quadric(ray, Quadric::new(k))
+}
+
 /// The committed cases, as (family, case).
 fn committed() -> Vec<(String, Case)> {
     let path =
@@ -980,6 +1057,51 @@ fn the_constructed_near_surface_lines_use_most_of_the_bound() {
     let mut rng = SmallRng::seed_from_u64(0x9e5);
     let cases = quadric_near_surface_seeds(&mut rng, 8);
     bounds_search::reaches(&cases, |c| st.critical_log2(c), -3.0);
+}
+
+/// The perfect-square stage is right at every factor, 0 included, on
+/// double planes whose roots lie within `8u` of an f32 rounding midpoint
+/// ([`double_plane_midpoint_seeds`]): its root `fl(−b̂/â)` from the
+/// leading words of the exact `a` and `b` is within `3u|t|` of the exact
+/// one (each word within `u` of its sum, and the division), inside the
+/// `2⁻⁵¹|t|` that [`certify`](rayoracle::num::certify::certify) adds
+/// unshrunk, so its own bounds, `|lo|` and the quotient's `4u`, never
+/// decide. Some of these lines have `fl(−b̂/â)` across the midpoint from
+/// the exact root: there the stage must not answer, at any factor.
+#[test]
+fn the_square_stage_is_right_however_shrunk() {
+    let mut rng = SmallRng::seed_from_u64(0x5a7);
+    let cases = double_plane_midpoint_seeds(&mut rng, 256);
+    let (mut answered, mut across) = (0, 0);
+    for c in &cases {
+        let e = exact(c).expect("finite");
+        assert_eq!(e.0, "one", "{c:?}");
+        assert_eq!(SQUARE.critical_log2(c), None, "{c:?}");
+        if let Some(a) = (SQUARE.run)(c, 0.0) {
+            assert_eq!(a, e, "{c:?}");
+            answered += 1;
+        }
+        // a and b from the quadric's first row, as the stage takes them.
+        let Case::Quadric(r, q) = c else {
+            unreachable!()
+        };
+        let k = q.coeffs.map(f64::from);
+        let row = [k[0], 0.5 * k[3], 0.5 * k[4], 0.5 * k[6]];
+        let form = |v: [f64; 3], last: f64| {
+            let mut acc = Acc::new();
+            (0..3).for_each(|j| acc.add(row[j] * v[j]));
+            acc.add(last);
+            acc.finish().hi
+        };
+        let leading = (-form(w(r.origin), row[3]) / form(w(r.dir), 0.0)) as f32;
+        across += usize::from(leading.to_bits() != e.1[0]);
+    }
+    println!(
+        "{answered} of {} answered at the factor 0, {across} across",
+        cases.len()
+    );
+    assert!(answered * 4 > cases.len(), "answered {answered}");
+    assert!(across > 0, "no leading-word root across a midpoint");
 }
 
 /// The construction of [`bounds_search::sphere_rounding_up_seeds`] works:
