@@ -24,7 +24,12 @@
 //!
 //! `a` and `b` are sums of three and four exact products: summed into
 //! double words by [`Acc`], which proves them exact (or bounds them), and
-//! the root is their [`quotient`], certified. That replaces the filter's
+//! the root is their [`quotient`], certified. With `a` and `b` exact, the
+//! quotient of their leading words is within `3u|t|` of the root, inside
+//! the `2⁻⁵¹|t|` that [`certify`](crate::num::certify::certify) adds to
+//! every enclosure: the bounds, and so `shrink`, never decide what this
+//! stage answers, and `tests/stage_bounds.rs` shows it right at every
+//! factor. That replaces the filter's
 //! bound on `Δ`, which cannot prove `Δ = 0`, and the double-word stage's
 //! exact sum of `Δ` from exact α, β and γ, which costs some thirty
 //! exact products.

@@ -1005,8 +1005,9 @@ pub fn disc_near(a: Approx, b: Approx, c: Approx, shrink: f64) -> Approx {
 /// nearly parallel to an axis of a cylinder or a paraboloid, whose α
 /// cancels below the filter's `E_α` while β and γ are clear of their
 /// bounds. A coefficient whose terms' magnitudes sum below `2⁵²g` (`g`
-/// the data's [`grid`]) is exact as the filter summed it, as in
-/// [`later_by`], and its bound is 0; otherwise α is the sum of its six
+/// the data's [`grid`]) is exact as the filter summed it (every term a
+/// multiple of `g`, every partial sum below `2⁵³g`), and its bound is 0;
+/// otherwise α is the sum of its six
 /// terms in double words ([`Acc`], each term exact by TwoProduct).
 ///
 /// * α = β = 0, both exact: no root where `|γ̂| > E_γ`, every `t` where
