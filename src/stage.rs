@@ -10,7 +10,9 @@
 //! arithmetic checked to be exact, operation by operation (which settles
 //! the exact zeros of small-integer and dyadic data); a tight stage in a
 //! better-conditioned form (the sphere's discriminant, whose error grows
-//! with `R·|f|` rather than `|f|²`; the plane's `d·n`, summed exactly);
+//! with `R·|f|` rather than `|f|²`; the plane's `d·n`, summed exactly;
+//! the quadric's double plane as the square of a linear form, and its α
+//! summed exactly where it nearly cancels);
 //! double-word arithmetic, exact where no low word
 //! rounded (which settles most other exact zeros); then exact arithmetic
 //! on integers. The answer is the exact class and correctly

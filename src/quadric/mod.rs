@@ -42,9 +42,20 @@
 //! pass, [`lanes`], does the same with its own bound); a double root, an
 //! α that is 0 in exact arithmetic but not term by term, a line on the
 //! surface or a root too close to a rounding boundary goes to the later
-//! stages ([`stages::later`]: f64 arithmetic that proves itself exact,
-//! then double words), and what they leave to the exact oracle
-//! ([`exact`]).
+//! stages ([`stages::later`]), and what they leave to the exact oracle
+//! ([`exact`]). In order:
+//!
+//! * a perfect square, the double plane, whose `Δ` is 0 on every line,
+//!   proved by exact products of its coefficients ([`square`]);
+//! * the filter's own α̂, β̂ and γ̂ where a grid test proves them exact,
+//!   with `Δ` checked for exactness (f64 arithmetic that proves itself
+//!   exact), then summed exactly from them;
+//! * α alone exact, with β and γ under the filter's bounds (or exact
+//!   where the grid proves them so): lines nearly parallel to an axis
+//!   ([`stages::tight`]);
+//! * α, β and γ summed exactly in double words, on four AVX lanes where
+//!   the CPU has AVX2 and FMA, then the same checks, and `Δ` in double
+//!   words ([`stages::double_word`]).
 
 pub mod exact;
 pub mod lanes;
