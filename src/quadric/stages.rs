@@ -1217,11 +1217,15 @@ fn later_bounded<P: Product>(t: &ExactTerms, shrink: f64) -> Option<(QuadricHit,
     }
 }
 
-/// [`tracked`], then [`double_word`] where it gives `None`, with the
-/// stage that answered: the same answers as the two called in turn, from
-/// one computation of the terms, and on a CPU with FMA ([`Fma`]) from a
-/// copy compiled for it, whose TwoProduct is one fused multiply-add
-/// ([`Fused`]; the same exact pairs, so the same bits).
+/// The stages after the filter, with the stage that answered: a perfect
+/// square ([`super::square`]); [`tracked`]'s roots where the filter's
+/// sums are exact; the [`tight`] stage; then [`tracked`] and
+/// [`double_word`] on one computation of the exact terms. Each answer is
+/// the exact class and correctly rounded roots, so any two stages that
+/// answer agree. On a CPU with AVX2 and FMA ([`Avx2`]) the exact terms
+/// are summed on four lanes (`quadric::words`), and on one with FMA alone
+/// ([`Fma`]) a copy compiled for it runs; either's TwoProduct is one fused
+/// multiply-add ([`Fused`]; the same exact pairs, so the same bits).
 ///
 /// ```
 /// use rayoracle::{quadric::{QuadricHit, stages::later}, stage::Stage};
