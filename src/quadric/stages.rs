@@ -839,7 +839,7 @@ pub fn double_word(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Opti
 #[inline(always)]
 fn double_word_of<P: Product>(t: &ExactTerms, sums: Sums, shrink: f64) -> Option<QuadricHit> {
     let coefficients = dd_sums::<false>(t, sums)?;
-    double_word_rest::<P>(t, sums, coefficients, shrink)
+    double_word_rest::<P>(t, coefficients, shrink)
 }
 
 /// α, β and γ for [`double_word_of`] from what [`tracked_in`] left it;
@@ -868,7 +868,6 @@ fn dd_sums<const FAST: bool>(t: &ExactTerms, sums: Sums) -> Option<(Dd, Dd, Dd)>
 #[inline(always)]
 fn double_word_rest<P: Product>(
     t: &ExactTerms,
-    sums: Sums,
     (alpha, beta, gamma): (Dd, Dd, Dd),
     shrink: f64,
 ) -> Option<QuadricHit> {
@@ -884,13 +883,24 @@ fn double_word_rest<P: Product>(
         };
         (sum(&t.0), sum(&t.1), sum(&t.2))
     };
-    let exact = matches!(sums, Sums::Exact(_));
+    let single = |x: &Dd| x.lo == 0.0 && x.err == 0.0;
+    let exact = single(&alpha) && single(&beta) && single(&gamma);
     double_word_coefficients::<P>(t.3, exact, (alpha, beta, gamma), shrink)
 }
 
 /// The double-word stage from α, β and γ as double words with their
 /// bounds (`exact` where each is one f64, exactly), on the data's
 /// [`grid`].
+///
+/// Where each is one exact f64, `Δ/4 = (β/2)² − αγ` is first taken from
+/// the two products' TwoProduct words `h₁ + l₁` and `h₂ + l₂`: `Δ/4 =
+/// (h₁ − h₂) + (l₁ − l₂)`, three roundings, each within `u` of its own
+/// result (round to nearest, no underflow: every word is a multiple of
+/// `g²/4 ≥ 2⁻⁸⁹⁶`), so `E = u(|d̂ₕ| + |d̂ₗ| + |Δ̂|)` for the two
+/// differences and their sum. That decides the sign and gives the roots
+/// wherever `Δ ≠ 0`; an exact `Δ = 0` makes every word of the two
+/// products equal (TwoProduct's split of a value is unique), so `Δ̂ = 0`
+/// is never decided here and takes the exact sum below.
 #[inline(always)]
 fn double_word_coefficients<P: Product>(
     grid: f64,
@@ -927,7 +937,8 @@ fn double_word_coefficients<P: Product>(
     let (a, bb, c) = (alpha.approx(), b.approx(), gamma.approx());
     // Most Δ are far from 0 once α, β and γ are this close: decided from
     // the leading words; the exact sum below only where that fails, and
-    // at once where α, β and γ are single exact words (two products).
+    // at once where α, β and γ are single exact words (two products,
+    // above).
     let near = disc_near(a, bb, c, 1.0);
     if !exact && near.v.abs() > 2.0 * near.e * shrink {
         if near.v < 0.0 {
@@ -935,6 +946,24 @@ fn double_word_coefficients<P: Product>(
         }
         if let Some((t0, t1)) = two_roots(a, bb, c, near, shrink) {
             return Some(QuadricHit::Two(t0, t1));
+        }
+    }
+    if exact {
+        // One word each: Δ/4 = (h₁ − h₂) + (l₁ − l₂) from the products'
+        // TwoProduct words, within `u` of each of the three roundings'
+        // results (no underflow: see below).
+        let (h1, l1) = P::two_prod(b.hi, b.hi);
+        let (h2, l2) = P::two_prod(alpha.hi, gamma.hi);
+        let (dh, dl) = (h1 - h2, l1 - l2);
+        let v = dh + dl;
+        let e = U * (dh.abs() + dl.abs() + v.abs()) * SLACK;
+        if v.abs() > e * shrink {
+            if v < 0.0 {
+                return Some(QuadricHit::None);
+            }
+            if let Some((t0, t1)) = two_roots(a, bb, c, Approx { v, e }, shrink) {
+                return Some(QuadricHit::Two(t0, t1));
+            }
         }
     }
     // β/2's words are multiples of g/2, α's and γ's of g: the products,
@@ -1000,15 +1029,16 @@ pub fn disc_near(a: Approx, b: Approx, c: Approx, shrink: f64) -> Approx {
     Approx { v, e }
 }
 
-/// The tight stage: α exactly, and β and γ as the filter left them,
+/// The tight stage: α in double words, and β and γ as the filter left them,
 /// within its `E_β = 24u m_β` and `E_γ = 20u m_γ`. That settles a line
 /// nearly parallel to an axis of a cylinder or a paraboloid, whose α
 /// cancels below the filter's `E_α` while β and γ are clear of their
 /// bounds. A coefficient whose terms' magnitudes sum below `2⁵²g` (`g`
 /// the data's [`grid`]) is exact as the filter summed it (every term a
 /// multiple of `g`, every partial sum below `2⁵³g`), and its bound is 0;
-/// otherwise α is the sum of its six
-/// terms in double words ([`Acc`], each term exact by TwoProduct).
+/// otherwise α is the sum of its six terms in double words, each term
+/// exact by TwoProduct, on the grid `g` ([`GridAcc`]: exact where its
+/// grid test passes, within its running bound elsewhere).
 ///
 /// * α = β = 0, both exact: no root where `|γ̂| > E_γ`, every `t` where
 ///   γ is exactly 0 too;
@@ -1032,7 +1062,7 @@ pub fn disc_near(a: Approx, b: Approx, c: Approx, shrink: f64) -> Approx {
 /// ```
 pub fn tight(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<QuadricHit> {
     let left = classes_paired(k, o, d, 1.0).left();
-    tight_by::<Dekker>(k, o, d, &left, left.exact(grid(k, o, d)), shrink)
+    tight_by::<Dekker>(k, o, d, &left, grid(k, o, d), shrink)
 }
 
 /// [`tight`] from what the filter left, the products' errors found by `P`.
@@ -1042,9 +1072,10 @@ fn tight_by<P: Product>(
     _o: [f64; 3],
     d: [f64; 3],
     left: &Left,
-    [xa, xb, xg]: [bool; 3],
+    g: f64,
     shrink: f64,
 ) -> Option<QuadricHit> {
+    let [xa, xb, xg] = left.exact(g);
     let ((alpha, _), (beta, mb), (gamma, mg)) = (left.alpha, left.beta, left.gamma);
     let bound = |exact: bool, e: f64| if exact { 0.0 } else { e };
     let (eb, eg) = (bound(xb, 24.0 * U * mb), bound(xg, 20.0 * U * mg));
@@ -1070,11 +1101,11 @@ fn tight_by<P: Product>(
             err: 0.0,
         }
     } else {
-        let mut acc = Acc::new();
+        let mut acc = GridAcc::new();
         for &(c, i, j) in &QUADRATIC {
             acc.add_pair(P::two_prod(k[c] * d[i], d[j]));
         }
-        acc.finish()
+        acc.finish(g)
     };
     let sa = alpha.shrunk(shrink);
     if sa.is_zero() {
@@ -1122,11 +1153,11 @@ fn later_by<P: Product>(
     // grid tests fail takes both stages again with them.
     let sums = match tracked_by::<P, true>(&t, shrink) {
         Some((Some(h), _)) => return Some((h, Stage::Tracked)),
-        Some((None, sums)) => dd_sums::<true>(&t, sums).map(|c| (sums, c)),
+        Some((None, sums)) => dd_sums::<true>(&t, sums),
         None => None,
     };
     match sums {
-        Some((sums, c)) => double_word_rest::<P>(&t, sums, c, shrink),
+        Some(c) => double_word_rest::<P>(&t, c, shrink),
         None => return later_bounded::<P>(&t, shrink),
     }
     .map(|h| (h, Stage::DoubleWord))
@@ -1198,7 +1229,7 @@ fn later_head<P: Product>(
             double_word_coefficients::<P>(g, true, sums, shrink).map(|h| (h, Stage::DoubleWord))
         );
     }
-    if let Some(h) = tight_by::<P>(k, o, d, &left, left.exact(g), shrink) {
+    if let Some(h) = tight_by::<P>(k, o, d, &left, g, shrink) {
         return Ok(Some((h, Stage::Tight)));
     }
     Err(g)
