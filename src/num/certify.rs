@@ -451,8 +451,8 @@ pub fn widen_lanes(x: wide::f32x4) -> [f64; 4] {
 /// ```
 #[inline]
 pub fn narrow_exact(x: f64) -> f32 {
-    if !(x.abs() < f64::from(f32::MIN_POSITIVE)) {
-        // A normal result, ±∞ or NaN: nothing to flush.
+    if !(x.abs() < f64::from(f32::MIN_POSITIVE)) || x == 0.0 {
+        // A normal result, ±0, ±∞ or NaN: nothing to flush.
         return x as f32;
     }
     // The subnormal range: the nearest multiple of 2⁻¹⁴⁹, as an integer

@@ -115,6 +115,18 @@ pub(crate) struct Classes<L: Real> {
     pub(crate) lin: L::Mask,
 }
 
+impl<L: Real> Classes<L> {
+    /// The lanes with α = 0 exactly whose `|β̂|` passes the filter's test
+    /// for the linear root, `|β̂| > E_β = 24u m_β` (twice this pass's root
+    /// bound `E_β`): the only α = 0 lanes the quotients can decide. The
+    /// others (β = 0 too: no root, or the line on the surface) go to the
+    /// scalar stages without them.
+    #[inline(always)]
+    pub(crate) fn linear(&self) -> L::Mask {
+        self.lin & self.beta.abs().gt(self.eb + self.eb)
+    }
+}
+
 /// A sum and the sum of its terms' magnitudes.
 #[derive(Clone, Copy)]
 struct Summed<L>(L, L);

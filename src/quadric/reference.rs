@@ -115,36 +115,6 @@ fn two(ray: &Ray, quadric: &Quadric, t0: f64, t1: f64) -> (QuadricHit, Stage) {
     (QuadricHit::Two(t0 as f32, t1 as f32), Stage::Filter)
 }
 
-/// The stages after the filter: f64 arithmetic that proves itself exact
-/// ([`stages::tracked`]), double-word arithmetic
-/// ([`stages::double_word`]), both by [`stages::later`], then the exact
-/// oracle. The later stages,
-/// too, assume subnormals work where an input or a result is subnormal
-/// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
-/// its undecided lanes here, and all of them when FTZ or DAZ is on.
-#[cold]
-#[inline(never)]
-pub(crate) fn escalate(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
-    escalate_shrunk(ray, quadric, 1.0)
-}
-
-/// [`escalate`] with the bounds of its stages multiplied by `shrink`.
-#[cold]
-#[inline(never)]
-fn escalate_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHit, Stage) {
-    if denormals_are_zero() && needs_probe(&inputs(ray, quadric), &[]) {
-        return (exact_stage(ray, quadric), Stage::Exact);
-    }
-    let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
-    later(
-        ray,
-        quadric,
-        stages::classes_paired(&k, o, d, 1.0).left(),
-        shrink,
-    )
-}
-
 /// [`stages::later`] on inputs already checked by [`needs_probe`], widened
 /// here rather than passed: the fast path would otherwise store the
 /// widened inputs to memory on every call, for a call it rarely makes.
@@ -170,13 +140,87 @@ fn later_in(
     let left = stages::Left { alpha, beta, gamma };
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let inputs = || (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
+    later_with(inputs, || (*ray, *quadric), left, shrink)
+}
+
+/// [`later`] on the inputs that `inputs` widens where they lie (each
+/// stage calls it again rather than keep widened values, see
+/// [`stages::later_of`]); `line` gives them as a ray and a quadric, for
+/// the oracle.
+#[inline(always)]
+fn later_with<I>(
+    inputs: I,
+    line: impl Fn() -> (Ray, Quadric),
+    left: stages::Left,
+    shrink: f64,
+) -> (QuadricHit, Stage)
+where
+    I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
+{
+    let exact = || {
+        let (ray, quadric) = line();
+        (exact_stage(&ray, &quadric), Stage::Exact)
+    };
     match stages::later_of(inputs, left, shrink) {
-        Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => {
-            (exact_stage(ray, quadric), Stage::Exact)
-        }
+        Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => exact(),
         Some(hs) => hs,
-        None => (exact_stage(ray, quadric), Stage::Exact),
+        None => exact(),
     }
+}
+
+/// The whole reference for lane `i` of x4's packets (`coeffs` the
+/// quadrics' coefficients widened, lane by lane): the filter, then the
+/// stages after it ([`stages::later`]) and the exact oracle. The later
+/// stages, too, assume subnormals work where an input or a result is
+/// subnormal ([`needs_probe`], [`flush_prone`]), so this checks for
+/// itself: x4 sends its undecided lanes here, and all of them when FTZ or
+/// DAZ is on. The inputs are read from the packets where they lie: a ray
+/// and a quadric built on the stack and read back at other widths stalled
+/// store forwarding on every lane (`rayoracle report`, x4 on
+/// quadric/line-on-surface: 72 against 37 ns a ray).
+#[cold]
+#[inline(never)]
+pub(crate) fn escalate_lane(
+    rays: &crate::ray4::Ray4,
+    coeffs: &[[f64; 4]; 10],
+    i: usize,
+) -> (QuadricHit, Stage) {
+    let lane = |v: &[wide::f32x4; 3]| v.map(|x| x.as_array()[i]);
+    let line = || {
+        let (o, d) = (lane(&rays.origin), lane(&rays.dir));
+        let mut k = [0.0; 10];
+        for (k, w) in k.iter_mut().zip(coeffs) {
+            *k = crate::num::certify::narrow_exact(w[i]);
+        }
+        (
+            Ray::new(glam::Vec3::from(o), glam::Vec3::from(d)),
+            Quadric::new(k),
+        )
+    };
+    let inputs = || {
+        let mut k = [0.0; 10];
+        for (k, w) in k.iter_mut().zip(coeffs) {
+            *k = w[i];
+        }
+        let w = |v: &[wide::f32x4; 3]| {
+            let x = lane(v);
+            [f64::from(x[0]), f64::from(x[1]), f64::from(x[2])]
+        };
+        (k, w(&rays.origin), w(&rays.dir))
+    };
+    if denormals_are_zero() {
+        let (ray, quadric) = line();
+        if needs_probe(&self::inputs(&ray, &quadric), &[]) {
+            return (exact_stage(&ray, &quadric), Stage::Exact);
+        }
+    }
+    let (k, o, d) = inputs();
+    later_with(
+        inputs,
+        line,
+        stages::classes_paired(&k, o, d, 1.0).left(),
+        1.0,
+    )
 }
 
 /// The coefficients in f64, by a plain loop: `array::map` is not always
@@ -209,6 +253,12 @@ fn exact_stage(ray: &Ray, quadric: &Quadric) -> QuadricHit {
 mod tests {
     use super::*;
     use glam::Vec3;
+
+    /// x4's way into the scalar stages for one line, in lane 0.
+    fn escalate(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
+        let q = super::super::x4::Quadric4::splat(quadric);
+        escalate_lane(&crate::ray4::Ray4::splat(*ray), q.f64_lanes(), 0)
+    }
 
     /// A unit sphere written as a quadric, touched by a line at `t =
     /// 2⁻¹⁴⁰`, a subnormal f32 that the tracked stage finds from a

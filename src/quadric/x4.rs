@@ -59,6 +59,12 @@ impl Quadric4 {
     pub fn coeffs(&self) -> [f32x4; 10] {
         self.wide.map(|c| f32x4::from(c.map(narrow_exact)))
     }
+    /// `[A … J]` widened, lane `i` from quadric `i`: what the kernels and
+    /// the scalar stages read.
+    #[inline(always)]
+    pub(crate) fn f64_lanes(&self) -> &[[f64; 4]; 10] {
+        &self.wide
+    }
     /// The same quadric in every lane.
     ///
     /// ```
@@ -374,7 +380,7 @@ fn decide_sorted<L: Real>(c: &lanes::Classes<L>, f: lanes::Sorted<L>) -> (Decide
         lo: L::select(two, lo, nan),
         hi: L::select(two, hi, nan),
     };
-    (x, (c.two & !two) | c.lin)
+    (x, (c.two & !two) | c.linear())
 }
 
 /// The whole packet by the filter's quotients ([`decide`]), on the
@@ -437,13 +443,10 @@ impl QuadricHit4 {
     fn settle(h: [i32x4; 3], done: i32x4, ray: &Ray4, q: &Quadric4) -> Self {
         let [class, t0, t1] = h;
         let (t0, t1): (f32x4, f32x4) = (cast(t0), cast(t1));
-        let rays = ray.to_rays();
-        let k = q.coeffs().map(|c| c.to_array());
         let (mut class, mut t0, mut t1) = (class.to_array(), t0.to_array(), t1.to_array());
         let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
-            let quadric = Quadric::new(k.map(|c| c[i]));
-            (class[i], t0[i], t1[i]) = match reference::escalate(&rays[i], &quadric).0 {
+            (class[i], t0[i], t1[i]) = match reference::escalate_lane(ray, q.f64_lanes(), i).0 {
                 QuadricHit::None => (NONE, f32::NAN, f32::NAN),
                 QuadricHit::One(t) => (ONE, t, t),
                 QuadricHit::Two(a, b) => (TWO, a, b),
