@@ -3,7 +3,6 @@
 //! agree bit for bit with [`super::reference`](mod@super::reference) by construction.
 
 use super::{Sphere, SphereHit, reference, stages};
-use crate::Ray;
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{
@@ -443,18 +442,11 @@ impl SphereHit4 {
     fn settle(h: [i32x4; 3], done: i32x4, ray: &Ray4, s: &Sphere4) -> Self {
         let [class, t0, t1] = h;
         let (t0, t1): (f32x4, f32x4) = (cast(t0), cast(t1));
-        let [o, d, c] = [ray.origin, ray.dir, s.center].map(|v| v.map(f32x4::to_array));
-        let r = s.radius.to_array();
-        let lane = |v: [[f32; 4]; 3], i: usize| glam::Vec3::new(v[0][i], v[1][i], v[2][i]);
         let (mut class, mut t0, mut t1) = (class.to_array(), t0.to_array(), t1.to_array());
         let env = subnormals_work();
         let done = (done & i32x4::splat(-i32::from(env))).to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
-            let (ray, sphere) = (
-                Ray::new(lane(o, i), lane(d, i)),
-                Sphere::new(lane(c, i), r[i]),
-            );
-            let (k, a, b) = match reference::escalate(&ray, &sphere, env).0 {
+            let (k, a, b) = match reference::escalate_lane(ray, s, i, env).0 {
                 SphereHit::None => (NONE, f32::NAN, f32::NAN),
                 SphereHit::Tangent(t) => (ONE, t, t),
                 SphereHit::Two(a, b) => (TWO, a, b),
