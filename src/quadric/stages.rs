@@ -893,14 +893,9 @@ fn double_word_rest<P: Product>(
 /// [`grid`].
 ///
 /// Where each is one exact f64, `Δ/4 = (β/2)² − αγ` is first taken from
-/// the two products' TwoProduct words `h₁ + l₁` and `h₂ + l₂`: `Δ/4 =
-/// (h₁ − h₂) + (l₁ − l₂)`, three roundings, each within `u` of its own
-/// result (round to nearest, no underflow: every word is a multiple of
-/// `g²/4 ≥ 2⁻⁸⁹⁶`), so `E = u(|d̂ₕ| + |d̂ₗ| + |Δ̂|)` for the two
-/// differences and their sum. That decides the sign and gives the roots
-/// wherever `Δ ≠ 0`; an exact `Δ = 0` makes every word of the two
-/// products equal (TwoProduct's split of a value is unique), so `Δ̂ = 0`
-/// is never decided here and takes the exact sum below.
+/// the two products' TwoProduct words ([`single_word_disc`]), which
+/// decides the sign and gives the roots wherever `Δ ≠ 0`; an exact `Δ =
+/// 0` takes the exact sum below.
 #[inline(always)]
 fn double_word_coefficients<P: Product>(
     grid: f64,
@@ -949,19 +944,12 @@ fn double_word_coefficients<P: Product>(
         }
     }
     if exact {
-        // One word each: Δ/4 = (h₁ − h₂) + (l₁ − l₂) from the products'
-        // TwoProduct words, within `u` of each of the three roundings'
-        // results (no underflow: see below).
-        let (h1, l1) = P::two_prod(b.hi, b.hi);
-        let (h2, l2) = P::two_prod(alpha.hi, gamma.hi);
-        let (dh, dl) = (h1 - h2, l1 - l2);
-        let v = dh + dl;
-        let e = U * (dh.abs() + dl.abs() + v.abs()) * SLACK;
-        if v.abs() > e * shrink {
-            if v < 0.0 {
+        let disc = single_word_disc::<P>(alpha.hi, b.hi, gamma.hi);
+        if disc.v.abs() > disc.e * shrink {
+            if disc.v < 0.0 {
                 return Some(QuadricHit::None);
             }
-            if let Some((t0, t1)) = two_roots(a, bb, c, Approx { v, e }, shrink) {
+            if let Some((t0, t1)) = two_roots(a, bb, c, disc, shrink) {
                 return Some(QuadricHit::Two(t0, t1));
             }
         }
@@ -999,6 +987,24 @@ fn double_word_coefficients<P: Product>(
     }
     let (t0, t1) = two_roots(a, bb, c, disc.approx(), shrink)?;
     Some(QuadricHit::Two(t0, t1))
+}
+
+/// `Δ/4 = b² − ac` for single exact words `a`, `b` and `c` (the data's
+/// products, multiples of `g²/4 ≥ 2⁻⁸⁹⁶`: no underflow), from the
+/// TwoProduct words `h₁ + l₁ = b²` and `h₂ + l₂ = ac`: `Δ/4 = (h₁ − h₂) +
+/// (l₁ − l₂)`, three roundings. Each rounds to nearest, so it is within
+/// `u` of its own result: `E = u(|d̂ₕ| + |d̂ₗ| + |Δ̂|)` for the two
+/// differences and their sum (the bound's own roundings in [`SLACK`]).
+/// Where `Δ = 0` the two products' words are equal (TwoProduct's split of
+/// a value is unique), so `Δ̂ = 0`, which no bound decides.
+#[inline(always)]
+fn single_word_disc<P: Product>(a: f64, b: f64, c: f64) -> Approx {
+    let (h1, l1) = P::two_prod(b, b);
+    let (h2, l2) = P::two_prod(a, c);
+    let (dh, dl) = (h1 - h2, l1 - l2);
+    let v = dh + dl;
+    let e = U * (dh.abs() + dl.abs() + v.abs()) * SLACK;
+    Approx { v, e }
 }
 
 /// `Δ/4 = b² − ac` in f64 from approximations with bounds, and a bound on
@@ -1533,6 +1539,51 @@ mod tests {
         assert!(
             both > 10_000 && neither > 1_000 && one * 100 < both,
             "{both} {neither} {one}"
+        );
+    }
+
+    /// [`single_word_disc`]'s bound holds, `|Δ̂ − Δ| ≤ E` against the
+    /// exact `Δ/4 = b² − ac` in dyadic rationals, on single words `a`, `b`
+    /// and `c` that are products of two f32 values (as α, β/2 and γ are
+    /// on integer quadrics and rays on coarse grids), with `b² ≈ ac` to
+    /// within a few units in the last place in half the cases; and it is
+    /// not four times too wide: some errors exceed `E/4`, so a bound
+    /// shrunk to a quarter would certify wrong values. A `Δ̂` whose sign
+    /// the bound decides has the exact sign.
+    #[test]
+    fn the_single_word_discriminant_is_within_its_bound() {
+        use crate::exact::Dyadic;
+        let mut rng = SmallRng::seed_from_u64(0x5_1d15c);
+        let f = |rng: &mut SmallRng| {
+            let m = rng.random_range(1u32..1 << 24) as f32;
+            let s = if rng.random() { -1.0 } else { 1.0 };
+            f64::from(s * m * 2f32.powi(rng.random_range(-40..0)))
+        };
+        let (mut over_quarter, mut decided) = (0, 0);
+        for n in 0..20_000 {
+            let (a, b) = (f(&mut rng) * f(&mut rng), f(&mut rng) * f(&mut rng));
+            let c = if n % 2 == 0 {
+                // b²/a to a few units in the last place: Δ near 0.
+                let q = b * b / a;
+                f64::from_bits(q.to_bits().wrapping_add_signed(rng.random_range(-3..4)))
+            } else {
+                f(&mut rng) * f(&mut rng)
+            };
+            let disc = single_word_disc::<Dekker>(a, b, c);
+            let d = |x: f64| Dyadic::from_f64(x);
+            let exact = &(&d(b) * &d(b)) - &(&d(a) * &d(c));
+            let err = &d(disc.v) - &exact;
+            let err = if err.signum() < 0 { -err } else { err };
+            assert!(err <= d(disc.e), "{a:e} {b:e} {c:e}");
+            over_quarter += usize::from(err > d(0.25 * disc.e));
+            if disc.v.abs() > disc.e {
+                assert_eq!(disc.v.signum() as i32, exact.signum(), "{a:e} {b:e} {c:e}");
+                decided += 1;
+            }
+        }
+        assert!(
+            over_quarter > 100 && decided > 10_000,
+            "{over_quarter} {decided}"
         );
     }
 
