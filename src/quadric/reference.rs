@@ -262,8 +262,8 @@ mod tests {
 
     /// A unit sphere written as a quadric, touched by a line at `t =
     /// 2⁻¹⁴⁰`, a subnormal f32 that the tracked stage finds from a
-    /// subnormal origin. x4's way into the later stages, [`escalate`],
-    /// takes the reference's stage (it probes the inputs only under DAZ);
+    /// subnormal origin. x4's way into the later stages
+    /// ([`escalate_lane`], here in lane 0) takes the reference's stage (it probes the inputs only under DAZ);
     /// under flush-to-zero, where rounding the root to f32 gives 0, the
     /// oracle answers instead, as it does under denormals-are-zero.
     #[cfg(target_arch = "x86_64")]

@@ -192,7 +192,8 @@ fn widen(ray: &Ray, sphere: &Sphere) -> Wide {
     )
 }
 
-/// [`escalate`] on inputs already widened and probed, with the filter's
+/// The stages after the filter ([`escalate_lane`]'s) on inputs already
+/// widened and probed, with the filter's
 /// classes `k` (by value: see [`uncertified`]) and the bounds of its
 /// stages multiplied by `shrink`; on a CPU with FMA
 /// ([`Fma`](crate::num::dd::Fma)), a copy compiled for it,
