@@ -185,7 +185,11 @@ pub(crate) fn escalate_lane(
     coeffs: &[[f64; 4]; 10],
     i: usize,
 ) -> (QuadricHit, Stage) {
-    let lane = |v: &[wide::f32x4; 3]| v.map(|x| x.as_array()[i]);
+    // Written out: `array::map` is not always inlined.
+    let lane = |v: &[wide::f32x4; 3]| {
+        let x = |j: usize| v[j].as_array()[i];
+        [x(0), x(1), x(2)]
+    };
     let line = || {
         let (o, d) = (lane(&rays.origin), lane(&rays.dir));
         let mut k = [0.0; 10];
@@ -263,8 +267,8 @@ mod tests {
     /// A unit sphere written as a quadric, touched by a line at `t =
     /// 2⁻¹⁴⁰`, a subnormal f32 that the tracked stage finds from a
     /// subnormal origin. x4's way into the later stages
-    /// ([`escalate_lane`], here in lane 0) takes the reference's stage (it probes the inputs only under DAZ);
-    /// under flush-to-zero, where rounding the root to f32 gives 0, the
+    /// ([`escalate_lane`], here in lane 0) takes the reference's stage
+    /// (it probes the inputs only under DAZ); under flush-to-zero, where rounding the root to f32 gives 0, the
     /// oracle answers instead, as it does under denormals-are-zero.
     #[cfg(target_arch = "x86_64")]
     #[test]

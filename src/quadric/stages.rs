@@ -1543,10 +1543,10 @@ mod tests {
     }
 
     /// [`single_word_disc`]'s bound holds, `|Δ̂ − Δ| ≤ E` against the
-    /// exact `Δ/4 = b² − ac` in dyadic rationals, on single words `a`, `b`
-    /// and `c` that are products of two f32 values (as α, β/2 and γ are
-    /// on integer quadrics and rays on coarse grids), with `b² ≈ ac` to
-    /// within a few units in the last place in half the cases; and it is
+    /// exact `Δ/4 = b² − ac` in dyadic rationals, on single words: `a` and
+    /// `b` products of two f32 values, `c` another such product or, in
+    /// half the cases, `b²/a` moved by a few units in the last place, so
+    /// that `b² ≈ ac`; and it is
     /// not four times too wide: some errors exceed `E/4`, so a bound
     /// shrunk to a quarter would certify wrong values. A `Δ̂` whose sign
     /// the bound decides has the exact sign.
