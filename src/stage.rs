@@ -51,7 +51,8 @@ pub enum Stage {
     Tracked,
     /// f64 arithmetic in a better-conditioned form with a tighter bound
     /// (the sphere's discriminant after Ray Tracing Gems ch. 7, the
-    /// plane's `d·n` as an exact sum); scalar.
+    /// plane's `d·n` as an exact sum, the quadric's coefficients in
+    /// double words with running bounds); scalar.
     Tight,
     /// Double-word arithmetic, exact where no low word rounded, with a
     /// bound otherwise ([`crate::num::dd`]).

@@ -6,7 +6,7 @@
 //! the larger ones of the full filter. Each stage that certifies with a
 //! bound (the plane's first and second passes, tight and double-word stages; the
 //! sphere's tight, compensated and double-word stages; the quadric's
-//! tight and double-word stages, and the first pass of its x4 kernel,
+//! words, tight and double-word stages, and the first pass of its x4 kernel,
 //! `quadric::x4::first_pass_shrunk`) is called alone, every bound it uses multiplied by
 //! a factor `s < 1` (the x4 first pass twice: its class bounds alone,
 //! `x4-class`, and its roots' bound alone, `x4-roots`), on the cases of
@@ -136,6 +136,12 @@ fn quadric_tight(c: &Case, s: f64) -> Option<Answer> {
     quadric::stages::tight(&k, w(r.origin), w(r.dir), s).map(|h| answer(&h))
 }
 
+fn quadric_words(c: &Case, s: f64) -> Option<Answer> {
+    let Case::Quadric(r, q) = c else { return None };
+    let k = q.coeffs.map(f64::from);
+    quadric::stages::words(&k, w(r.origin), w(r.dir), s).map(|h| answer(&h))
+}
+
 fn quadric_square(c: &Case, s: f64) -> Option<Answer> {
     let Case::Quadric(r, q) = c else { return None };
     let k = q.coeffs.map(f64::from);
@@ -152,7 +158,7 @@ fn quadric_x4_roots(c: &Case, s: f64) -> Option<Answer> {
     quadric::x4::first_pass_shrunk(r, q, 1.0, s).map(|h| answer(&h))
 }
 
-const STAGES: [Staged; 10] = [
+const STAGES: [Staged; 11] = [
     Staged {
         kind: "plane",
         name: "first",
@@ -203,6 +209,11 @@ const STAGES: [Staged; 10] = [
         name: "tight",
         run: quadric_tight,
     },
+    Staged {
+        kind: "quadric",
+        name: "words",
+        run: quadric_words,
+    },
 ];
 
 /// The quadric's perfect-square stage (`quadric::square`), which no
@@ -244,6 +255,15 @@ const SQUARE: Staged = Staged {
 /// went one way ([`quadric_cancelling_seeds`]): the roots are off by
 /// about 0.29 of the relative part `w = E_α/|α̂|` that leads their bound.
 ///
+/// The quadric's words stage (`quadric::stages::words`) at a quarter,
+/// by searched cases on which, as on the double-word stage's double
+/// planes, the sign test of `Δ/4` from the leading words
+/// (`quadric::stages::disc_near`, `|Δ̂| > 2E`) decides: with that test
+/// alone left unshrunk, neither stage is wrong at any factor. Its
+/// coefficients' bound, `1024u²` times the terms' magnitudes, is caught
+/// only with the rest: the errors found on cancelling data reach a few
+/// `u²` times them (`quadric::stages` tests).
+///
 /// The quadric's tight stage at an eighth, by lines from just off a
 /// quadric's surface ([`quadric_near_surface_seeds`]), wrong up to about
 /// 2^-2.75; a quarter is out of its reach. It decides with the filter's
@@ -264,7 +284,7 @@ const SQUARE: Staged = Staged {
 /// `24u` into `γ̂`, 0.14 of `E_γ`; the committed ones reach 0.149. Their
 /// `β` does not cancel, so they catch `E_γ` cut to an eighth, not `E_β`
 /// alone.
-const CAUGHT_AT: [(&str, f64); 10] = [
+const CAUGHT_AT: [(&str, f64); 11] = [
     ("bounds/plane/first", 0.5),
     ("bounds/plane/second", 0.25),
     ("bounds/plane/tight", 0.25),
@@ -275,6 +295,7 @@ const CAUGHT_AT: [(&str, f64); 10] = [
     ("bounds/quadric/x4-class", 0.25),
     ("bounds/quadric/x4-roots", 0.25),
     ("bounds/quadric/tight", 0.125),
+    ("bounds/quadric/words", 0.25),
 ];
 
 impl Staged {

@@ -45,6 +45,10 @@
 //! stages ([`stages::later`]), and what they leave to the exact oracle
 //! ([`exact`]). In order:
 //!
+//! * where nothing looks exactly 0, α, β and γ in double words within
+//!   about `u²` of their terms' magnitudes, without a grid, and the roots
+//!   from them ([`stages::words`]): lines nearly parallel to a rotated
+//!   cylinder's axis, whose α and β cancel;
 //! * a perfect square, the double plane, whose `Δ` is 0 on every line,
 //!   proved by exact products of its coefficients ([`square`]);
 //! * the filter's own α̂, β̂ and γ̂ where a grid test proves them exact,

@@ -68,10 +68,13 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
             later(ray, quadric, c.left(), shrink)
         };
     }
-    if c.two
-        && let Some((t0, t1)) = stages::sorted(&c, shrink)
-    {
-        return two(ray, quadric, t0, t1);
+    if c.two {
+        if let Some((t0, t1)) = stages::sorted(&c, shrink) {
+            return two(ray, quadric, t0, t1);
+        }
+        if c.alpha_too_coarse() {
+            return later(ray, quadric, c.left(), shrink);
+        }
     }
     quotients(ray, quadric, c, shrink)
 }

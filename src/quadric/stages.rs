@@ -69,7 +69,7 @@ use crate::num::dd::Fma;
 #[cfg(any(target_arch = "x86_64", target_feature = "fma"))]
 use crate::num::dd::Fused;
 use crate::num::dd::{
-    Acc, Approx, BuildProduct, Dd, Dekker, GridAcc, Product, quotient, two_roots,
+    Acc, Approx, BuildProduct, Dd, Dekker, GridAcc, Product, quotient, two_roots, two_sum,
 };
 use crate::num::real::Real;
 use crate::num::tracked::Tracked;
@@ -230,6 +230,14 @@ pub(crate) struct Classes<L: Real> {
 }
 
 impl Classes<f64> {
+    /// Whether `E_α/|α̂| ≥ 2⁻²⁴`: `q̂/α̂` is then within no less than that
+    /// of `q/α` relatively, so its enclosure spans an f32 spacing and with
+    /// it a rounding boundary (bar a root beyond f32's range), and no pair
+    /// of roots certifies. The scalar reference then skips the quotients.
+    #[inline(always)]
+    pub(crate) fn alpha_too_coarse(&self) -> bool {
+        self.ea * 16_777_216.0 >= self.alpha.abs()
+    }
     /// What the later stages take from the filter.
     #[inline(always)]
     pub(crate) fn left(&self) -> Left {
@@ -903,6 +911,59 @@ fn double_word_coefficients<P: Product>(
     (alpha, beta, gamma): (Dd, Dd, Dd),
     shrink: f64,
 ) -> Option<QuadricHit> {
+    let h = match decide_words::<P>(exact, (alpha, beta, gamma), shrink) {
+        Some(h) => return h,
+        None => beta.scale(0.5),
+    };
+    // β/2's words are multiples of g/2, α's and γ's of g: the products,
+    // of g²/4 (at least 2⁻⁸⁹⁶, a normal f64).
+    let mut disc = GridAcc::wide();
+    if exact {
+        // One word each: the two exact products alone.
+        disc.add_pair(P::two_prod(h.hi, h.hi));
+        disc.add_pair(P::two_prod(-alpha.hi, gamma.hi));
+    } else {
+        disc.add_square_by::<P>(h);
+        disc.add_dd_prod_by::<P>(alpha.scale(-1.0), gamma);
+    }
+    let mut disc = disc.finish(grid * grid * 0.25);
+    // As for the coefficients: where exact data fails the grid test, the
+    // sum with every low addition checked.
+    if disc.err != 0.0 && alpha.err == 0.0 && beta.err == 0.0 && gamma.err == 0.0 {
+        let mut acc = Acc::wide();
+        acc.add_dd_prod(h, h);
+        acc.add_dd_prod(alpha.scale(-1.0), gamma);
+        disc = acc.finish();
+    }
+    let class = disc.shrunk(shrink);
+    if class.is_zero() {
+        let t = quotient(-h.approx(), alpha.approx(), shrink)?;
+        return Some(QuadricHit::One(t));
+    }
+    if !class.sign_known() {
+        return None;
+    }
+    if disc.hi < 0.0 {
+        return Some(QuadricHit::None);
+    }
+    let (a, b, c) = (alpha.approx(), h.approx(), gamma.approx());
+    let (t0, t1) = two_roots(a, b, c, disc.approx(), shrink)?;
+    Some(QuadricHit::Two(t0, t1))
+}
+
+/// The double-word stage's classes and roots from α, β and γ as double
+/// words with their bounds (`exact` where each is one f64, exactly),
+/// without the exact sum of `Δ`: `Some` with the stage's answer (`None`
+/// in it where the stage cannot decide), or `None` where only the exact
+/// sum of `Δ` can. α's zero and sign, and β's and γ's where α = 0, from
+/// their bounds; then `Δ` from the leading words ([`disc_near`]) where
+/// the sums are not exact, from [`single_word_disc`] where they are.
+#[inline(always)]
+fn decide_words<P: Product>(
+    exact: bool,
+    (alpha, beta, gamma): (Dd, Dd, Dd),
+    shrink: f64,
+) -> Option<Option<QuadricHit>> {
     // The bounds as derived; `shrink` scales each once, where it decides:
     // the classes through `shrunk`, the roots in `quotient`, `disc_near`'s
     // test and `two_roots`.
@@ -912,21 +973,20 @@ fn double_word_coefficients<P: Product>(
         gamma.shrunk(shrink),
     );
     if sa.is_zero() {
-        return if sb.is_zero() {
+        return Some(if sb.is_zero() {
             if sg.is_zero() {
                 Some(QuadricHit::All)
             } else {
                 sg.sign_known().then_some(QuadricHit::None)
             }
         } else if sb.sign_known() {
-            let t = quotient(-gamma.approx(), beta.approx(), shrink)?;
-            Some(QuadricHit::One(t))
+            quotient(-gamma.approx(), beta.approx(), shrink).map(QuadricHit::One)
         } else {
             None
-        };
+        });
     }
     if !sa.sign_known() {
-        return None;
+        return Some(None);
     }
     let b = beta.scale(0.5);
     let (a, bb, c) = (alpha.approx(), b.approx(), gamma.approx());
@@ -937,56 +997,24 @@ fn double_word_coefficients<P: Product>(
     let near = disc_near(a, bb, c, 1.0);
     if !exact && near.v.abs() > 2.0 * near.e * shrink {
         if near.v < 0.0 {
-            return Some(QuadricHit::None);
+            return Some(Some(QuadricHit::None));
         }
         if let Some((t0, t1)) = two_roots(a, bb, c, near, shrink) {
-            return Some(QuadricHit::Two(t0, t1));
+            return Some(Some(QuadricHit::Two(t0, t1)));
         }
     }
     if exact {
         let disc = single_word_disc::<P>(alpha.hi, b.hi, gamma.hi);
         if disc.v.abs() > disc.e * shrink {
             if disc.v < 0.0 {
-                return Some(QuadricHit::None);
+                return Some(Some(QuadricHit::None));
             }
             if let Some((t0, t1)) = two_roots(a, bb, c, disc, shrink) {
-                return Some(QuadricHit::Two(t0, t1));
+                return Some(Some(QuadricHit::Two(t0, t1)));
             }
         }
     }
-    // β/2's words are multiples of g/2, α's and γ's of g: the products,
-    // of g²/4 (at least 2⁻⁸⁹⁶, a normal f64).
-    let mut disc = GridAcc::wide();
-    if exact {
-        // One word each: the two exact products alone.
-        disc.add_pair(P::two_prod(b.hi, b.hi));
-        disc.add_pair(P::two_prod(-alpha.hi, gamma.hi));
-    } else {
-        disc.add_square_by::<P>(b);
-        disc.add_dd_prod_by::<P>(alpha.scale(-1.0), gamma);
-    }
-    let mut disc = disc.finish(grid * grid * 0.25);
-    // As for the coefficients: where exact data fails the grid test, the
-    // sum with every low addition checked.
-    if disc.err != 0.0 && alpha.err == 0.0 && beta.err == 0.0 && gamma.err == 0.0 {
-        let mut acc = Acc::wide();
-        acc.add_dd_prod(b, b);
-        acc.add_dd_prod(alpha.scale(-1.0), gamma);
-        disc = acc.finish();
-    }
-    let class = disc.shrunk(shrink);
-    if class.is_zero() {
-        let t = quotient(-b.approx(), alpha.approx(), shrink)?;
-        return Some(QuadricHit::One(t));
-    }
-    if !class.sign_known() {
-        return None;
-    }
-    if disc.hi < 0.0 {
-        return Some(QuadricHit::None);
-    }
-    let (t0, t1) = two_roots(a, bb, c, disc.approx(), shrink)?;
-    Some(QuadricHit::Two(t0, t1))
+    None
 }
 
 /// `Δ/4 = b² − ac` for single exact words `a`, `b` and `c` (the data's
@@ -1140,7 +1168,8 @@ fn tight_by<P: Product>(
 }
 
 /// The stages after the filter, with the products' errors found by `P`,
-/// and the stage that answered: [`later_head`], then [`tracked`] and
+/// and the stage that answered: [`words`] where [`words_first`] says so,
+/// the perfect square, [`later_head`], then [`tracked`] and
 /// [`double_word`] on one computation of the exact terms.
 #[inline(always)]
 fn later_by<P: Product>(
@@ -1150,6 +1179,15 @@ fn later_by<P: Product>(
     left: Left,
     shrink: f64,
 ) -> Option<(QuadricHit, Stage)> {
+    if words_first(&left) {
+        let m = [left.alpha.1, left.beta.1, left.gamma.1];
+        if let Some(h) = words_by::<P>(k, o, d, m, shrink) {
+            return Some((h, Stage::Tight));
+        }
+    }
+    if let Some(h) = super::square::intersect(k, o, d, shrink) {
+        return Some((h, Stage::Tight));
+    }
     let g = match later_head::<P>(k, o, d, left, shrink) {
         Ok(h) => return h,
         Err(g) => g,
@@ -1195,8 +1233,156 @@ where
     double_word_coefficients::<Fused>(g, single, (a, b, c), shrink).map(|h| (h, Stage::DoubleWord))
 }
 
-/// The first of the stages after the filter, with the products' errors
-/// found by `P`: a perfect square ([`super::square`]); where the filter's
+/// [`words`] inside the copy compiled for AVX2 and FMA, its sums on four
+/// lanes ([`super::words::bounded`]; the same words as
+/// [`bounded_words`]), the inputs widened again from `inputs`.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+#[inline(never)]
+fn words_avx<I>(_: Avx2, inputs: &I, m: [f64; 3], shrink: f64) -> Option<QuadricHit>
+where
+    I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
+{
+    let (k, o, d) = inputs();
+    decide_words::<Fused>(false, super::words::bounded(&k, o, d, m).into(), shrink).flatten()
+}
+
+/// The words stage: α, β and γ in double words with their bounds, then
+/// the classes and the roots as the double-word stage takes them from
+/// inexact words: α's sign from its bound, `Δ/4 = (β/2)² − αγ` from the
+/// leading words ([`disc_near`]), the roots by [`two_roots`]. The
+/// coefficients are within about `u²` of their terms' magnitudes, where
+/// the filter's are within `E_α`, `E_β`: it settles lines nearly
+/// parallel to a rotated cylinder's axis, whose α and β cancel. It
+/// decides no exact zero (its bounds are positive wherever a sum has a
+/// nonzero term), which the later stages settle. Every bound is
+/// multiplied by `shrink`. `None` where nothing is certain.
+///
+/// # The sums
+///
+/// Four sums, as on four lanes (`quadric::words`), one per quadratic
+/// coefficient's terms of α, β (two halves) and γ: each term split by
+/// TwoProduct (exact, see [`double_word`]), its leading word added by
+/// TwoSum and both errors added to the low word by plain additions; β's
+/// halves joined by one more TwoSum; no grid and no check per addition.
+///
+/// Each coefficient is exactly its leading word plus the low values:
+/// TwoProduct's errors, each within `u` of its term's product, and
+/// TwoSum's, each within `u` of a partial sum of leading words, which is
+/// at most `m(1 + 20u)`, `m` the filter's sum of the terms' magnitudes
+/// (`m_α`, `m_β`, `m_γ`, within `10u` of the exact ones). A lane has six
+/// products and nine TwoSums, and β's two lanes one TwoSum more to join
+/// them: the low values' magnitudes sum below `10u·m` for α and γ and
+/// `20u·m` for β. Summed in any order, `n` values are within `γₙ₋₁`
+/// times their magnitudes' sum of their sum; `n ≤ 31`, and `γ₃₀·20u <
+/// 620u²`. So **`E = 1024u²m`**, widened by [`SLACK`]; the renormalising
+/// TwoSum is exact. `m = 0` gives `E = 0`, rightly: every term is 0, and
+/// every word. The errors found on cancelling data reach a few `u²m`.
+///
+/// The reference runs it first after the filter where α̂, γ̂ and `Δ̂` are
+/// nonzero and `|Δ̂| > 2⁻²⁰β̂²/4`, as they are where nothing is exactly 0;
+/// it counts as the tight stage.
+///
+/// ```
+/// use rayoracle::quadric::{QuadricHit, stages::words};
+/// // The cylinder of radius 1 around the axis (1, 1, 0), along that
+/// // axis tilted by ε = 2⁻²⁰: α = ½ + ½(1 + ε)² − (1 + ε) = ε²/2 cancels
+/// // from terms near 1, the roots are ±√(3/2)/ε.
+/// let cyl = [0.5, 0.5, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+/// let (o, d) = ([0.0, 0.0, 0.5], [1.0, 1.0 + 2f64.powi(-20), 0.0]);
+/// let t = 1.5f64.sqrt() * 2f64.powi(20);
+/// assert_eq!(words(&cyl, o, d, 1.0), Some(QuadricHit::Two(-t as f32, t as f32)));
+/// ```
+pub fn words(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<QuadricHit> {
+    let left = classes_paired(k, o, d, 1.0).left();
+    let m = [left.alpha.1, left.beta.1, left.gamma.1];
+    words_by::<Dekker>(k, o, d, m, shrink)
+}
+
+/// [`words`] with the products' errors found by `P`, from the filter's
+/// magnitude sums `m`.
+#[inline(always)]
+fn words_by<P: Product>(
+    k: &[f64; 10],
+    o: [f64; 3],
+    d: [f64; 3],
+    m: [f64; 3],
+    shrink: f64,
+) -> Option<QuadricHit> {
+    decide_words::<P>(false, bounded_words::<P>(k, o, d, m).into(), shrink).flatten()
+}
+
+/// Whether the reference tries [`words`] first: α̂, γ̂ and `Δ̂` nonzero,
+/// and `Δ̂/4 = (β̂/2)² − α̂γ̂` above `2⁻²⁰(β̂/2)²` in magnitude. Exact zeros
+/// (α = 0, a line on the surface, a double root) come out as exact zeros
+/// of small-integer and dyadic data, or, for a double plane, as a `Δ̂`
+/// of rounding errors far below `(β̂/2)²`: these take the stages that
+/// decide them first. A guess, which only orders the stages.
+#[inline(always)]
+fn words_first(left: &Left) -> bool {
+    let (a, b, c) = (left.alpha.0, 0.5 * left.beta.0, left.gamma.0);
+    let bb = b * b;
+    a != 0.0 && c != 0.0 && (bb - a * c).abs() > bb * 2f64.powi(-20)
+}
+
+/// α, β and γ of the line `o + t d` on the quadric `k` in double words
+/// with the bounds of [`words`], from `m`, the filter's sums of their
+/// terms' magnitudes, the products' errors found by `P`: the same
+/// operations in the same order on every lane as the four-lane code, so
+/// the same words.
+#[inline(always)]
+pub(crate) fn bounded_words<P: Product>(
+    k: &[f64; 10],
+    o: [f64; 3],
+    d: [f64; 3],
+    m: [f64; 3],
+) -> [Dd; 3] {
+    let (mut hi, mut lo) = ([0.0; 4], [0.0; 4]);
+    for (n, &(c, i, j)) in QUADRATIC.iter().enumerate() {
+        let x = [k[c] * d[i], k[c] * o[i], k[c] * d[i], k[c] * o[i]];
+        let y = [d[j], d[j], o[j], o[j]];
+        for l in 0..4 {
+            let (p, e) = P::two_prod(x[l], y[l]);
+            if n == 0 {
+                (hi[l], lo[l]) = (p, e);
+            } else {
+                let (s, e1) = two_sum(hi[l], p);
+                (hi[l], lo[l]) = (s, lo[l] + (e + e1));
+            }
+        }
+    }
+    let mut add = |w: [f64; 4]| {
+        for l in 0..4 {
+            let (s, e1) = two_sum(hi[l], w[l]);
+            (hi[l], lo[l]) = (s, lo[l] + e1);
+        }
+    };
+    for i in 0..3 {
+        add([0.0, k[6 + i] * d[i], 0.0, k[6 + i] * o[i]]);
+    }
+    add([0.0, 0.0, 0.0, k[9]]);
+    let (bh, e) = two_sum(hi[1], hi[2]);
+    let bl = (lo[1] + lo[2]) + e;
+    [
+        bounded_word(hi[0], lo[0], m[0]),
+        bounded_word(bh, bl, m[1]),
+        bounded_word(hi[3], lo[3], m[2]),
+    ]
+}
+
+/// A sum's two words, renormalised, with the bound of [`words`].
+#[inline(always)]
+pub(crate) fn bounded_word(hi: f64, lo: f64, m: f64) -> Dd {
+    let (hi, lo) = two_sum(hi, lo);
+    Dd {
+        hi,
+        lo,
+        err: 1024.0 * U * U * m * SLACK,
+    }
+}
+
+/// The stages after the filter that need the data's [`grid`], with the
+/// products' errors found by `P`: where the filter's
 /// α̂, β̂ and γ̂ are exact, [`tracked`]'s roots and then [`double_word`]
 /// on them; the [`tight`] stage. `Ok` with what they decide, or `Err`
 /// with the data's [`grid`] for the stages that sum the exact terms.
@@ -1216,9 +1402,6 @@ fn later_head<P: Product>(
     left: Left,
     shrink: f64,
 ) -> Result<Option<(QuadricHit, Stage)>, f64> {
-    if let Some(h) = super::square::intersect(k, o, d, shrink) {
-        return Ok(Some((h, Stage::Tight)));
-    }
     let g = grid(k, o, d);
     let ((alpha, ma), (beta, mb), (gamma, mg)) = (left.alpha, left.beta, left.gamma);
     if (ma + mb + mg) * SLACK < g * 4_503_599_627_370_496.0 {
@@ -1254,13 +1437,14 @@ fn later_bounded<P: Product>(t: &ExactTerms, shrink: f64) -> Option<(QuadricHit,
     }
 }
 
-/// The stages after the filter, with the stage that answered: a perfect
-/// square ([`super::square`]); [`tracked`]'s roots where the filter's
-/// sums are exact; the [`tight`] stage; then [`tracked`] and
+/// The stages after the filter, with the stage that answered: the
+/// [`words`] stage where nothing looks exactly 0 (counted as tight); a
+/// perfect square ([`super::square`]); [`tracked`]'s roots where the
+/// filter's sums are exact; the [`tight`] stage; then [`tracked`] and
 /// [`double_word`] on one computation of the exact terms. Each answer is
 /// the exact class and correctly rounded roots, so any two stages that
-/// answer agree. On a CPU with AVX2 and FMA ([`Avx2`]) the exact terms
-/// are summed on four lanes (`quadric::words`), and on one with FMA alone
+/// answer agree. On a CPU with AVX2 and FMA ([`Avx2`]) the words and the
+/// exact terms are summed on four lanes (`quadric::words`), and on one with FMA alone
 /// ([`Fma`]) a copy compiled for it runs; either's TwoProduct is one fused
 /// multiply-add ([`Fused`]; the same exact pairs, so the same bits).
 ///
@@ -1302,8 +1486,17 @@ where
         where
             I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
         {
-            let (k, o, d) = inputs();
             let left = Left { alpha, beta, gamma };
+            if words_first(&left) {
+                let m = [alpha.1, beta.1, gamma.1];
+                if let Some(h) = words_avx(avx2, &inputs, m, shrink) {
+                    return Some((h, Stage::Tight));
+                }
+            }
+            let (k, o, d) = inputs();
+            if let Some(h) = super::square::intersect(&k, o, d, shrink) {
+                return Some((h, Stage::Tight));
+            }
             match later_head::<Fused>(&k, o, d, left, shrink) {
                 Ok(h) => h,
                 Err(g) => later_avx(avx2, &inputs, g, shrink),
@@ -1585,6 +1778,129 @@ mod tests {
             over_quarter > 100 && decided > 10_000,
             "{over_quarter} {decided}"
         );
+    }
+
+    /// The words stage's sums ([`bounded_words`]) are within their bound
+    /// of the exact α, β and γ (dyadic), on f32 data of every kind, on
+    /// lines nearly parallel to the axis of a rotated integer cylinder
+    /// (α and β cancel) and on the stiff catalogue; and the four-lane
+    /// sums (`words::bounded`) are the same words, bit for bit.
+    #[test]
+    fn the_bounded_words_are_within_their_bound() {
+        use crate::exact::Dyadic;
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx2,fma")]
+        fn four(
+            _: crate::num::avx::Avx2,
+            k: &[f64; 10],
+            o: [f64; 3],
+            d: [f64; 3],
+            m: [f64; 3],
+        ) -> [Dd; 3] {
+            super::super::words::bounded(k, o, d, m)
+        }
+        let mut rng = SmallRng::seed_from_u64(0xb0_4d5);
+        let any = |rng: &mut SmallRng| match rng.random_range(0..5) {
+            0 => 0.0,
+            1 => f64::from(f32::from_bits(rng.random_range(1..1 << 23))),
+            2 => f64::from(rng.random_range(-64i32..64)),
+            _ => f64::from(f32::from_bits(
+                rng.random::<u32>() & !(0xff << 23) | rng.random_range(60..190) << 23,
+            )),
+        };
+        let mut cases: Vec<([f64; 10], [f64; 3], [f64; 3])> = Vec::new();
+        for _ in 0..10_000 {
+            let k: [f64; 10] = core::array::from_fn(|_| any(&mut rng));
+            cases.push((
+                k,
+                [0; 3].map(|_| any(&mut rng)),
+                [0; 3].map(|_| any(&mut rng)),
+            ));
+            // (a·x)² + (b·x)² − r = 0 around the axis a × b (a ⊥ b), along
+            // that axis tilted by about 2⁻ᵉ.
+            let (a, b) = ([1.0f32, 2.0, 2.0], [2.0f32, 1.0, -2.0]);
+            let axis = [-6.0f32, 6.0, -3.0];
+            let q = |i: usize, j: usize| a[i] * a[j] + b[i] * b[j];
+            let k = [
+                q(0, 0),
+                q(1, 1),
+                q(2, 2),
+                2.0 * q(0, 1),
+                2.0 * q(0, 2),
+                2.0 * q(1, 2),
+                0.0,
+                0.0,
+                0.0,
+                -(rng.random_range(1..50) as f32),
+            ]
+            .map(f64::from);
+            let tilt = 2f32.powi(-rng.random_range(4..24));
+            let d = core::array::from_fn(|i| {
+                f64::from(axis[i] * (1.0 + tilt * rng.random_range(-1.0f32..1.0)))
+            });
+            let o = [0; 3].map(|_| f64::from(rng.random_range(-40.0f32..40.0)));
+            cases.push((k, o, d));
+        }
+        for (r, q) in catalogue() {
+            let w = |v: Vec3| v.to_array().map(f64::from);
+            cases.push((q.coeffs.map(f64::from), w(r.origin), w(r.dir)));
+        }
+        let dy = |x: f64| Dyadic::from_f64(x);
+        let (mut inexact, mut cancelling) = (0, 0);
+        for (k, o, d) in &cases {
+            let (k, o, d) = (k, *o, *d);
+            let left = classes_paired(k, o, d, 1.0).left();
+            let m = [left.alpha.1, left.beta.1, left.gamma.1];
+            let got = bounded_words::<Dekker>(k, o, d, m);
+            #[cfg(target_arch = "x86_64")]
+            if let Some(avx2) = crate::num::avx::Avx2::detect() {
+                // SAFETY: the token exists only where AVX2 and FMA were
+                // detected, the features `four` is compiled for.
+                assert_eq!(unsafe { four(avx2, k, o, d, m) }, got, "{k:?} {o:?} {d:?}");
+            }
+            let term = |c: usize, x: f64, y: f64| &(&dy(k[c]) * &dy(x)) * &dy(y);
+            let (mut alpha, mut beta, mut gamma) = (dy(0.0), dy(0.0), dy(0.0));
+            for &(c, i, j) in &QUADRATIC {
+                alpha = &alpha + &term(c, d[i], d[j]);
+                beta = &(&beta + &term(c, o[i], d[j])) + &term(c, d[i], o[j]);
+                gamma = &gamma + &term(c, o[i], o[j]);
+            }
+            for i in 0..3 {
+                beta = &beta + &term(6 + i, d[i], 1.0);
+                gamma = &gamma + &term(6 + i, o[i], 1.0);
+            }
+            gamma = &gamma + &dy(k[9]);
+            for (w, exact) in got.iter().zip([alpha, beta, gamma]) {
+                let err = &(&dy(w.hi) + &dy(w.lo)) - &exact;
+                let err = if err.signum() < 0 { -err } else { err };
+                assert!(err <= dy(w.err), "{k:?} {o:?} {d:?}: {w:?}");
+                inexact += usize::from(err.signum() != 0);
+            }
+            cancelling += usize::from(got[0].hi.abs() < 1e-6 * m[0]);
+        }
+        assert!(
+            inexact > 1000 && cancelling > 1000,
+            "{inexact} {cancelling}"
+        );
+    }
+
+    /// The later stages as CPUs without AVX2 and FMA run them
+    /// ([`later_by`] with Dekker's TwoProduct, and the words summed one
+    /// lane at a time) give the same answers from the same stages as
+    /// [`later`] here, on the stiff catalogue's quadric cases.
+    #[test]
+    fn the_later_stages_are_the_same_on_every_cpu() {
+        let mut words = 0;
+        for (r, q) in catalogue() {
+            let w = |v: Vec3| v.to_array().map(f64::from);
+            let (k, o, d) = (q.coeffs.map(f64::from), w(r.origin), w(r.dir));
+            let c = classes_paired(&k, o, d, 1.0);
+            let got = later_by::<Dekker>(&k, o, d, c.left(), 1.0);
+            assert_eq!(got, later(&k, o, d, 1.0), "{k:?} {o:?} {d:?}");
+            words +=
+                usize::from(words_first(&c.left()) && got.is_some_and(|h| h.1 == Stage::Tight));
+        }
+        assert!(words > 100, "{words}");
     }
 
     /// The stiff catalogue's quadric cases, in a build with every kind

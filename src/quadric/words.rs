@@ -1,6 +1,9 @@
-//! α, β and γ exactly, in double words, on the four lanes of one AVX
-//! register: the later stages' sums of the 28 exact terms, for CPUs with
-//! AVX2 and FMA.
+//! α, β and γ in double words, on the four lanes of one AVX register:
+//! the later stages' sums of the 28 exact terms, for CPUs with AVX2 and
+//! FMA. Exact under a grid test ([`exact`]), for the stages that settle
+//! exact zeros; within a bound of about `u²` times the terms' magnitudes
+//! on any data ([`bounded`]), for the words stage
+//! ([`words`](super::stages::words)).
 //!
 //! # The lanes
 //!
@@ -35,7 +38,7 @@
 //! [`GridAcc`]: crate::num::dd::GridAcc
 //! [`GridAcc::finish_exact`]: crate::num::dd::GridAcc::finish_exact
 
-use super::stages::QUADRATIC;
+use super::stages::{QUADRATIC, bounded_word};
 use crate::num::avx::Avx4;
 use crate::num::certify::SLACK;
 use crate::num::dd::{Dd, two_sum};
@@ -51,6 +54,39 @@ use crate::num::real::Real;
 /// function, and outside it would call each AVX instruction.
 #[inline(always)]
 pub(crate) fn exact(k: &[f64; 10], o: [f64; 3], d: [f64; 3], g: f64) -> Option<[Dd; 3]> {
+    let ([ah, bh, ch], [al, bl, cl], [am, bm, cm]) = sums(k, o, d);
+    let limit = g * 4_503_599_627_370_496.0;
+    Some([
+        word(ah, al, am, limit)?,
+        word(bh, bl, bm, limit)?,
+        word(ch, cl, cm, limit)?,
+    ])
+}
+
+/// α, β and γ of the line `o + t d` on the quadric `k` in double words
+/// with their bounds, from the filter's magnitude sums `m`: the
+/// [module](self)'s sums, without the grid, as
+/// [`bounded_words`](super::stages::bounded_words) computes them one
+/// lane at a time (the same operations in the same order, so the same
+/// words), with its bound.
+///
+/// Under the same conditions as [`exact`].
+#[inline(always)]
+pub(crate) fn bounded(k: &[f64; 10], o: [f64; 3], d: [f64; 3], m: [f64; 3]) -> [Dd; 3] {
+    let ([ah, bh, ch], [al, bl, cl], _) = sums(k, o, d);
+    [
+        bounded_word(ah, al, m[0]),
+        bounded_word(bh, bl, m[1]),
+        bounded_word(ch, cl, m[2]),
+    ]
+}
+
+/// The leading words, the low words and the sums of the low values'
+/// magnitudes of α, β and γ, β's two lanes joined by one more TwoSum
+/// (its error to the low word).
+#[inline(always)]
+#[allow(clippy::type_complexity)]
+fn sums(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> ([f64; 3], [f64; 3], [f64; 3]) {
     let mut acc = Sums::start(term(k, o, d, QUADRATIC[0]));
     for &q in &QUADRATIC[1..] {
         acc.add_pair(term(k, o, d, q));
@@ -60,15 +96,9 @@ pub(crate) fn exact(k: &[f64; 10], o: [f64; 3], d: [f64; 3], g: f64) -> Option<[
     }
     acc.add(Avx4::new(0.0, 0.0, 0.0, k[9]));
     let (h, l, m) = (acc.hi.to_array(), acc.lo.to_array(), acc.mag.to_array());
-    // β's two lanes joined: one more TwoSum, its error to the low word.
     let (bh, e) = two_sum(h[1], h[2]);
     let (bl, bm) = ((l[1] + l[2]) + e, (m[1] + m[2]) + e.abs());
-    let limit = g * 4_503_599_627_370_496.0;
-    Some([
-        word(h[0], l[0], m[0], limit)?,
-        word(bh, bl, bm, limit)?,
-        word(h[3], l[3], m[3], limit)?,
-    ])
+    ([h[0], bh, h[3]], [l[0], bl, l[3]], [m[0], bm, m[3]])
 }
 
 /// The quadratic coefficient `c`'s terms `k_c x y` on the four lanes, as
