@@ -68,13 +68,10 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
             later(ray, quadric, c.left(), shrink)
         };
     }
-    if c.two {
-        if let Some((t0, t1)) = stages::sorted(&c, shrink) {
-            return two(ray, quadric, t0, t1);
-        }
-        if c.alpha_too_coarse() {
-            return later(ray, quadric, c.left(), shrink);
-        }
+    if c.two
+        && let Some((t0, t1)) = stages::sorted(&c, shrink)
+    {
+        return two(ray, quadric, t0, t1);
     }
     quotients(ray, quadric, c, shrink)
 }
@@ -164,11 +161,14 @@ where
         let (ray, quadric) = line();
         (exact_stage(&ray, &quadric), Stage::Exact)
     };
-    match stages::later_of(inputs, left, shrink) {
+    // The answer is settled inside the copy that runs, and returned from
+    // there: an `Option` passed back through memory, stored field by
+    // field and read back whole, stalled store forwarding.
+    stages::later_of(inputs, left, shrink, |h| match h {
         Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => exact(),
         Some(hs) => hs,
         None => exact(),
-    }
+    })
 }
 
 /// The whole reference for lane `i` of x4's packets (`coeffs` the

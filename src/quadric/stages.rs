@@ -24,7 +24,14 @@
 //!   `u(50 m_β² + 136 m_α m_γ)` to first order; the filter uses
 //!   **`E_Δ = u(100 m_β² + 300 m_α m_γ)`**.
 //! * `|α̂| > E_α` certifies a quadratic, then `Δ̂ > E_Δ` two roots and
-//!   `Δ̂ < −E_Δ` none. A double root is never certified here.
+//!   `Δ̂ < −E_Δ` none. A double root is never certified here. The filter
+//!   asks more of α̂, `|α̂| > 2²⁴E_α`: otherwise `q̂/α̂` (and every form
+//!   of the roots here) is within no less than `E_α/|α̂| ≥ 2⁻²⁴` of the
+//!   exact root relatively, so its enclosure spans an f32 spacing, and
+//!   with it a rounding boundary, but for roots in f32's subnormal range
+//!   or beyond its largest value. No root would certify: such lines,
+//!   nearly parallel to an axis whose α cancels, go to the later stages
+//!   at once. (`|α̂|·2⁻²⁴` is exact: a nonzero α̂ is at least `2⁻⁴⁴⁷`.)
 //! * `m_α = 0` means α is exactly 0 (a nonzero term is at least `2⁻⁴⁴⁷`):
 //!   then `|β̂| > E_β` certifies the linear root `−γ/β`; `m_β = 0` with
 //!   `|γ̂| > E_γ` certifies no root, and `m_β = m_γ = 0` the whole line.
@@ -230,14 +237,6 @@ pub(crate) struct Classes<L: Real> {
 }
 
 impl Classes<f64> {
-    /// Whether `E_α/|α̂| ≥ 2⁻²⁴`: `q̂/α̂` is then within no less than that
-    /// of `q/α` relatively, so its enclosure spans an f32 spacing and with
-    /// it a rounding boundary (bar a root beyond f32's range), and no pair
-    /// of roots certifies. The scalar reference then skips the quotients.
-    #[inline(always)]
-    pub(crate) fn alpha_too_coarse(&self) -> bool {
-        self.ea * 16_777_216.0 >= self.alpha.abs()
-    }
     /// What the later stages take from the filter.
     #[inline(always)]
     pub(crate) fn left(&self) -> Left {
@@ -370,7 +369,8 @@ fn classify<L: Real>(coefficients: [(L, L); 3], shrink: f64) -> Classes<L> {
     let disc = beta * beta - four * alpha * gamma;
     let ed = c(100.0) * mb * mb + c(300.0) * ma * mg;
 
-    let quad = alpha.abs().gt(ea);
+    // A quadratic whose roots may certify (see the module's bound).
+    let quad = (alpha.abs() * L::splat(2f64.powi(-24))).gt(ea);
     let lin = ma.eq(zero);
     let beta_clear = beta.abs().gt(eb);
     let beta_zero = mb.eq(zero);
@@ -1262,14 +1262,16 @@ where
 ///
 /// Four sums, as on four lanes (`quadric::words`), one per quadratic
 /// coefficient's terms of α, β (two halves) and γ: each term split by
-/// TwoProduct (exact, see [`double_word`]), its leading word added by
-/// TwoSum and both errors added to the low word by plain additions; β's
-/// halves joined by one more TwoSum; no grid and no check per addition.
+/// TwoProduct (exact, see [`double_word`]), the terms and the linear
+/// words added pairwise (`((t₀ + t₁) + (t₂ + t₃)) + ((t₄ + t₅) + (l₀ + l₁))`,
+/// then `+ (l₂ + J)`), the leading words by TwoSum and
+/// every error into the low word by plain additions; β's halves joined by
+/// one more TwoSum; no grid and no check per addition.
 ///
 /// Each coefficient is exactly its leading word plus the low values:
 /// TwoProduct's errors, each within `u` of its term's product, and
-/// TwoSum's, each within `u` of a partial sum of leading words, which is
-/// at most `m(1 + 20u)`, `m` the filter's sum of the terms' magnitudes
+/// TwoSum's, each within `u` of a sum of leading words of a subset of the
+/// terms, which is at most `m(1 + 20u)`, `m` the filter's sum of the terms' magnitudes
 /// (`m_α`, `m_β`, `m_γ`, within `10u` of the exact ones). A lane has six
 /// products and nine TwoSums, and β's two lanes one TwoSum more to join
 /// them: the low values' magnitudes sum below `10u·m` for α and γ and
@@ -1338,29 +1340,16 @@ pub(crate) fn bounded_words<P: Product>(
     m: [f64; 3],
 ) -> [Dd; 3] {
     let (mut hi, mut lo) = ([0.0; 4], [0.0; 4]);
-    for (n, &(c, i, j)) in QUADRATIC.iter().enumerate() {
-        let x = [k[c] * d[i], k[c] * o[i], k[c] * d[i], k[c] * o[i]];
-        let y = [d[j], d[j], o[j], o[j]];
-        for l in 0..4 {
-            let (p, e) = P::two_prod(x[l], y[l]);
-            if n == 0 {
-                (hi[l], lo[l]) = (p, e);
-            } else {
-                let (s, e1) = two_sum(hi[l], p);
-                (hi[l], lo[l]) = (s, lo[l] + (e + e1));
-            }
+    for l in 0..4 {
+        let mut t = [(0.0, 0.0); 6];
+        for (t, &(c, i, j)) in t.iter_mut().zip(&QUADRATIC) {
+            let x = [k[c] * d[i], k[c] * o[i], k[c] * d[i], k[c] * o[i]];
+            let y = [d[j], d[j], o[j], o[j]];
+            *t = P::two_prod(x[l], y[l]);
         }
+        let lin = |i: usize| [0.0, k[6 + i] * d[i], 0.0, k[6 + i] * o[i]][l];
+        (hi[l], lo[l]) = tree_sum(t, [lin(0), lin(1), lin(2)], [0.0, 0.0, 0.0, k[9]][l]);
     }
-    let mut add = |w: [f64; 4]| {
-        for l in 0..4 {
-            let (s, e1) = two_sum(hi[l], w[l]);
-            (hi[l], lo[l]) = (s, lo[l] + e1);
-        }
-    };
-    for i in 0..3 {
-        add([0.0, k[6 + i] * d[i], 0.0, k[6 + i] * o[i]]);
-    }
-    add([0.0, 0.0, 0.0, k[9]]);
     let (bh, e) = two_sum(hi[1], hi[2]);
     let bl = (lo[1] + lo[2]) + e;
     [
@@ -1368,6 +1357,34 @@ pub(crate) fn bounded_words<P: Product>(
         bounded_word(bh, bl, m[1]),
         bounded_word(hi[3], lo[3], m[2]),
     ]
+}
+
+/// One lane's sum (or four at once) of six TwoProduct pairs `t`, three
+/// exact words `lin` and one more, `j`: a leading word and a low word.
+/// Pairwise, so that each leading word passes through four TwoSums rather
+/// than nine: `((t₀ + t₁) + (t₂ + t₃)) + ((t₄ + t₅) + (l₀ + l₁))`, then `+
+/// (l₂ + j)`. Each `+` of two partial sums is TwoSum of their leading
+/// words, its error added to the sum of their low words. The same
+/// operations on one lane and on four, so the same words. (Written
+/// without closures, which are not always inlined into a function
+/// compiled for AVX2.)
+#[inline(always)]
+pub(crate) fn tree_sum<L: Real>(t: [(L, L); 6], lin: [L; 3], j: L) -> (L, L) {
+    let (a, b, c) = (
+        add_words(t[0], t[1]),
+        add_words(t[2], t[3]),
+        add_words(t[4], t[5]),
+    );
+    let (l01, l2j) = (two_sum(lin[0], lin[1]), two_sum(lin[2], j));
+    add_words(add_words(add_words(a, b), add_words(c, l01)), l2j)
+}
+
+/// Two unevaluated sums `h + l` added: TwoSum of the leading words, its
+/// error added to the sum of the low words.
+#[inline(always)]
+fn add_words<L: Real>((h1, l1): (L, L), (h2, l2): (L, L)) -> (L, L) {
+    let (s, e) = two_sum(h1, h2);
+    (s, (l1 + l2) + e)
 }
 
 /// A sum's two words, renormalised, with the bound of [`words`].
@@ -1459,7 +1476,12 @@ fn later_bounded<P: Product>(t: &ExactTerms, shrink: f64) -> Option<(QuadricHit,
 /// assert!(matches!(later(&k, o, d, 1.0), Some((QuadricHit::One(_), Stage::Tight))));
 /// ```
 pub fn later(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<(QuadricHit, Stage)> {
-    later_of(|| (*k, o, d), classes_paired(k, o, d, 1.0).left(), shrink)
+    later_of(
+        || (*k, o, d),
+        classes_paired(k, o, d, 1.0).left(),
+        shrink,
+        |h| h,
+    )
 }
 
 /// [`later`] on the inputs that `inputs` gives, called inside the copy
@@ -1467,40 +1489,43 @@ pub fn later(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<(Qu
 /// `f64` values stored by one function and read back by the other as
 /// vectors would stall store forwarding.
 #[inline(always)]
-pub(crate) fn later_of<I>(inputs: I, left: Left, shrink: f64) -> Option<(QuadricHit, Stage)>
+pub(crate) fn later_of<I, S, R>(inputs: I, left: Left, shrink: f64, settle: S) -> R
 where
     I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
+    S: Fn(Option<(QuadricHit, Stage)>) -> R,
 {
     #[cfg(target_arch = "x86_64")]
     if let Some(avx2) = Avx2::detect() {
         #[target_feature(enable = "avx2,fma")]
         #[allow(clippy::too_many_arguments)]
-        fn run<I>(
+        fn run<I, S, R>(
             avx2: Avx2,
             inputs: I,
             alpha: (f64, f64),
             beta: (f64, f64),
             gamma: (f64, f64),
             shrink: f64,
-        ) -> Option<(QuadricHit, Stage)>
+            settle: S,
+        ) -> R
         where
             I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
+            S: Fn(Option<(QuadricHit, Stage)>) -> R,
         {
             let left = Left { alpha, beta, gamma };
             if words_first(&left) {
                 let m = [alpha.1, beta.1, gamma.1];
                 if let Some(h) = words_avx(avx2, &inputs, m, shrink) {
-                    return Some((h, Stage::Tight));
+                    return settle(Some((h, Stage::Tight)));
                 }
             }
             let (k, o, d) = inputs();
             if let Some(h) = super::square::intersect(&k, o, d, shrink) {
-                return Some((h, Stage::Tight));
+                return settle(Some((h, Stage::Tight)));
             }
-            match later_head::<Fused>(&k, o, d, left, shrink) {
+            settle(match later_head::<Fused>(&k, o, d, left, shrink) {
                 Ok(h) => h,
                 Err(g) => later_avx(avx2, &inputs, g, shrink),
-            }
+            })
         }
         // SAFETY: the token exists only where the CPU has AVX2 and FMA,
         // the features `run` is compiled for. In `rayoracle report`
@@ -1508,26 +1533,32 @@ where
         // the copy below, for FMA alone), the reference took 37.9 against
         // 51.5 ns/ray on quadric/alpha-zero-cylinder, 83.1 against 102.0 on
         // alpha-near-zero-rotated and 39.3 against 45.3 on double-plane.
-        return unsafe { run(avx2, inputs, left.alpha, left.beta, left.gamma, shrink) };
+        return unsafe {
+            run(
+                avx2, inputs, left.alpha, left.beta, left.gamma, shrink, settle,
+            )
+        };
     }
     #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
     if let Some(fma) = Fma::detect() {
         #[target_feature(enable = "fma")]
         #[allow(clippy::too_many_arguments)]
-        fn run<I>(
+        fn run<I, S, R>(
             _: Fma,
             inputs: I,
             alpha: (f64, f64),
             beta: (f64, f64),
             gamma: (f64, f64),
             shrink: f64,
-        ) -> Option<(QuadricHit, Stage)>
+            settle: S,
+        ) -> R
         where
             I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
+            S: Fn(Option<(QuadricHit, Stage)>) -> R,
         {
             let (k, o, d) = inputs();
             let left = Left { alpha, beta, gamma };
-            later_by::<Fused>(&k, o, d, left, shrink)
+            settle(later_by::<Fused>(&k, o, d, left, shrink))
         }
         // SAFETY: the token exists only where the CPU has FMA, the one
         // feature `run` is compiled for. In `rayoracle report` (default
@@ -1535,10 +1566,14 @@ where
         // reference took 228.7 against 257.0 ns/ray on
         // quadric/double-plane, 200.2 against 219.2 on
         // alpha-near-zero-rotated and 122.6 against 144.1 on cone-apex.
-        return unsafe { run(fma, inputs, left.alpha, left.beta, left.gamma, shrink) };
+        return unsafe {
+            run(
+                fma, inputs, left.alpha, left.beta, left.gamma, shrink, settle,
+            )
+        };
     }
     let (k, o, d) = inputs();
-    later_by::<BuildProduct>(&k, o, d, left, shrink)
+    settle(later_by::<BuildProduct>(&k, o, d, left, shrink))
 }
 
 #[cfg(test)]

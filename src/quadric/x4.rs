@@ -292,11 +292,10 @@ impl<W: Real8> Decided<W> {
     }
 }
 
-/// The filter and [`certify`] over any [`Real`]: the roots as quotients
-/// `q/α` and `γ/q`, which do not cancel, and the linear root.
+/// The filter's roots certified ([`certify`]) over any [`Real`]: the
+/// quotients `q/α` and `γ/q`, which do not cancel, and the linear root.
 #[inline(always)]
-fn decide<L: Real>(k: &[L; 10], o: [L; 3], d: [L; 3]) -> Decided<L> {
-    let f = stages::filter(k, o, d, 1.0);
+fn decide<L: Real>(f: stages::Filtered<L>) -> Decided<L> {
     let ok1 = certify(f.t1, f.r1, f.a1);
     let two = f.two & certify(f.t0, f.r0, f.a0) & ok1;
     let one = f.linear & ok1;
@@ -385,13 +384,29 @@ fn decide_sorted<L: Real>(c: &lanes::Classes<L>, f: lanes::Sorted<L>) -> (Decide
 
 /// The whole packet by the filter's quotients ([`decide`]), on the
 /// baseline lanes (the same bits on any): for a packet with a lane the
-/// first pass leaves.
+/// first pass leaves. Where no lane is of the filter's class two or
+/// linear, the filter's classes alone: no root, or the line on the
+/// surface; the scalar stages take the rest.
 #[cold]
 #[inline(never)]
 fn quotients(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit4 {
     let k = q.lanes::<F64x4>();
     let w = F64x4::widen;
-    finish(decide(&k, ray.origin.map(w), ray.dir.map(w)), env, ray, q)
+    let c = stages::classes(&k, ray.origin.map(w), ray.dir.map(w), 1.0);
+    let x = if F64x4::all(!(c.two | c.linear)) {
+        let (none, nan) = (c.none & !c.none, F64x4::splat(f64::NAN));
+        Decided {
+            two: none,
+            one: none,
+            all: c.all,
+            done: c.none | c.all,
+            lo: nan,
+            hi: nan,
+        }
+    } else {
+        decide(stages::roots(&c, 1.0))
+    };
+    finish(x, env, ray, q)
 }
 
 /// The first pass of [`intersect`] alone on one line, the bounds of
