@@ -4,7 +4,6 @@
 
 use super::{Quadric, QuadricHit, exact, stages};
 use crate::Ray;
-use crate::hit::Intersection;
 use crate::num::certify::{certify, denormals_are_zero, flush_prone, needs_probe, subnormals_work};
 use crate::stage::Stage;
 
@@ -165,10 +164,21 @@ where
     // there: an `Option` passed back through memory, stored field by
     // field and read back whole, stalled store forwarding.
     stages::later_of(inputs, left, shrink, |h| match h {
-        Some((h, _)) if flush_prone(h.roots().as_slice()) && !subnormals_work() => exact(),
+        Some((h, _)) if prone(h) && !subnormals_work() => exact(),
         Some(hs) => hs,
         None => exact(),
     })
+}
+
+/// [`flush_prone`] on the roots, read from the answer where it lies
+/// rather than gathered into a slice.
+#[inline(always)]
+fn prone(h: QuadricHit) -> bool {
+    match h {
+        QuadricHit::One(t) => flush_prone(&[t]),
+        QuadricHit::Two(a, b) => flush_prone(&[a, b]),
+        QuadricHit::None | QuadricHit::All => false,
+    }
 }
 
 /// The whole reference for lane `i` of x4's packets (`coeffs` the
