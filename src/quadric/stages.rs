@@ -500,20 +500,35 @@ pub(crate) fn roots<L: Real>(k: &Classes<L>, shrink: f64) -> Filtered<L> {
 /// `shrink = 1`: no underflow.
 #[inline(always)]
 pub(crate) fn sorted(k: &Classes<f64>, shrink: f64) -> Option<(f64, f64)> {
+    let bounds = (k.ea, k.eb, k.ed);
+    sorted_from(k.alpha, k.beta, k.disc, bounds, shrink)
+}
+
+/// [`sorted`] from α̂, β̂ and `Δ̂ = β̂² − 4α̂γ̂` with their bounds `(E_α,
+/// E_β, E_Δ)` (multiplied by `shrink` already), wherever they come from:
+/// the bound above holds for any such values with `|α̂| > E_α` and `Δ̂ >
+/// E_Δ`, and certifies nothing where `E_α/|α̂| ≥ 1/4`.
+#[inline(always)]
+pub(crate) fn sorted_from(
+    alpha: f64,
+    beta: f64,
+    disc: f64,
+    (ea, eb, ed): (f64, f64, f64),
+    shrink: f64,
+) -> Option<(f64, f64)> {
     const SIGN: u64 = 1 << 63;
     let c = |x: f64| x * U * shrink;
-    let (beta, disc) = (k.beta, k.disc);
     // Both divisions and the square root start together.
-    let (ia, id) = (1.0 / k.alpha, 1.0 / disc);
+    let (ia, id) = (1.0 / alpha, 1.0 / disc);
     let s = disc.sqrt();
     let bb = beta * beta;
     let apart = 289.0 * disc <= 225.0 * bb || 225.0 * disc >= 289.0 * bb;
-    let x = k.ea * ia.abs() * SLACK;
+    let x = ea * ia.abs() * SLACK;
     let g = (1.0 + x + x) * SLACK;
     let r = if x < 0.25 { x * g + c(20.0) } else { 1.0 };
     let w = r + 2f64.powi(-51);
     let hg = 0.5 * ia.abs() * g * SLACK;
-    let (p, q) = (k.eb * hg, (k.ed * id * SLACK + c(2.0)) * hg);
+    let (p, q) = (eb * hg, (ed * id * SLACK + c(2.0)) * hg);
     let h = f64::from_bits((0.5 * ia).to_bits() ^ (beta.to_bits() & SIGN) ^ SIGN);
     let ab = beta.abs();
     let (t0, t1) = ((ab + s) * h, (ab - s) * h);
@@ -825,8 +840,9 @@ fn pairs<const N: usize>(x: &[f64; N]) -> [Pair; N] {
 /// nothing), a double root `−β/2α` (pbrt-v4's `Quadratic` branches);
 /// otherwise their bounds decide the signs or nothing does. The roots are
 /// certified from the leading words with `|lo| + err` as their bounds
-/// ([`quotient`], [`two_roots`] with `b = β/2`). Every bound is multiplied
-/// by `shrink`.
+/// ([`quotient`]; two roots in the filter's sorted form `(−β ∓ √Δ)/2α`, where
+/// it certifies them, else by [`two_roots`] with `b = β/2`). Every bound
+/// is multiplied by `shrink`.
 ///
 /// ```
 /// use rayoracle::quadric::{QuadricHit, stages::{double_word, tracked}};
@@ -957,7 +973,11 @@ fn double_word_coefficients<P: Product>(
 /// in it where the stage cannot decide), or `None` where only the exact
 /// sum of `Δ` can. α's zero and sign, and β's and γ's where α = 0, from
 /// their bounds; then `Δ` from the leading words ([`disc_near`]) where
-/// the sums are not exact, from [`single_word_disc`] where they are.
+/// the sums are not exact, from [`single_word_disc`] where they are. Two
+/// roots from the leading words first as the filter's sorted form takes
+/// them ([`sorted_from`], with `β = 2b`, `Δ = 4(b² − ac)` and their
+/// bounds scaled exactly), where no division waits on the square root,
+/// else by [`two_roots`].
 #[inline(always)]
 fn decide_words<P: Product>(
     exact: bool,
@@ -998,6 +1018,13 @@ fn decide_words<P: Product>(
     if !exact && near.v.abs() > 2.0 * near.e * shrink {
         if near.v < 0.0 {
             return Some(Some(QuadricHit::None));
+        }
+        // The filter's sorted roots first (no division waits on the
+        // square root), from β = 2b and Δ = 4(b² − ac), scaled exactly.
+        let bounds = (a.e * shrink, 2.0 * bb.e * shrink, 4.0 * near.e * shrink);
+        if let Some((t0, t1)) = sorted_from(a.v, 2.0 * bb.v, 4.0 * near.v, bounds, shrink) {
+            let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
+            return Some(Some(QuadricHit::Two(t0 as f32, t1 as f32)));
         }
         if let Some((t0, t1)) = two_roots(a, bb, c, near, shrink) {
             return Some(Some(QuadricHit::Two(t0, t1)));
@@ -1250,7 +1277,8 @@ where
 /// The words stage: α, β and γ in double words with their bounds, then
 /// the classes and the roots as the double-word stage takes them from
 /// inexact words: α's sign from its bound, `Δ/4 = (β/2)² − αγ` from the
-/// leading words ([`disc_near`]), the roots by [`two_roots`]. The
+/// leading words ([`disc_near`]), the roots in the filter's sorted form
+/// or by [`two_roots`]. The
 /// coefficients are within about `u²` of their terms' magnitudes, where
 /// the filter's are within `E_α`, `E_β`: it settles lines nearly
 /// parallel to a rotated cylinder's axis, whose α and β cancel. It
