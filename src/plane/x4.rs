@@ -267,9 +267,9 @@ fn finish<L: Real4>(
 /// [`finish`] for a packet with a lane the first pass left (`hit` the
 /// lanes it certified, with their roots in `t`): the second pass
 /// ([`stages::filter_compensated`], with [`stages::exact_num`] where `d·n`
-/// is exactly 0) and the full filter ([`stages::filter`]) on the packet,
-/// on the baseline lanes (the same bits on any), then the scalar stages
-/// for what they leave.
+/// is exactly 0) on the packet, the full filter ([`stages::filter`]) where
+/// a lane is still open, on the baseline lanes (the same bits on any),
+/// then the scalar stages for what they leave.
 #[cold]
 #[inline(never)]
 fn finish_full(
@@ -284,25 +284,36 @@ fn finish_full(
     // The second pass: d·n summed once compensated.
     let c = stages::compensated_terms(x.num, x.m_num, d, n, F64x4::least_subnormal(), 1.0);
     let second = certify_relative(c.relative.t, c.relative.r);
-    let f = stages::filter_terms(x, 1.0);
-    let (certified, end) = certify_end(f.t, f.r, f.a);
     let m = F64x4::mask_i32;
     // Where passes certify a hit, each gives the one correctly rounded
     // root; a hit is never parallel (its d·n is certainly not 0).
     let h2 = m(c.relative.hit & second);
-    let h = hit | h2 | m(f.hit & certified);
-    let t = hit.bitselect(
-        cast(t),
-        cast(h2.bitselect(cast(c.relative.t.narrow()), cast(end.narrow()))),
-    );
-    let t: f32x4 = cast(h.bitselect(t, cast(f32x4::splat(f32::NAN))));
     // Where d·n is exactly 0, (a − o)·n summed exactly, where it can be,
     // tells a line in the plane from one off it.
     let (exact, num) = stages::exact_num(o, a, n);
     let zero = F64x4::splat(0.0);
     let settled = c.den_zero & exact;
-    let par = m(f.parallel | c.parallel | (settled & !num.eq(zero)));
-    let done = h | par | m(f.in_plane | (settled & num.eq(zero)));
+    let (par, in_plane) = (
+        c.parallel | (settled & !num.eq(zero)),
+        settled & num.eq(zero),
+    );
+    // The full filter only for a packet these leave a lane of: lines
+    // near parallel and in the plane come whole.
+    let (h, t, par, done) = if (hit | h2 | m(par | in_plane)).all() {
+        let t = hit.bitselect(cast(t), cast(c.relative.t.narrow()));
+        (hit | h2, t, m(par), hit | h2 | m(par | in_plane))
+    } else {
+        let f = stages::filter_terms(x, 1.0);
+        let (certified, end) = certify_end(f.t, f.r, f.a);
+        let h = hit | h2 | m(f.hit & certified);
+        let t = hit.bitselect(
+            cast(t),
+            cast(h2.bitselect(cast(c.relative.t.narrow()), cast(end.narrow()))),
+        );
+        let par = m(f.parallel | par);
+        (h, t, par, h | par | m(f.in_plane | in_plane))
+    };
+    let t: f32x4 = cast(h.bitselect(cast(t), cast(f32x4::splat(f32::NAN))));
     // ONE where hit, NONE where parallel (never both), else ALL.
     let k = i32x4::splat;
     let class = k(ALL) + (h & k(ONE - ALL)) + (par & k(NONE - ALL));
