@@ -1871,7 +1871,7 @@ mod tests {
                 rng.random::<u32>() & !(0xff << 23) | rng.random_range(60..190) << 23,
             )),
         };
-        let mut cases: Vec<([f64; 10], [f64; 3], [f64; 3])> = Vec::new();
+        let mut cases = near_axis_lines(&mut rng, 10_000);
         for _ in 0..10_000 {
             let k: [f64; 10] = core::array::from_fn(|_| any(&mut rng));
             cases.push((
@@ -1879,30 +1879,6 @@ mod tests {
                 [0; 3].map(|_| any(&mut rng)),
                 [0; 3].map(|_| any(&mut rng)),
             ));
-            // (a·x)² + (b·x)² − r = 0 around the axis a × b (a ⊥ b), along
-            // that axis tilted by about 2⁻ᵉ.
-            let (a, b) = ([1.0f32, 2.0, 2.0], [2.0f32, 1.0, -2.0]);
-            let axis = [-6.0f32, 6.0, -3.0];
-            let q = |i: usize, j: usize| a[i] * a[j] + b[i] * b[j];
-            let k = [
-                q(0, 0),
-                q(1, 1),
-                q(2, 2),
-                2.0 * q(0, 1),
-                2.0 * q(0, 2),
-                2.0 * q(1, 2),
-                0.0,
-                0.0,
-                0.0,
-                -(rng.random_range(1..50) as f32),
-            ]
-            .map(f64::from);
-            let tilt = 2f32.powi(-rng.random_range(4..24));
-            let d = core::array::from_fn(|i| {
-                f64::from(axis[i] * (1.0 + tilt * rng.random_range(-1.0f32..1.0)))
-            });
-            let o = [0; 3].map(|_| f64::from(rng.random_range(-40.0f32..40.0)));
-            cases.push((k, o, d));
         }
         for (r, q) in catalogue() {
             let w = |v: Vec3| v.to_array().map(f64::from);
@@ -1947,16 +1923,56 @@ mod tests {
         );
     }
 
+    /// `n` lines nearly along the axis of the cylinder `(a·x)² + (b·x)² =
+    /// r`, `a ⊥ b` integer vectors, so that the axis `a × b` is off the
+    /// coordinate axes and α, a sum of terms near 1, cancels to about
+    /// the square of the tilt, 2⁻⁴ to 2⁻²⁴.
+    fn near_axis_lines(rng: &mut SmallRng, n: usize) -> Vec<([f64; 10], [f64; 3], [f64; 3])> {
+        let (a, b) = ([1.0f32, 2.0, 2.0], [2.0f32, 1.0, -2.0]);
+        let axis = [-6.0f32, 6.0, -3.0];
+        let q = |i: usize, j: usize| a[i] * a[j] + b[i] * b[j];
+        (0..n)
+            .map(|_| {
+                let k = [
+                    q(0, 0),
+                    q(1, 1),
+                    q(2, 2),
+                    2.0 * q(0, 1),
+                    2.0 * q(0, 2),
+                    2.0 * q(1, 2),
+                    0.0,
+                    0.0,
+                    0.0,
+                    -(rng.random_range(1..50) as f32),
+                ]
+                .map(f64::from);
+                let tilt = 2f32.powi(-rng.random_range(4..24));
+                let d = core::array::from_fn(|i| {
+                    f64::from(axis[i] * (1.0 + tilt * rng.random_range(-1.0f32..1.0)))
+                });
+                let o = [0; 3].map(|_| f64::from(rng.random_range(-40.0f32..40.0)));
+                (k, o, d)
+            })
+            .collect()
+    }
+
     /// The later stages as CPUs without AVX2 and FMA run them
     /// ([`later_by`] with Dekker's TwoProduct, and the words summed one
     /// lane at a time) give the same answers from the same stages as
-    /// [`later`] here, on the stiff catalogue's quadric cases.
+    /// [`later`] here, on lines nearly along a rotated cylinder's axis
+    /// ([`near_axis_lines`]) and the stiff catalogue's quadric cases.
     #[test]
     fn the_later_stages_are_the_same_on_every_cpu() {
         let mut words = 0;
-        for (r, q) in catalogue() {
-            let w = |v: Vec3| v.to_array().map(f64::from);
-            let (k, o, d) = (q.coeffs.map(f64::from), w(r.origin), w(r.dir));
+        let w = |v: Vec3| v.to_array().map(f64::from);
+        let catalogue = catalogue()
+            .into_iter()
+            .map(|(r, q)| (q.coeffs.map(f64::from), w(r.origin), w(r.dir)));
+        let mut rng = SmallRng::seed_from_u64(0x1a7e5);
+        for (k, o, d) in near_axis_lines(&mut rng, 2_000)
+            .into_iter()
+            .chain(catalogue)
+        {
             let c = classes_paired(&k, o, d, 1.0);
             let got = later_by::<Dekker>(&k, o, d, c.left(), 1.0);
             assert_eq!(got, later(&k, o, d, 1.0), "{k:?} {o:?} {d:?}");

@@ -9,7 +9,7 @@ use crate::hit::Intersection;
 use crate::num::certify::{certify, denormals_are_zero, flush_prone, needs_probe, subnormals_work};
 #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
 use crate::num::dd::Fma;
-#[cfg(any(target_arch = "x86_64", target_feature = "fma"))]
+#[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
 use crate::num::dd::Fused;
 use crate::num::dd::{BuildProduct, Product};
 use crate::stage::Stage;
