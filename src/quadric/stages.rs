@@ -1378,13 +1378,7 @@ pub(crate) fn bounded_words<P: Product>(
         let lin = |i: usize| [0.0, k[6 + i] * d[i], 0.0, k[6 + i] * o[i]][l];
         (hi[l], lo[l]) = tree_sum(t, [lin(0), lin(1), lin(2)], [0.0, 0.0, 0.0, k[9]][l]);
     }
-    let (bh, e) = two_sum(hi[1], hi[2]);
-    let bl = (lo[1] + lo[2]) + e;
-    [
-        bounded_word(hi[0], lo[0], m[0]),
-        bounded_word(bh, bl, m[1]),
-        bounded_word(hi[3], lo[3], m[2]),
-    ]
+    bounded_lanes(hi, lo, m)
 }
 
 /// One lane's sum (or four at once) of six TwoProduct pairs `t`, three
@@ -1415,15 +1409,29 @@ fn add_words<L: Real>((h1, l1): (L, L), (h2, l2): (L, L)) -> (L, L) {
     (s, (l1 + l2) + e)
 }
 
-/// A sum's two words, renormalised, with the bound of [`words`].
+/// α, β and γ from the four lanes' leading and low words (α, β's two
+/// halves, γ): β's halves joined by one more TwoSum, its error to the
+/// low word, and each sum renormalised with the bound of [`words`].
 #[inline(always)]
-pub(crate) fn bounded_word(hi: f64, lo: f64, m: f64) -> Dd {
-    let (hi, lo) = two_sum(hi, lo);
-    Dd {
-        hi,
-        lo,
-        err: 1024.0 * U * U * m * SLACK,
+pub(crate) fn bounded_lanes(hi: [f64; 4], lo: [f64; 4], m: [f64; 3]) -> [Dd; 3] {
+    let (bh, e) = two_sum(hi[1], hi[2]);
+    let bl = (lo[1] + lo[2]) + e;
+    // A function, not a closure: closures are not always inlined into a
+    // function compiled for AVX2.
+    #[inline(always)]
+    fn word(hi: f64, lo: f64, m: f64) -> Dd {
+        let (hi, lo) = two_sum(hi, lo);
+        Dd {
+            hi,
+            lo,
+            err: 1024.0 * U * U * m * SLACK,
+        }
     }
+    [
+        word(hi[0], lo[0], m[0]),
+        word(bh, bl, m[1]),
+        word(hi[3], lo[3], m[2]),
+    ]
 }
 
 /// The stages after the filter that need the data's [`grid`], with the

@@ -38,7 +38,7 @@
 //! [`GridAcc`]: crate::num::dd::GridAcc
 //! [`GridAcc::finish_exact`]: crate::num::dd::GridAcc::finish_exact
 
-use super::stages::{QUADRATIC, bounded_word, tree_sum};
+use super::stages::{QUADRATIC, bounded_lanes, tree_sum};
 use crate::num::avx::Avx4;
 use crate::num::certify::SLACK;
 use crate::num::dd::{Dd, two_sum};
@@ -86,15 +86,7 @@ pub(crate) fn bounded(k: &[f64; 10], o: [f64; 3], d: [f64; 3], m: [f64; 3]) -> [
         [lin(0), lin(1), lin(2)],
         Avx4::new(0.0, 0.0, 0.0, k[9]),
     );
-    let (h, l) = (h.to_array(), l.to_array());
-    // β's two lanes joined: one more TwoSum, its error to the low word.
-    let (bh, e) = two_sum(h[1], h[2]);
-    let bl = (l[1] + l[2]) + e;
-    [
-        bounded_word(h[0], l[0], m[0]),
-        bounded_word(bh, bl, m[1]),
-        bounded_word(h[3], l[3], m[2]),
-    ]
+    bounded_lanes(h.to_array(), l.to_array(), m)
 }
 
 /// The leading words, the low words and the sums of the low values'

@@ -394,10 +394,10 @@ fn quotients(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit
     let w = F64x4::widen;
     let c = stages::classes(&k, ray.origin.map(w), ray.dir.map(w), 1.0);
     let x = if F64x4::all(!(c.two | c.linear)) {
-        let (none, nan) = (c.none & !c.none, F64x4::splat(f64::NAN));
+        let (no_lane, nan) = (c.none & !c.none, F64x4::splat(f64::NAN));
         Decided {
-            two: none,
-            one: none,
+            two: no_lane,
+            one: no_lane,
             all: c.all,
             done: c.none | c.all,
             lo: nan,
