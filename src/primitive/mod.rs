@@ -33,6 +33,17 @@ use wide::f32x4;
 ///
 /// The kernels take `(ray, primitive)`, so `P::reference` is a
 /// `fn(&Ray, &P) -> P::Hit` as the fuzz targets and gates take them.
+///
+/// Each kernel method is a function of its own, called through a pointer
+/// or out of line, and starts as if no vector register held anything: a
+/// call in a loop then never waits on the one before it. An instruction
+/// such as `cvtss2sd` or `sqrtsd` writes the low lane of its destination
+/// and keeps the rest, so it waits on whatever last wrote that register,
+/// and a compiler breaks that false dependency only where it sees the
+/// write in the same function. In `rayoracle report`, such a wait took
+/// the sphere's plain-f64 variant from 7.7 to 24 ns a ray, and the
+/// plane's reference from 2.7 to 3.9, in a build whose registers fell
+/// that way.
 pub trait Primitive: Copy + core::fmt::Debug + PartialEq + Sized + 'static {
     /// The case kind.
     const KIND: Kind;
@@ -89,6 +100,47 @@ pub trait Primitive: Copy + core::fmt::Debug + PartialEq + Sized + 'static {
     fn of_case(case: &Case) -> Option<(Ray, Self)>;
 }
 
+/// Tells the compiler that every vector register is written here, with no
+/// instruction, at the top of each [`Primitive`] kernel method.
+///
+/// An instruction such as `cvtss2sd` or `sqrtsd` writes the low lane of
+/// its destination and keeps the rest, so it waits on whatever last wrote
+/// that register. The compiler breaks such a false dependency (with an
+/// `xorps`) only where it sees that write within the function; at a
+/// function's entry it assumes every register it was not passed is old.
+/// So a kernel called in a loop can wait, on its first conversion, for
+/// the previous call's last division or square root. In `rayoracle
+/// report`, without this, the sphere's plain-f64 variant takes 24 ns a
+/// ray instead of 7.7 and the plane's reference 3.9 instead of 2.7, in a
+/// build whose registers fall that way. With it, the compiler sees a write
+/// just before each such instruction and breaks the dependency; the cost
+/// is an `xorps`, which the CPU does not execute.
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+#[inline(always)]
+pub(crate) fn fresh_registers() {
+    // SAFETY: the template is empty, so nothing runs; the operands only
+    // declare the registers written (and so clobbered), which the compiler
+    // honours by keeping nothing in them across this point.
+    #[cfg(target_arch = "x86_64")]
+    macro_rules! written {
+        ($($r:tt),*) => {
+            unsafe {
+                core::arch::asm!("", $(out($r) _,)* options(nomem, nostack, preserves_flags))
+            }
+        };
+    }
+    #[cfg(target_arch = "x86_64")]
+    written!(
+        "xmm0", "xmm1", "xmm2", "xmm3", "xmm4", "xmm5", "xmm6", "xmm7", "xmm8", "xmm9", "xmm10",
+        "xmm11", "xmm12", "xmm13", "xmm14", "xmm15"
+    );
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx512f"))]
+    written!(
+        "xmm16", "xmm17", "xmm18", "xmm19", "xmm20", "xmm21", "xmm22", "xmm23", "xmm24", "xmm25",
+        "xmm26", "xmm27", "xmm28", "xmm29", "xmm30", "xmm31"
+    );
+}
+
 /// The kernel entry points of a [`Primitive`] impl ([`Primitive::reference`],
 /// `staged`, `textbook`, `plain`, `exact`, `x4`, `batch`, `lanes`, `nearest4`), each
 /// the function of the same role in the primitive's module: the modules
@@ -98,24 +150,31 @@ pub trait Primitive: Copy + core::fmt::Debug + PartialEq + Sized + 'static {
 macro_rules! kernels {
     () => {
         fn reference(ray: &$crate::Ray, p: &Self) -> Self::Hit {
+            $crate::primitive::fresh_registers();
             reference::intersect(ray, p)
         }
         fn staged(ray: &$crate::Ray, p: &Self) -> (Self::Hit, $crate::stage::Stage) {
+            $crate::primitive::fresh_registers();
             reference::intersect_staged(ray, p)
         }
         fn textbook(ray: &$crate::Ray, p: &Self) -> Self::Hit {
+            $crate::primitive::fresh_registers();
             textbook::intersect(ray, p)
         }
         fn plain(ray: &$crate::Ray, p: &Self) -> Self::Hit {
+            $crate::primitive::fresh_registers();
             plain::intersect(ray, p)
         }
         fn exact(ray: &$crate::Ray, p: &Self) -> Result<Self::Hit, $crate::exact::NonFinite> {
+            $crate::primitive::fresh_registers();
             exact::intersect(ray, p)
         }
         fn x4(ray: &$crate::ray4::Ray4, p: &Self::Packet) -> Self::Hit4 {
+            $crate::primitive::fresh_registers();
             x4::intersect(ray, p)
         }
         fn batch(rays: &[$crate::ray4::Ray4], p: &Self::Packet, out: &mut [Self::Hit4]) {
+            $crate::primitive::fresh_registers();
             x4::intersect_packets(rays, p, out)
         }
         fn lanes(h: &Self::Hit4) -> [Self::Hit; 4] {
