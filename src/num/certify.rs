@@ -283,7 +283,7 @@ pub fn denormals_are_zero() -> bool {
 /// a false dependency on some Intel cores).
 #[inline(always)]
 pub(crate) fn daz_probe<const VEX: bool>() -> bool {
-    least_subnormal::<VEX>() == 0.0
+    least_subnormal::<VEX>().to_bits() == 0
 }
 
 /// The least subnormal `f32`, `2⁻¹⁴⁹`, converted to f64 at run time,

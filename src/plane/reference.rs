@@ -28,7 +28,13 @@ use crate::stage::Stage;
 /// ```
 #[inline]
 pub fn intersect(ray: &Ray, plane: &Plane) -> PlaneHit {
-    intersect_staged(ray, plane).0
+    match first_pass(ray, plane, 1.0) {
+        Ok(h) => h,
+        Err(x) => {
+            let [p0, p1, p2] = x.dn;
+            second_pass(ray, plane, x.num, x.den, x.m_num, p0, p1, p2, 1.0)
+        }
+    }
 }
 
 /// [`intersect`], and the [`Stage`] that decided it.
@@ -49,6 +55,19 @@ pub fn intersect_staged(ray: &Ray, plane: &Plane) -> (PlaneHit, Stage) {
 #[doc(hidden)]
 #[inline(always)]
 pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Stage) {
+    match first_pass(ray, plane, shrink) {
+        Ok(h) => (h, Stage::Filter),
+        Err(x) => {
+            let [p0, p1, p2] = x.dn;
+            second_pass(ray, plane, x.num, x.den, x.m_num, p0, p1, p2, shrink)
+        }
+    }
+}
+
+/// The first pass: the root it certifies, or its sums for the passes
+/// after it.
+#[inline(always)]
+fn first_pass(ray: &Ray, plane: &Plane, shrink: f64) -> Result<PlaneHit, stages::First<f64>> {
     // The environment meets an input only through DAZ, and a result only
     // through FTZ where it is subnormal ([`needs_probe`]). The first pass
     // certifies no subnormal root, and nothing under DAZ; after it, the
@@ -59,7 +78,7 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
     // The first pass, whose bound needs nothing after the division; the
     // second pass and the full filter only for what it leaves, from the
     // same sums.
-    let (x, f) = stages::first_pair(o, d, a, n, shrink);
+    let (pairs, f) = stages::first_pair(o, d, a, n, shrink);
     // The pass's class is known before its quotient: a line it leaves
     // does not wait on the division (which the CPU starts anyway, on the
     // predicted path).
@@ -67,25 +86,66 @@ pub fn intersect_shrunk(ray: &Ray, plane: &Plane, shrink: f64) -> (PlaneHit, Sta
         // A root the pass certifies is normal as an f32: no flush to ask
         // about.
         if certify_relative(f.t, f.r) {
-            return (PlaneHit::Hit(f.t as f32), Stage::Filter);
+            return Ok(PlaneHit::Hit(f.t as f32));
         }
     }
-    second_pass(ray, plane, x.num, x.den, x.m_num, shrink)
+    Err(pairs.first())
+}
+
+/// What a caller takes from the passes after the first: [`intersect`]
+/// the answer alone, which comes back in registers (the pair goes through
+/// memory), so that `intersect` jumps to [`second_pass`] with no frame of
+/// its own; [`intersect_staged`] the stage too.
+trait Answer {
+    fn of(hs: (PlaneHit, Stage)) -> Self;
+}
+
+impl Answer for PlaneHit {
+    #[inline(always)]
+    fn of(hs: (PlaneHit, Stage)) -> Self {
+        hs.0
+    }
+}
+
+impl Answer for (PlaneHit, Stage) {
+    #[inline(always)]
+    fn of(hs: (PlaneHit, Stage)) -> Self {
+        hs
+    }
 }
 
 /// The second pass, out of line (inlined, it slowed the first pass by
 /// about a seventh), then the rest, out of line again. The first pass's
-/// sums come as scalars, in registers: as a struct they went through
-/// memory, stored on every line. A line whose sums both came out 0, as
-/// on a line in the plane, is settled by [`zero_sums`] where it can be.
+/// sums and the products `dᵢnᵢ` come as scalars, in registers: a struct
+/// or an array of them goes through memory. A line whose sums both came
+/// out 0, as on a line in the plane, is settled by [`zero_sums`] where it
+/// can be.
 #[cold]
 #[inline(never)]
-fn second_pass(
+#[allow(clippy::too_many_arguments)]
+fn second_pass<A: Answer>(
     ray: &Ray,
     plane: &Plane,
     num: f64,
     den: f64,
     m_num: f64,
+    p0: f64,
+    p1: f64,
+    p2: f64,
+    shrink: f64,
+) -> A {
+    A::of(passes(ray, plane, num, den, m_num, [p0, p1, p2], shrink))
+}
+
+/// The body of [`second_pass`].
+#[inline(always)]
+fn passes(
+    ray: &Ray,
+    plane: &Plane,
+    num: f64,
+    den: f64,
+    m_num: f64,
+    dn: [f64; 3],
     shrink: f64,
 ) -> (PlaneHit, Stage) {
     let x = stages::First {
@@ -94,22 +154,20 @@ fn second_pass(
         m_num,
         // Read by the first pass only.
         lead: 0.0,
+        dn,
     };
     if denormals_are_zero() && needs_probe(&inputs(ray, plane), &[]) {
         return (exact_stage(ray, plane), Stage::Exact);
     }
-    if num == 0.0
-        && den == 0.0
-        && let Some(hs) = zero_sums(ray, plane, m_num)
+    // Both sums ±0, one branch for the two.
+    if (num.to_bits() | den.to_bits()) << 1 == 0
+        && let Some(hs) = zero_sums(ray, plane, m_num, dn)
     {
         return hs;
     }
     match compensated(ray, plane, &x, shrink) {
         Some(hs) => hs,
-        None => {
-            let w = |v: glam::Vec3| v.as_dvec3().to_array();
-            filter_then_escalate(ray, plane, x.terms(w(ray.dir), w(plane.normal)), shrink)
-        }
+        None => filter_then_escalate(ray, plane, x.terms(), shrink),
     }
 }
 
@@ -121,17 +179,16 @@ fn second_pass(
 /// Where it is 0, `(a − o)·n` comes from [`stages::exact_num`]. `None`
 /// where neither settles the line.
 #[inline(always)]
-fn zero_sums(ray: &Ray, plane: &Plane, m_num: f64) -> Option<(PlaneHit, Stage)> {
-    let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let (d, n) = (w(ray.dir), w(plane.normal));
-    let p = [d[0] * n[0], d[1] * n[1], d[2] * n[2]];
+fn zero_sums(ray: &Ray, plane: &Plane, m_num: f64, p: [f64; 3]) -> Option<(PlaneHit, Stage)> {
     if two_sum(p[0], p[1]).1 != 0.0 {
         return None;
     }
-    if p == [0.0; 3] && m_num == 0.0 {
+    // Every term of both sums ±0, one branch for the four.
+    if (p[0].to_bits() | p[1].to_bits() | p[2].to_bits() | m_num.to_bits()) << 1 == 0 {
         return Some((PlaneHit::InPlane, Stage::Filter));
     }
-    let (exact, num) = stages::exact_num(w(ray.origin), w(plane.point), n);
+    let w = |v: glam::Vec3| v.as_dvec3().to_array();
+    let (exact, num) = stages::exact_num(w(ray.origin), w(plane.point), w(plane.normal));
     exact.then_some((
         if num == 0.0 {
             PlaneHit::InPlane
@@ -156,18 +213,17 @@ fn compensated(
     x: &stages::First<f64>,
     shrink: f64,
 ) -> Option<(PlaneHit, Stage)> {
-    let w = |v: glam::Vec3| v.as_dvec3().to_array();
-    let (d, n) = (w(ray.dir), w(plane.normal));
     // The inputs stand (the callers' check of the environment): the
     // least subnormal is itself.
-    let c = stages::compensated_terms(x.num, x.m_num, d, n, 2f64.powi(-149), shrink);
+    let c = stages::compensated_terms(x.num, x.m_num, x.dn, 2f64.powi(-149), shrink);
     let f = c.relative;
     // A hit has d·n ≠ 0, so some term of it is not 0: the check below
     // waits for the lines this leaves.
     if f.hit && certify_relative(f.t, f.r) {
         return Some((PlaneHit::Hit(f.t as f32), Stage::Tight));
     }
-    let m_den = (d[0] * n[0]).abs() + (d[1] * n[1]).abs() + (d[2] * n[2]).abs();
+    let p = x.dn;
+    let m_den = p[0].abs() + p[1].abs() + p[2].abs();
     if m_den == 0.0 && x.m_num == 0.0 {
         // Every term of both sums is 0: the filter's rule, without the
         // exact sum.
@@ -184,6 +240,7 @@ fn compensated(
         };
         return Some((PlaneHit::Parallel, stage));
     } else if c.den_zero {
+        let w = |v: glam::Vec3| v.as_dvec3().to_array();
         let (exact, num) = stages::exact_num(w(ray.origin), w(plane.point), w(plane.normal));
         if !exact {
             return None;

@@ -192,6 +192,10 @@ pub const R: f64 = 6.0 * K * U;
 /// makes its sums NaN), or from `0·∞` under DAZ with `|n̂um|` or `|d̂en|`
 /// infinite, and leaves `t̂` a NaN, infinite or 0, which the test of its
 /// exponent turns away, as the generic pass's comparisons do.
+///
+/// It gives its lanes ([`Pairs`]) rather than the sums: a kernel reads
+/// the sums and the products `dᵢnᵢ` out of them only where the pass
+/// leaves a line, and a line the pass certifies pays for no shuffle.
 #[inline(always)]
 pub(crate) fn first_pair(
     o: [f64; 3],
@@ -199,7 +203,7 @@ pub(crate) fn first_pair(
     a: [f64; 3],
     n: [f64; 3],
     shrink: f64,
-) -> (First<f64>, Relative<f64>) {
+) -> (Pairs, Relative<f64>) {
     use wide::f64x2;
     // The components x and y in one register each, their products
     // transposed into the pairs [ŵ₀n₀, d₀n₀] and [ŵ₁n₁, d₁n₁].
@@ -217,18 +221,48 @@ pub(crate) fn first_pair(
     let k = least_subnormal_pair() * f64x2::from([2f64.powi(159), (K - 1.0) * 2f64.powi(149)]);
     let fails = f64x2::from([m_num, lead.abs()]).simd_ge(k * s.abs());
     let t = num / den;
-    let x = First {
-        num,
-        den,
-        m_num,
-        lead,
-    };
     let f = Relative {
         hit: fails.to_bitmask() == 0 && (EXP_MIN..0x7ff).contains(&(t.to_bits() >> 52 & 0x7ff)),
         t,
         r: R * shrink,
     };
-    (x, f)
+    (
+        Pairs {
+            s,
+            s1,
+            m,
+            p: [p0, p1, p2],
+        },
+        f,
+    )
+}
+
+/// [`first_pair`]'s lanes: `[n̂um, d̂en]`, `[ŵ₀n₀ + ŵ₁n₁, ŝ₁]`, the two
+/// magnitude sums, and the pairs of products `[ŵᵢnᵢ, dᵢnᵢ]`.
+#[derive(Clone, Copy)]
+pub(crate) struct Pairs {
+    s: wide::f64x2,
+    s1: wide::f64x2,
+    m: wide::f64x2,
+    p: [wide::f64x2; 3],
+}
+
+impl Pairs {
+    /// The sums as [`first_terms`] gives them. Read where the pass leaves
+    /// a line, this takes the products of `d·n` from their lanes there,
+    /// not on the path of a line the pass certifies.
+    #[inline(always)]
+    pub(crate) fn first(&self) -> First<f64> {
+        let ([num, den], [_, lead], [m_num, _]) =
+            (self.s.to_array(), self.s1.to_array(), self.m.to_array());
+        First {
+            num,
+            den,
+            m_num,
+            lead,
+            dn: self.p.map(|v| v.to_array()[1]),
+        }
+    }
 }
 
 /// The biased exponent of `2⁻¹²⁵`, the least root the first pass
@@ -301,7 +335,7 @@ pub fn filter_compensated<L: Real>(
     shrink: f64,
 ) -> Compensated<L> {
     let x = first_terms(o, d, a, n);
-    compensated_terms(x.num, x.m_num, d, n, L::least_subnormal(), shrink)
+    compensated_terms(x.num, x.m_num, x.dn, L::least_subnormal(), shrink)
 }
 
 /// [`filter_compensated`] from the first pass's `num` and its magnitude
@@ -313,13 +347,12 @@ pub fn filter_compensated<L: Real>(
 pub(crate) fn compensated_terms<L: Real>(
     num: L,
     m_num: L,
-    d: [L; 3],
-    n: [L; 3],
+    p: [L; 3],
     least: L,
     shrink: f64,
 ) -> Compensated<L> {
-    let (s1, e1) = two_sum(d[0] * n[0], d[1] * n[1]);
-    let (s2, e2) = two_sum(s1, d[2] * n[2]);
+    let (s1, e1) = two_sum(p[0], p[1]);
+    let (s2, e2) = two_sum(s1, p[2]);
     let c = e1 + e2;
     let h = s2 + c;
     let (k, tiny) = (L::splat(K), L::splat(2f64.powi(-274)));
@@ -419,7 +452,7 @@ impl Terms<f64> {
 /// Every pass's sums, computed once by a kernel that may run several.
 #[inline(always)]
 pub(crate) fn terms<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Terms<L> {
-    first_terms(o, d, a, n).terms(d, n)
+    first_terms(o, d, a, n).terms()
 }
 
 /// The [first pass](filter_relative)'s sums: `num = Σŵᵢnᵢ`, `den =
@@ -428,12 +461,14 @@ pub(crate) fn terms<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Term
 pub(crate) fn first_terms<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> First<L> {
     let w = [a[0] - o[0], a[1] - o[1], a[2] - o[2]];
     let wn = [w[0] * n[0], w[1] * n[1], w[2] * n[2]];
-    let lead = d[0] * n[0] + d[1] * n[1];
+    let dn = [d[0] * n[0], d[1] * n[1], d[2] * n[2]];
+    let lead = dn[0] + dn[1];
     First {
         num: wn[0] + wn[1] + wn[2],
-        den: lead + d[2] * n[2],
+        den: lead + dn[2],
         m_num: wn[0].abs() + wn[1].abs() + wn[2].abs(),
         lead,
+        dn,
     }
 }
 
@@ -445,17 +480,20 @@ pub(crate) struct First<L: Real> {
     pub(crate) m_num: L,
     /// `ŝ₁ = fl(d₀n₀ + d₁n₁)`.
     pub(crate) lead: L,
+    /// The products `dᵢnᵢ`, exact.
+    pub(crate) dn: [L; 3],
 }
 
 impl<L: Real> First<L> {
     /// The later passes' [`Terms`]: these sums and `d·n`'s magnitude sum.
     #[inline(always)]
-    pub(crate) fn terms(self, d: [L; 3], n: [L; 3]) -> Terms<L> {
+    pub(crate) fn terms(self) -> Terms<L> {
+        let p = self.dn;
         Terms {
             num: self.num,
             den: self.den,
             m_num: self.m_num,
-            m_den: (d[0] * n[0]).abs() + (d[1] * n[1]).abs() + (d[2] * n[2]).abs(),
+            m_den: p[0].abs() + p[1].abs() + p[2].abs(),
         }
     }
 }
@@ -657,9 +695,14 @@ mod tests {
             let t = |i: usize| [v[i], v[i + 1], v[i + 2]];
             let (o, d, a, n) = (t(0), t(3), t(6), t(9));
             let (x, f) = first_pair(o, d, a, n, shrink);
+            let x = x.first();
             let (y, g) = (first_terms(o, d, a, n), filter_relative(o, d, a, n, shrink));
             let bits = |x: &First<f64>| [x.num, x.den, x.m_num, x.lead].map(f64::to_bits);
+            let nan = [y.num, y.den, y.m_num, y.lead].iter().any(|v| v.is_nan());
             prop_assert!(bits(&x) == bits(&y) || [x.num, x.den].iter().any(|v| v.is_nan()));
+            prop_assert_eq!(x.dn.map(f64::to_bits), y.dn.map(f64::to_bits));
+            let pass = (K - 1.0) * y.den.abs() > y.lead.abs() && K * y.num.abs() > y.m_num;
+            prop_assert!(!f.hit || pass || nan);
             prop_assert_eq!(f.hit, g.hit);
             prop_assert!(f.t.to_bits() == g.t.to_bits() || (f.t.is_nan() && g.t.is_nan()));
             prop_assert_eq!(f.r, g.r);

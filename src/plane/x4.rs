@@ -280,9 +280,10 @@ fn finish_full(
     p: &Plane4,
 ) -> PlaneHit4 {
     let (o, d, a, n) = widened::<F64x4>(ray, p);
-    let x = stages::terms(o, d, a, n);
+    let first = stages::first_terms(o, d, a, n);
+    let x = first.terms();
     // The second pass: d·n summed once compensated.
-    let c = stages::compensated_terms(x.num, x.m_num, d, n, F64x4::least_subnormal(), 1.0);
+    let c = stages::compensated_terms(x.num, x.m_num, first.dn, F64x4::least_subnormal(), 1.0);
     let second = certify_relative(c.relative.t, c.relative.r);
     let m = F64x4::mask_i32;
     // Where passes certify a hit, each gives the one correctly rounded
