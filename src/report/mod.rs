@@ -14,7 +14,9 @@
 //!   proven exact, or exact arithmetic on integers);
 //! * **ns per ray**: the median over repeated passes of the time per case
 //!   of one pass, one `black_box`ed call per case (per packet of four for
-//!   x4), one core. The variants of a family are timed together, their
+//!   x4), a primitive's through its
+//!   [`Primitive`](crate::primitive::Primitive) method, which starts with
+//!   fresh registers; one core. The variants of a family are timed together, their
 //!   passes interleaved, so that they meet the same load from the rest of
 //!   the machine. A camera case is timed for its ray: its camera is built
 //!   before the clock starts (but for the exact oracle's, which builds its
