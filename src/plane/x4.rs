@@ -261,11 +261,17 @@ fn finish<L: Real4>(
             t,
         };
     }
-    finish_full(L::mask_i32(x.hit), t, env, ray, p)
+    // The lanes the first pass decided, as bits, and their roots as two
+    // words, stored on the way to the cold call only: passed as vectors,
+    // which go through memory, they were stored before the branch above,
+    // on the path of every packet it returns.
+    let [t01, t23]: [u64; 2] = cast(t);
+    finish_full(L::mask_i32(x.hit).to_bitmask(), [t01, t23], env, ray, p)
 }
 
 /// [`finish`] for a packet with a lane the first pass left (`hit` the
-/// lanes it certified, with their roots in `t`): the second pass
+/// lanes it certified, bit `i` for lane `i`, with their roots' `f32` bits
+/// in the two words): the second pass
 /// ([`stages::filter_compensated`], with [`stages::exact_num`] where `d·n`
 /// is exactly 0) on the packet, the full filter ([`stages::filter`]) where
 /// a lane is still open, on the baseline lanes (the same bits on any),
@@ -273,12 +279,15 @@ fn finish<L: Real4>(
 #[cold]
 #[inline(never)]
 fn finish_full(
-    hit: i32x4,
-    t: f32x4,
+    hit: u32,
+    [t01, t23]: [u64; 2],
     env: impl Fn(bool) -> bool,
     ray: &Ray4,
     p: &Plane4,
 ) -> PlaneHit4 {
+    let bits = i32x4::from([1, 2, 4, 8]);
+    let hit = (i32x4::splat(hit as i32) & bits).simd_eq(bits);
+    let t: f32x4 = cast([t01, t23]);
     let (o, d, a, n) = widened::<F64x4>(ray, p);
     let first = stages::first_terms(o, d, a, n);
     let x = first.terms();
