@@ -5,7 +5,7 @@
 //! first pass, whose errors the search of `bounds.rs` leaves behind for
 //! the larger ones of the full filter. Each stage that certifies with a
 //! bound (the plane's first and second passes, tight and double-word stages; the
-//! sphere's tight, compensated and double-word stages; the quadric's
+//! sphere's tight, compensated, words and double-word stages; the quadric's
 //! words, tight and double-word stages, and the first pass of its x4 kernel,
 //! `quadric::x4::first_pass_shrunk`) is called alone, every bound it uses multiplied by
 //! a factor `s < 1` (the x4 first pass twice: its class bounds alone,
@@ -124,6 +124,12 @@ fn sphere_double_word(c: &Case, s: f64) -> Option<Answer> {
     sphere::stages::double_word(o, d, m, f64::from(sp.radius), s).map(|h| answer(&h))
 }
 
+fn sphere_words(c: &Case, s: f64) -> Option<Answer> {
+    let Case::Sphere(r, sp) = c else { return None };
+    let (o, d, m) = (w(r.origin), w(r.dir), w(sp.center));
+    sphere::words::words(o, d, m, f64::from(sp.radius), s).map(|h| answer(&h))
+}
+
 fn quadric_double_word(c: &Case, s: f64) -> Option<Answer> {
     let Case::Quadric(r, q) = c else { return None };
     let k = q.coeffs.map(f64::from);
@@ -158,7 +164,7 @@ fn quadric_x4_roots(c: &Case, s: f64) -> Option<Answer> {
     quadric::x4::first_pass_shrunk(r, q, 1.0, s).map(|h| answer(&h))
 }
 
-const STAGES: [Staged; 11] = [
+const STAGES: [Staged; 12] = [
     Staged {
         kind: "plane",
         name: "first",
@@ -188,6 +194,11 @@ const STAGES: [Staged; 11] = [
         kind: "sphere",
         name: "double-word",
         run: sphere_double_word,
+    },
+    Staged {
+        kind: "sphere",
+        name: "words",
+        run: sphere_words,
     },
     Staged {
         kind: "quadric",
@@ -255,6 +266,14 @@ const SQUARE: Staged = Staged {
 /// went one way ([`quadric_cancelling_seeds`]): the roots are off by
 /// about 0.29 of the relative part `w = E_α/|α̂|` that leads their bound.
 ///
+/// The sphere's words stage (`sphere::words`) at a quarter, by searched
+/// far tiny spheres (`R ≈ 8` at `2·10⁶`), climbed from the generic
+/// sphere seeds: its bounds are running bounds, `u` times the computed
+/// results of its roundings, which a rounding near half an ulp of a value
+/// just above a power of two all but reaches. The best cases go wrong up
+/// to a factor of a half: there the error of `Δ̂` is its whole bound, and
+/// the sign test asks `|Δ̂| > 2E`.
+///
 /// The quadric's words stage (`quadric::stages::words`) at a quarter,
 /// by searched cases on which, as on the double-word stage's double
 /// planes, the sign test of `Δ/4` from the leading words
@@ -284,13 +303,14 @@ const SQUARE: Staged = Staged {
 /// `24u` into `γ̂`, 0.14 of `E_γ`; the committed ones reach 0.149. Their
 /// `β` does not cancel, so they catch `E_γ` cut to an eighth, not `E_β`
 /// alone.
-const CAUGHT_AT: [(&str, f64); 11] = [
+const CAUGHT_AT: [(&str, f64); 12] = [
     ("bounds/plane/first", 0.5),
     ("bounds/plane/second", 0.25),
     ("bounds/plane/tight", 0.25),
     ("bounds/sphere/tight", 0.25),
     ("bounds/sphere/compensated", 0.25),
     ("bounds/sphere/double-word", 0.25),
+    ("bounds/sphere/words", 0.25),
     ("bounds/quadric/double-word", 0.25),
     ("bounds/quadric/x4-class", 0.25),
     ("bounds/quadric/x4-roots", 0.25),

@@ -47,6 +47,7 @@ pub mod plain;
 pub mod reference;
 pub mod stages;
 pub mod textbook;
+pub mod words;
 pub mod x4;
 
 use crate::Ray;

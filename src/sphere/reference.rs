@@ -139,7 +139,8 @@ fn escalate(ray: &Ray, sphere: &Sphere, env: bool) -> (SphereHit, Stage) {
 /// ([`stages::grid_exact`]) or operation by operation
 /// ([`stages::tracked`]), f64 arithmetic with a tighter bound
 /// ([`stages::compensated`], [`stages::tight`]), double-word arithmetic
-/// ([`stages::double_word`]), then the exact oracle. The later stages,
+/// ([`words`](super::words::words), [`stages::double_word`]), then the
+/// exact oracle. The later stages,
 /// too, assume subnormals work where an input or a result is subnormal
 /// ([`needs_probe`], [`flush_prone`]), so this checks for itself: x4 sends
 /// its undecided lanes here, and all of them when FTZ or DAZ is on.
@@ -246,7 +247,10 @@ fn later_by<P: Product>(
     // Cheapest and likeliest first: exact data on a narrow grid where Δ̂ =
     // 0 (as at an exact tangent; elsewhere the grid is rarely narrow
     // enough to pay for its test), a cancelling c where the class is
-    // certified, exact data, then far spheres (but see `flat`).
+    // certified, the words stage where Δ̂ ≠ 0 (far spheres, near
+    // tangents), exact data, the words stage where Δ̂ = 0 (a near tangent
+    // whose b̂² and âĉ round alike, or an exact one of inexact products),
+    // then the rest (but see `flat`).
     let (o32, d32, c32) = (
         ray.origin.to_array(),
         ray.dir.to_array(),
@@ -255,16 +259,20 @@ fn later_by<P: Product>(
     let grid = || stages::grid_from(k, o32, d32, c32, sphere.radius);
     let cancels = stages::c_cancels(k);
     // Where Δ̂ = 0 and the class is open (a near tangent), the tight form
-    // rarely decides and the double-word stage is tried first.
+    // rarely decides and the double-word stage is tried before it.
     let flat = k.disc == 0.0 && !k.two;
     let tight = || stages::tight(o, d, c, r, shrink).map(|h| (h, Stage::Tight));
     let comp = || stages::compensated_from(k, o, c, r, shrink).map(|h| (h, Stage::Tight));
+    let words =
+        || super::words::words_by::<P>(k, o, d, c, r, shrink).map(|h| (h, Stage::DoubleWord));
     let staged = ((k.disc == 0.0)
         .then(grid)
         .flatten()
         .map(|h| (h, Stage::Tracked)))
     .or_else(|| if cancels { comp() } else { None })
+    .or_else(|| if k.disc != 0.0 { words() } else { None })
     .or_else(|| stages::tracked(o, d, c, r).map(|h| (h, Stage::Tracked)))
+    .or_else(|| if k.disc == 0.0 { words() } else { None })
     .or_else(|| if flat { None } else { tight() })
     .or_else(|| if cancels || !k.two { None } else { comp() })
     .or_else(|| stages::double_word_by::<P>(o, d, c, r, shrink).map(|h| (h, Stage::DoubleWord)))

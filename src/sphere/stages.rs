@@ -173,6 +173,23 @@ impl Classes<f64> {
             ..self
         }
     }
+    /// Whether the direction is not zero (`â > 0`): a line.
+    #[inline(always)]
+    pub(crate) fn line(&self) -> bool {
+        self.a > 0.0
+    }
+    /// `a`, `b` and `c` as the filter computed them, with its bounds `E_a
+    /// = 4uâ`, `E_b = 8u m_b` and `E_c = 10u f̂f + 2u|ĉ|`
+    /// ([module](self)), widened by [`SLACK`].
+    #[inline(always)]
+    pub(crate) fn quadratic(&self) -> [Approx; 3] {
+        let x = |v: f64, e: f64| Approx { v, e: e * SLACK };
+        [
+            x(self.a, 4.0 * U * self.a),
+            x(self.b, 8.0 * U * self.mb),
+            x(self.cq, e_c(self.ff, self.cq, 1.0)),
+        ]
+    }
 }
 
 #[inline(always)]
@@ -914,6 +931,34 @@ mod tests {
             }
         }
         assert!(huge >= 64, "{huge}");
+    }
+
+    /// The words stage ([`crate::sphere::words`]) alone, on every sphere
+    /// case of the catalogue: it answers only the oracle's bits, the same
+    /// with either product, and most of the near tangents.
+    #[test]
+    fn words_alone_matches_the_oracle() {
+        use crate::num::dd::{Dekker, Fused};
+        use crate::sphere::words::words_by;
+        let mut near = 0;
+        for (family, r, s) in catalogue() {
+            let Ok(want) = exact::intersect(&r, &s) else {
+                continue;
+            };
+            let ([o, d, c], rr) = wide(&r, &s);
+            let k = super::classes(o, d, c, rr, 1.0);
+            let dekker = words_by::<Dekker>(&k, o, d, c, rr, 1.0);
+            let fused = words_by::<Fused>(&k, o, d, c, rr, 1.0);
+            assert_eq!(
+                dekker.map(|h| format!("{h:?}")),
+                fused.map(|h| format!("{h:?}"))
+            );
+            if let Some(h) = dekker {
+                assert!(same_bits(&h, &want), "{family} {r:?} {s:?}");
+                near += usize::from(family == "sphere/near-tangent");
+            }
+        }
+        assert!(near >= 200, "{near}");
     }
 
     /// The double-word stage gives the same answers with Dekker's
