@@ -31,9 +31,11 @@
 //! [`reference::intersect`](mod@reference) and [`x4`] return the exact class
 //! and both roots correctly rounded to `f32`, for every finite input. The
 //! [filter](stages) evaluates the quadratic in f64 with the error bound
-//! derived there and certifies what it decides; an exact tangent, a root
-//! exactly 0 or one too close to a rounding boundary goes to the exact
-//! oracle ([`exact`]). The root formulas avoid cancellation as in Ray
+//! derived there and certifies what it decides; what it leaves (a near or
+//! exact tangent, a root near 0 or too close to a rounding boundary) goes
+//! to the later stages: exact f64 arithmetic, tighter forms ([`stages`]),
+//! two words ([`words`], then the double-word stage), and the exact
+//! oracle ([`exact`]) last. The root formulas avoid cancellation as in Ray
 //! Tracing Gems ch. 7 (Haines, Günther & Akenine-Möller, *Precision
 //! improvements for ray/sphere intersection*): `q = −(b + sign(b)√Δ)`,
 //! `t₀ = q/a`, `t₁ = c/q`.
