@@ -69,10 +69,11 @@
 //!
 //! `Δ`'s sign where its bound decides it (`|Δ̂| > 2E`); a tangent where
 //! `Δ` is exactly 0 (its words 0 and its bound 0 as derived, unshrunk:
-//! exactness is proven, not bounded), its root `−b/a`; two roots by [`two_roots`] from the
-//! filter's `a`, `b` and `c` with its bounds ([`super::stages`]), which
-//! certify wherever `√Δ` is known well enough, since `−b/a` does not
-//! cancel. Every bound is multiplied by `shrink`, once, where it decides.
+//! exactness is proven, not bounded), its root `−b/a`; two roots by
+//! [`two_roots`] from the filter's `a`, `b` and `c` with its bounds
+//! ([`super::stages`]), which certify wherever `√Δ` is known well enough
+//! and `b` does not cancel. Every bound is multiplied by `shrink`, once,
+//! where it decides.
 //!
 //! [`SLACK`]: crate::num::certify::SLACK
 //! [`two_roots`]: crate::num::dd::two_roots
