@@ -145,12 +145,24 @@ fn plane_group(c: &mut Criterion, items: &[(Ray, Plane)]) {
 /// parry3d.
 fn print_table(sizes: &[(&str, usize)]) {
     // Where criterion writes: $CRITERION_HOME, else $CARGO_TARGET_DIR/criterion,
-    // else target/criterion under the package (cargo bench's directory).
+    // else the workspace's target directory (examples/survey-kit/target), which
+    // criterion too asks `cargo metadata` for.
     let base = std::env::var_os("CRITERION_HOME")
         .map(std::path::PathBuf::from)
         .or_else(|| {
             std::env::var_os("CARGO_TARGET_DIR")
                 .map(|t| std::path::PathBuf::from(t).join("criterion"))
+        })
+        .or_else(|| {
+            let out = std::process::Command::new(std::env::var_os("CARGO")?)
+                .args(["metadata", "--format-version", "1", "--no-deps"])
+                .output()
+                .ok()?;
+            let text = String::from_utf8(out.stdout).ok()?;
+            let key = "\"target_directory\":\"";
+            let at = text.find(key)? + key.len();
+            let end = text[at..].find('"')?;
+            Some(std::path::PathBuf::from(&text[at..at + end]).join("criterion"))
         })
         .unwrap_or_else(|| std::path::PathBuf::from("target/criterion"));
     let ns = |group: &str, id: &str| -> Option<f64> {
