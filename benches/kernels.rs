@@ -49,6 +49,8 @@
 //! not the reference's, so the comparison would be of call overheads as
 //! much as of kernels.
 
+mod criterion_dir;
+
 use criterion::{BenchmarkId, Criterion, Throughput};
 use glam::Vec3;
 use rand::rngs::SmallRng;
@@ -559,7 +561,7 @@ fn rates(k: &str, ns: impl Fn(&str) -> Option<f64>) -> (String, serde_json::Valu
 /// ([`Paired`]). A filtered run (`complete` false) prints the rows of the
 /// kernels it ran and leaves the files of the last full run alone.
 fn print_ratios(passes: &[(String, &'static str, Passes)], complete: bool) {
-    let base = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/criterion");
+    let base = criterion_dir::criterion_dir();
     let median = |group: &str, id: &str| -> Option<f64> {
         let path = base.join(group).join(id).join("new/estimates.json");
         let v: serde_json::Value =

@@ -14,6 +14,8 @@
 //!   quadrics (seed 1.4b), which is what one general kernel for every kind
 //!   would run.
 
+mod criterion_dir;
+
 use criterion::{Criterion, Throughput};
 use rayoracle::quadric::Quadric;
 use rayoracle::render::{Channels, Path, Plan, render};
@@ -24,7 +26,7 @@ use std::time::Duration;
 
 fn scene(name: &str, size: [u32; 2]) -> Scene {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("fixtures/scenes")
+        .join("../fixtures/scenes")
         .join(name);
     Scene::load(path)
         .and_then(|s| s.with_size(size))
@@ -84,7 +86,7 @@ fn benches(c: &mut Criterion) {
 
 /// Reads criterion's median estimates back and prints the figures.
 fn print_figures() {
-    let base = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/criterion");
+    let base = criterion_dir::criterion_dir();
     let ns = |group: &str, id: &str| -> Option<f64> {
         let path = base.join(group).join(id).join("new/estimates.json");
         let v: serde_json::Value =
