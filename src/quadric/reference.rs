@@ -58,19 +58,27 @@ pub fn intersect_shrunk(ray: &Ray, quadric: &Quadric, shrink: f64) -> (QuadricHi
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let (k, o, d) = (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
     let c = stages::classes_paired(&k, o, d, shrink);
-    if !(c.two || c.linear) {
-        return if c.none {
-            (QuadricHit::None, Stage::Filter)
-        } else if c.all {
-            (QuadricHit::All, Stage::Filter)
-        } else {
-            later(ray, quadric, c.left(), shrink)
-        };
-    }
     if c.two
         && let Some((t0, t1)) = stages::sorted(&c, shrink)
     {
         return two(ray, quadric, t0, t1);
+    }
+    rest(ray, quadric, c, shrink)
+}
+
+/// What [`stages::sorted`] leaves: the filter's other classes, then its
+/// quotients, then the later stages. Apart from the fast path, so that
+/// the tests of the other classes are made only here.
+#[inline(always)]
+fn rest(ray: &Ray, quadric: &Quadric, c: stages::Classes<f64>, shrink: f64) -> (QuadricHit, Stage) {
+    if !(c.two || c.linear()) {
+        return if c.none() {
+            (QuadricHit::None, Stage::Filter)
+        } else if c.all() {
+            (QuadricHit::All, Stage::Filter)
+        } else {
+            later(ray, quadric, c.left(), shrink)
+        };
     }
     quotients(ray, quadric, c, shrink)
 }

@@ -225,15 +225,36 @@ pub(crate) struct Classes<L: Real> {
     ma: L,
     mb: L,
     mg: L,
-    lin: L::Mask,
+    /// A quadratic whose roots may certify (see the module's bound).
+    quad: L::Mask,
     /// Certified: two roots (which still need [`certify`]).
     pub(crate) two: L::Mask,
+}
+
+/// The classes other than two, tested where they are asked for: on the
+/// scalar reference's fast path, which [`sorted`] ends, none of them is.
+impl<L: Real> Classes<L> {
+    /// `α = 0` exactly: every term of α is 0.
+    #[inline(always)]
+    fn lin(&self) -> L::Mask {
+        self.ma.eq(L::splat(0.0))
+    }
     /// Certified: α = 0 and β ≠ 0, one root.
-    pub(crate) linear: L::Mask,
+    #[inline(always)]
+    pub(crate) fn linear(&self) -> L::Mask {
+        self.lin() & self.beta.abs().gt(self.eb)
+    }
     /// Certified: no root.
-    pub(crate) none: L::Mask,
+    #[inline(always)]
+    pub(crate) fn none(&self) -> L::Mask {
+        let constant = self.lin() & self.mb.eq(L::splat(0.0));
+        (self.quad & (-self.ed).gt(self.disc)) | (constant & self.gamma.abs().gt(self.eg))
+    }
     /// Certified: every `t`.
-    pub(crate) all: L::Mask,
+    #[inline(always)]
+    pub(crate) fn all(&self) -> L::Mask {
+        self.lin() & self.mb.eq(L::splat(0.0)) & self.mg.eq(L::splat(0.0))
+    }
 }
 
 impl Classes<f64> {
@@ -362,7 +383,6 @@ fn sum3(t: [wide::f64x2; 3]) -> (wide::f64x2, wide::f64x2) {
 #[inline(always)]
 fn classify<L: Real>(coefficients: [(L, L); 3], shrink: f64) -> Classes<L> {
     let c = |x: f64| L::splat(x * U * shrink);
-    let zero = L::splat(0.0);
     let [(alpha, ma), (beta, mb), (gamma, mg)] = coefficients;
     let (ea, eb, eg) = (c(12.0) * ma, c(24.0) * mb, c(20.0) * mg);
     let four = L::splat(4.0);
@@ -371,9 +391,6 @@ fn classify<L: Real>(coefficients: [(L, L); 3], shrink: f64) -> Classes<L> {
 
     // A quadratic whose roots may certify (see the module's bound).
     let quad = (alpha.abs() * L::splat(2f64.powi(-24))).gt(ea);
-    let lin = ma.eq(zero);
-    let beta_clear = beta.abs().gt(eb);
-    let beta_zero = mb.eq(zero);
     Classes {
         alpha,
         beta,
@@ -386,11 +403,8 @@ fn classify<L: Real>(coefficients: [(L, L); 3], shrink: f64) -> Classes<L> {
         ma,
         mb,
         mg,
-        lin,
+        quad,
         two: quad & disc.gt(ed),
-        linear: lin & beta_clear,
-        none: (quad & (-ed).gt(disc)) | (lin & beta_zero & gamma.abs().gt(eg)),
-        all: lin & beta_zero & mg.eq(zero),
     }
 }
 
@@ -400,7 +414,7 @@ fn classify<L: Real>(coefficients: [(L, L); 3], shrink: f64) -> Classes<L> {
 pub(crate) fn roots<L: Real>(k: &Classes<L>, shrink: f64) -> Filtered<L> {
     let c = |x: f64| L::splat(x * U * shrink);
     let (zero, half, inf) = (L::splat(0.0), L::splat(0.5), L::splat(f64::INFINITY));
-    let (beta, gamma, disc, lin) = (k.beta, k.gamma, k.disc, k.lin);
+    let (beta, gamma, disc, lin) = (k.beta, k.gamma, k.disc, k.lin());
     let (ea, eb, eg, ed) = (k.ea, k.eb, k.eg, k.ed);
     let one = L::splat(1.0);
     let alpha = L::select(lin, one, k.alpha);
@@ -428,9 +442,9 @@ pub(crate) fn roots<L: Real>(k: &Classes<L>, shrink: f64) -> Filtered<L> {
     let (r1, a1) = bound(eq, eg, iq);
     Filtered {
         two: k.two,
-        linear: k.linear,
-        none: k.none,
-        all: k.all,
+        linear: k.linear(),
+        none: k.none(),
+        all: k.all(),
         t0,
         r0,
         a0,

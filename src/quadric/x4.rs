@@ -393,13 +393,14 @@ fn quotients(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit
     let k = q.lanes::<F64x4>();
     let w = F64x4::widen;
     let c = stages::classes(&k, ray.origin.map(w), ray.dir.map(w), 1.0);
-    let x = if F64x4::all(!(c.two | c.linear)) {
-        let (no_lane, nan) = (c.none & !c.none, F64x4::splat(f64::NAN));
+    let x = if F64x4::all(!(c.two | c.linear())) {
+        let (none, all) = (c.none(), c.all());
+        let (no_lane, nan) = (none & !none, F64x4::splat(f64::NAN));
         Decided {
             two: no_lane,
             one: no_lane,
-            all: c.all,
-            done: c.none | c.all,
+            all,
+            done: none | all,
             lo: nan,
             hi: nan,
         }
