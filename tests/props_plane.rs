@@ -33,12 +33,7 @@ proptest! {
         sn in pow2(-149 + 6, 100), sd in pow2(-100, 100),
         o in vec_in(1.0), a in vec_in(1.0), so in log_uniform(-30.0, 30.0), sa in log_uniform(-30.0, 30.0),
     ) {
-        prop_assume!(idot(n, d) != 0);
-        let ray = Ray::new(o * so, scaled(d, sd));
-        let plane = Plane::new(a * sa, scaled(n, sn));
-        let r = judge(&ray, &plane)?;
-        prop_assert_eq!(r.exact_class, "hit");
-        prop_assert_eq!(r.status, Status::Checked);
+        hit_case(n, d, (sn, sd), (o, a), (so, sa))?;
     }
 
     /// `d ⟂ n` exactly and the origin off the plane (integer data times
@@ -101,9 +96,7 @@ proptest! {
     fn nearly_parallel(
         n in unitish(), w in unitish(), o in vec_in(10.0), a in vec_in(10.0), eps in log_uniform(-12.0, -1.0),
     ) {
-        let d = n.cross(w) + eps * n;
-        prop_assume!(d != Vec3::ZERO);
-        judge(&Ray::new(o, d), &Plane::new(a, n))?;
+        nearly_parallel_case(n, w, o, a, eps)?;
     }
 
     /// A line parallel to the plane term by term but for one tiny product:
@@ -117,8 +110,94 @@ proptest! {
         n in unitish(), i in 0usize..3, m in 1u32..(1 << 24), e in -160i32..0,
         o in vec_in(100.0), a in vec_in(100.0), s in log_uniform(-20.0, 20.0),
     ) {
-        let mut d = n.cross(Vec3::AXES[i]) * s;
-        d[i] = (f64::from(m) * 2f64.powi(e - 24)) as f32;
-        judge(&Ray::new(o, d), &Plane::new(a, n))?;
+        one_tiny_term_case(n, i, (m, e), (o, a), s)?;
+    }
+}
+
+/// [`hit`]'s check: `n` and `d` scaled by `sn`, `sd`; `o` and `a` by `so`,
+/// `sa`.
+fn hit_case(
+    n: [i32; 3],
+    d: [i32; 3],
+    (sn, sd): (f32, f32),
+    (o, a): (Vec3, Vec3),
+    (so, sa): (f32, f32),
+) -> Result<(), TestCaseError> {
+    prop_assume!(idot(n, d) != 0);
+    let ray = Ray::new(o * so, scaled(d, sd));
+    let plane = Plane::new(a * sa, scaled(n, sn));
+    let r = judge(&ray, &plane)?;
+    prop_assert_eq!(r.exact_class, "hit");
+    prop_assert_eq!(r.status, Status::Checked);
+    Ok(())
+}
+
+/// [`nearly_parallel`]'s check.
+fn nearly_parallel_case(n: Vec3, w: Vec3, o: Vec3, a: Vec3, eps: f32) -> Result<(), TestCaseError> {
+    let d = n.cross(w) + eps * n;
+    prop_assume!(d != Vec3::ZERO);
+    judge(&Ray::new(o, d), &Plane::new(a, n))?;
+    Ok(())
+}
+
+/// [`parallel_but_for_one_tiny_term`]'s check: component `i` of `d` set to
+/// `m·2^(e − 24)`.
+fn one_tiny_term_case(
+    n: Vec3,
+    i: usize,
+    (m, e): (u32, i32),
+    (o, a): (Vec3, Vec3),
+    s: f32,
+) -> Result<(), TestCaseError> {
+    let mut d = n.cross(Vec3::AXES[i]) * s;
+    d[i] = (f64::from(m) * 2f64.powi(e - 24)) as f32;
+    judge(&Ray::new(o, d), &Plane::new(a, n))?;
+    Ok(())
+}
+
+/// The shrunk failures recorded in `props_plane.proptest-regressions`, each
+/// through its property's check with the values proptest reported, so that
+/// they stay tests whatever the strategies come to generate from the
+/// recorded seeds.
+#[test]
+fn recorded_failures() {
+    let v = Vec3::new;
+    let cases: [(&str, Result<(), TestCaseError>); 3] = [
+        (
+            "hit",
+            hit_case(
+                [0, 0, 1],
+                [0, 0, 1],
+                (1.0, 1.0),
+                (v(0.0, 0.0, 0.18864065), v(0.0, 0.0, 0.028765123)),
+                (3.5373272e-29, 1.5924287e20),
+            ),
+        ),
+        (
+            "parallel_but_for_one_tiny_term",
+            one_tiny_term_case(
+                v(-0.13230738, 0.41377276, 0.39880395),
+                0,
+                (14312467, -91),
+                (
+                    v(36.71322, 0.0, 14.040102),
+                    v(-65.51939, 35.416805, -24.536283),
+                ),
+                1.0,
+            ),
+        ),
+        (
+            "nearly_parallel",
+            nearly_parallel_case(
+                v(-0.5419659, -0.5195481, 0.4414962),
+                v(-0.37756896, 0.9356014, -0.8069887),
+                v(0.0, 0.0, 0.0),
+                v(0.0, 0.0, 8.763067),
+                5.069713e-10,
+            ),
+        ),
+    ];
+    for (property, r) in cases {
+        assert!(r.is_ok(), "{property}: {r:?}");
     }
 }

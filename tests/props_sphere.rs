@@ -62,11 +62,7 @@ proptest! {
     /// Origin strictly inside: two roots of opposite signs.
     #[test]
     fn origin_inside(c in vec_in(100.0), r in 0.5f32..50.0, u in vec_in(0.5), d in unitish(), sd in log_uniform(-6.0, 6.0)) {
-        let ray = Ray::new(c + u * r, d * sd);
-        let sphere = Sphere::new(c, r);
-        let (t0, t1) = exact_two(&ray, &sphere)?;
-        prop_assert!(t0 < 0.0 && t1 > 0.0, "{} {}", t0, t1);
-        judge(&ray, &sphere)?;
+        origin_inside_case(c, r, u, d, sd)?;
     }
 
     /// The sphere behind the ray: the centre is `λ|d| ≥ 3R` back along the
@@ -104,7 +100,7 @@ proptest! {
     /// scene: the roots scale as `1/|d|` and stay accurate.
     #[test]
     fn direction_length(o in vec_in(5.0), d in unitish(), c in vec_in(1.0), r in 0.5f32..3.0, sd in log_uniform(-6.0, 6.0)) {
-        judge(&Ray::new(o, d * sd), &Sphere::new(c, r))?;
+        direction_length_case(o, d, c, r, sd)?;
     }
 
     /// A unit sphere `10³…10⁷` away, on the line of an integer direction,
@@ -133,9 +129,7 @@ proptest! {
     /// inside or out, looking anywhere.
     #[test]
     fn huge_close(c in vec_in(1.0), u in unitish(), r in log_uniform(3.0, 7.0), gap in -10.0f32..10.0, d in unitish(), sd in log_uniform(-3.0, 3.0)) {
-        let o = c + u * ((r + gap) / u.length());
-        let r = judge(&Ray::new(o, d * sd), &Sphere::new(c, r))?;
-        prop_assert!(r.status != Status::NonFinite);
+        huge_close_case(c, u, (r, gap), d, sd)?;
     }
 
     /// Origin exactly on the surface (integer quadruple), any direction:
@@ -155,6 +149,73 @@ proptest! {
 
 /// Directions parallel to an axis at the extremes of the range, a subnormal
 /// radius and a sphere near `f32::MAX` go through the same judge.
+/// [`origin_inside`]'s check: the origin `c + u r`, inside.
+fn origin_inside_case(c: Vec3, r: f32, u: Vec3, d: Vec3, sd: f32) -> Result<(), TestCaseError> {
+    let ray = Ray::new(c + u * r, d * sd);
+    let sphere = Sphere::new(c, r);
+    let (t0, t1) = exact_two(&ray, &sphere)?;
+    prop_assert!(t0 < 0.0 && t1 > 0.0, "{} {}", t0, t1);
+    judge(&ray, &sphere)?;
+    Ok(())
+}
+
+/// [`direction_length`]'s check: the direction `d` scaled by `sd`.
+fn direction_length_case(o: Vec3, d: Vec3, c: Vec3, r: f32, sd: f32) -> Result<(), TestCaseError> {
+    judge(&Ray::new(o, d * sd), &Sphere::new(c, r))?;
+    Ok(())
+}
+
+/// [`huge_close`]'s check: the origin `gap` from the surface along `u`.
+fn huge_close_case(
+    c: Vec3,
+    u: Vec3,
+    (r, gap): (f32, f32),
+    d: Vec3,
+    sd: f32,
+) -> Result<(), TestCaseError> {
+    let o = c + u * ((r + gap) / u.length());
+    let r = judge(&Ray::new(o, d * sd), &Sphere::new(c, r))?;
+    prop_assert!(r.status != Status::NonFinite);
+    Ok(())
+}
+
+/// The shrunk failures recorded in `props_sphere.proptest-regressions`,
+/// each through its property's check with the values proptest reported, so
+/// that they stay tests whatever the strategies come to generate from the
+/// recorded seeds.
+#[test]
+fn recorded_failures() {
+    let (v, zero) = (Vec3::new, Vec3::ZERO);
+    for (property, r) in [
+        (
+            "direction_length",
+            direction_length_case(
+                v(0.0, 1.9389585, 0.0),
+                v(0.0, 0.6763975, 0.0),
+                zero,
+                0.5,
+                1.0,
+            ),
+        ),
+        (
+            "huge_close",
+            huge_close_case(
+                zero,
+                v(0.0, 0.0, -0.5759571),
+                (1000.0, -1.2018872),
+                v(0.0, 0.0, -0.89047),
+                1.0,
+            ),
+        ),
+        (
+            "origin_inside",
+            origin_inside_case(zero, 0.5, zero, v(0.0, 0.0, -0.82302976), 1.0),
+        ),
+    ] {
+        assert!(r.is_ok(), "{property}: {r:?}");
+    }
+}
+
 #[test]
 fn extreme_scales() {
     let cases = [
