@@ -701,18 +701,17 @@ mod tests {
         assert_eq!(report_steps(&c), 27 * 5);
     }
 
-    fn temp_dir(name: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("rayoracle-bin-{}-{name}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        dir
+    /// A fresh directory, removed with all it holds when it drops.
+    fn temp_dir(name: &str) -> tempfile::TempDir {
+        let prefix = format!("rayoracle-bin-{name}-");
+        tempfile::Builder::new().prefix(&prefix).tempdir().unwrap()
     }
     const SPHERE: &str =
         r#"{"kind":"sphere","origin":[0,0,-5],"dir":[0,0,1],"center":[0,0,0],"radius":1}"#;
     #[test]
     fn default_job_merges_files_in_order_with_file_keys() {
         let dir = temp_dir("merge");
-        let out = dir.join("out/eval.jsonl");
+        let out = dir.path().join("out/eval.jsonl");
         let a = format!("\n{SPHERE}\n");
         let files = [
             ("a.jsonl".to_string(), a.as_str()),
@@ -732,13 +731,12 @@ mod tests {
             "{}",
             lines[1]
         );
-        let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]
     fn default_job_reports_bad_lines_and_empty_inputs() {
         let dir = temp_dir("bad");
-        let out = dir.join("out/eval.jsonl");
+        let out = dir.path().join("out/eval.jsonl");
         assert_eq!(default_job(&[], &out), EXIT_OK);
         assert!(!out.exists());
         assert_eq!(
@@ -749,7 +747,6 @@ mod tests {
             std::fs::read_to_string(&out).unwrap(),
             "{\"file\":\"x.jsonl\",\"line\":1,\"error\":\"kind: missing\"}\n"
         );
-        let _ = std::fs::remove_dir_all(&dir);
     }
 
     /// Every kind this build has, from the data compiled in: the run needs

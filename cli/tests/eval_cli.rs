@@ -3,7 +3,6 @@
 //! is off must give an error line instead.
 
 use std::io::Write;
-use std::path::PathBuf;
 use std::process::{Command, Stdio};
 
 const SPHERE: &str =
@@ -55,14 +54,18 @@ pub(crate) fn rayoracle(args: &[&str], stdin: &str) -> Run {
     }
 }
 
-/// A file of `lines` in the system temp directory (never in `fixtures/`).
-fn temp_file(name: &str, lines: &[&str]) -> PathBuf {
-    let path =
-        std::env::temp_dir().join(format!("rayoracle-eval-cli-{}-{name}", std::process::id()));
+/// A file of `lines` in the system temp directory (never in `fixtures/`),
+/// its name ending in `name`: a path that removes the file when it drops.
+fn temp_file(name: &str, lines: &[&str]) -> tempfile::TempPath {
+    let mut file = tempfile::Builder::new()
+        .prefix("rayoracle-eval-cli-")
+        .suffix(&format!("-{name}"))
+        .tempfile()
+        .unwrap();
     let mut text = lines.join("\n");
     text.push('\n');
-    std::fs::write(&path, text).unwrap();
-    path
+    file.write_all(text.as_bytes()).unwrap();
+    file.into_temp_path()
 }
 
 pub(crate) fn json(line: &str) -> serde_json::Value {
@@ -87,7 +90,6 @@ fn mixed_input_gives_one_line_per_case_in_order_and_exit_1() {
     ];
     let path = temp_file("mixed.jsonl", &input);
     let run = rayoracle(&["eval", path.to_str().unwrap()], "");
-    let _ = std::fs::remove_file(&path);
 
     assert_eq!(
         run.code, 1,
@@ -174,7 +176,6 @@ fn mixed_input_gives_one_line_per_case_in_order_and_exit_1() {
 fn all_good_lines_exit_0_with_a_summary_on_stderr() {
     let path = temp_file("good.jsonl", &[PLANE, SPHERE, "", QUADRIC, CAMERA]);
     let run = rayoracle(&["eval", path.to_str().unwrap()], "");
-    let _ = std::fs::remove_file(&path);
     assert_eq!(run.code, 0, "stderr: {}", run.stderr);
     let kinds: Vec<String> = run
         .lines()
@@ -369,5 +370,4 @@ fn a_closed_pipe_is_not_an_error_but_a_full_disk_is() {
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("cannot write stdout"));
-    let _ = std::fs::remove_file(path);
 }

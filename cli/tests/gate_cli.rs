@@ -163,10 +163,8 @@ fn a_program_that_hangs_is_stopped_after_the_timeout() {
 #[cfg(target_os = "linux")]
 #[test]
 fn a_hanging_program_is_stopped_with_the_processes_it_started() {
-    let pid_file = std::env::temp_dir().join(format!(
-        "rayoracle-gate-cli-{}-grandchild",
-        std::process::id()
-    ));
+    let dir = crate::cli::temp_dir("grandchild");
+    let pid_file = dir.join("pid");
     let script = format!(
         "read l; sleep 600 </dev/null >/dev/null 2>&1 & echo $! > {}; wait",
         pid_file.display()
@@ -179,7 +177,6 @@ fn a_hanging_program_is_stopped_with_the_processes_it_started() {
         r.stdout
     );
     let pid = std::fs::read_to_string(&pid_file).expect("the script wrote the pid");
-    let _ = std::fs::remove_file(&pid_file);
     // Gone, or a zombie until init reaps it: either way not running.
     let state = std::fs::read_to_string(format!("/proc/{}/stat", pid.trim()))
         .ok()

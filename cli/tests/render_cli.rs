@@ -12,18 +12,13 @@ fn png_size(path: &Path) -> (u32, u32) {
     (r.info().width, r.info().height)
 }
 
-/// A scene of the library's compiled-in fixtures, written to a file of its
-/// own name in a directory of its own, so that tests running in parallel
-/// never read a file another test is writing.
-fn fixture(name: &str) -> String {
-    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-    let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+/// The compiled-in fixture scene `name`, written to `dir/name`: each test
+/// reads files of its own directory, never one another test is writing.
+fn fixture(dir: &Path, name: &str) -> String {
     let (_, text) = rayoracle::fixtures::SCENES
         .into_iter()
         .find(|s| s.0 == name)
         .unwrap_or_else(|| panic!("no scene {name}"));
-    let dir = std::env::temp_dir().join(format!("rayoracle-cli-scenes-{}-{n}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join(name);
     std::fs::write(&path, text).unwrap();
     path.to_str().unwrap().to_string()
@@ -36,7 +31,7 @@ fn render_writes_each_channel_at_the_asked_size_and_both_paths_write_the_same_by
     for (out, path) in [(&x4, "x4"), (&reference, "reference")] {
         let (code, stdout, stderr) = run(&[
             "render",
-            &fixture("quadric-zoo.json"),
+            &fixture(&dir, "quadric-zoo.json"),
             "-o",
             out.to_str().unwrap(),
             "--path",
@@ -56,30 +51,29 @@ fn render_writes_each_channel_at_the_asked_size_and_both_paths_write_the_same_by
             "{file}"
         );
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
 fn only_the_asked_channels_are_written() {
     let dir = temp_dir("channels");
+    let out = dir.join("out");
     let (code, _, stderr) = run(&[
         "render",
-        &fixture("seed.json"),
+        &fixture(&dir, "seed.json"),
         "-o",
-        dir.to_str().unwrap(),
+        out.to_str().unwrap(),
         "--channel",
         "id",
         "--size",
         "16x12",
     ]);
     assert_eq!(code, 0, "{stderr}");
-    let mut names: Vec<String> = std::fs::read_dir(&dir)
+    let mut names: Vec<String> = std::fs::read_dir(&out)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();
     names.sort();
     assert_eq!(names, vec!["seed.id.png"]);
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -95,7 +89,7 @@ fn a_bad_scene_is_reported_with_its_place_and_the_others_are_still_rendered() {
     let (code, stdout, stderr) = run(&[
         "render",
         bad.to_str().unwrap(),
-        &fixture("seed.json"),
+        &fixture(&dir, "seed.json"),
         "-o",
         out.to_str().unwrap(),
         "--size",
@@ -108,25 +102,19 @@ fn a_bad_scene_is_reported_with_its_place_and_the_others_are_still_rendered() {
     );
     assert!(stdout.contains("seed.json"), "{stdout}");
     assert_eq!(png_size(&out.join("seed.depth.png")), (8, 6));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
 fn bad_flags_are_refused_before_any_work() {
-    let (code, _, stderr) = run(&["render", &fixture("seed.json"), "-o", "x", "--size", "9"]);
+    let dir = temp_dir("flags");
+    let seed = fixture(&dir, "seed.json");
+    let (code, _, stderr) = run(&["render", &seed, "-o", "x", "--size", "9"]);
     assert_eq!(code, 2, "clap's usage error");
     assert!(stderr.contains("WIDTHxHEIGHT"), "{stderr}");
-    let (code, _, stderr) = run(&["render", &fixture("seed.json"), "-o", "x", "--path", "gpu"]);
+    let (code, _, stderr) = run(&["render", &seed, "-o", "x", "--path", "gpu"]);
     assert_eq!(code, 2);
     assert!(stderr.contains("expected reference or x4"), "{stderr}");
-    let (code, _, stderr) = run(&[
-        "render",
-        &fixture("seed.json"),
-        "-o",
-        "x",
-        "--size",
-        "70000x70000",
-    ]);
+    let (code, _, stderr) = run(&["render", &seed, "-o", "x", "--size", "70000x70000"]);
     assert_eq!(code, 1);
     assert!(
         stderr.contains("--size 70000x70000") && stderr.contains("limit"),
@@ -143,7 +131,7 @@ fn scenes_that_would_overwrite_each_other_and_a_file_for_a_directory_are_refused
     let (a, b) = (dir.join("a"), dir.join("b"));
     for d in [&a, &b] {
         std::fs::create_dir_all(d).unwrap();
-        std::fs::copy(fixture("seed.json"), d.join("seed.json")).unwrap();
+        fixture(d, "seed.json");
     }
     let out = dir.join("out");
     let (sa, sb) = (a.join("seed.json"), b.join("seed.json"));
@@ -190,7 +178,6 @@ fn scenes_that_would_overwrite_each_other_and_a_file_for_a_directory_are_refused
     assert_eq!(code, 2);
     assert_eq!(stdout, "");
     assert!(stderr.contains("is a file; name a directory"), "{stderr}");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// From a directory outside the source tree: the cases, the catalogue and
@@ -213,5 +200,4 @@ fn the_default_job_evaluates_the_fixtures_and_renders_the_default_scene() {
         assert_eq!(png_size(&dir.join(file)), (160, 120));
     }
     assert!(stdout.contains("sphere/far-tiny"), "the report: {stdout}");
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -116,7 +116,6 @@ fn quick_report_writes_the_table_the_json_rows_and_a_plot_per_kernel() {
             assert!(plot.contains(variant), "{kernel} plot lacks {variant}");
         }
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -135,5 +134,4 @@ fn a_broken_catalogue_is_reported_with_its_file_and_line() {
     let (code, _, stderr) = run(&["report", "--quick", "--stiff", dir.to_str().unwrap()]);
     assert_eq!(code, 2);
     assert!(stderr.contains("sphere.jsonl:2: dir: missing"), "{stderr}");
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -204,6 +204,7 @@ impl Frame {
 /// let dir = std::env::temp_dir().join("rayoracle-doc-write-pngs");
 /// let files = write_pngs(&f, Channels::parse("id").unwrap(), &dir, "empty").unwrap();
 /// assert_eq!(files, vec![dir.join("empty.id.png")]);
+/// # std::fs::remove_dir_all(&dir).unwrap();
 /// ```
 #[cfg(feature = "png")]
 pub fn write_pngs(

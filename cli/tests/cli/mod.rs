@@ -1,16 +1,25 @@
 //! Running the `rayoracle` binary from the CLI tests (`tests/*_cli.rs`).
 #![allow(dead_code)]
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
-/// A fresh, empty directory under the system temp dir, named for the test
-/// binary's process and `name`.
-pub fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rayoracle-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+/// A fresh, empty directory under the system temp dir, named for `name`: a
+/// [`Path`] that is removed, with all it holds, when it drops (a failing
+/// test's too, as its panic unwinds).
+pub struct TempDir(tempfile::TempDir);
+
+impl std::ops::Deref for TempDir {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        self.0.path()
+    }
+}
+
+/// A [`TempDir`] whose name starts `rayoracle-cli-NAME-`.
+pub fn temp_dir(name: &str) -> TempDir {
+    let prefix = format!("rayoracle-cli-{name}-");
+    TempDir(tempfile::Builder::new().prefix(&prefix).tempdir().unwrap())
 }
 
 /// Runs `rayoracle ARGS…`: the exit code, stdout and stderr.
