@@ -197,7 +197,5 @@ fn recorded_failures() {
             ),
         ),
     ];
-    for (property, r) in cases {
-        assert!(r.is_ok(), "{property}: {r:?}");
-    }
+    assert_recorded(cases);
 }
