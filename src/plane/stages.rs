@@ -214,12 +214,12 @@ pub(crate) fn first_pair(
     let s1 = p0 + p1;
     let s = s1 + p2;
     let m = p0.abs() + p1.abs() + p2.abs();
-    let ([num, den], [_, lead], [m_num, _]) = (s.to_array(), s1.to_array(), m.to_array());
+    let [num, den] = s.to_array();
     // [K, K − 1], or 0 under DAZ. A lane fails where its comparison is
     // false: a NaN passes here, and leaves t̂ a NaN, infinite or 0, which
     // the test of its exponent turns away.
     let k = least_subnormal_pair() * f64x2::from([2f64.powi(159), (K - 1.0) * 2f64.powi(149)]);
-    let fails = f64x2::from([m_num, lead.abs()]).simd_ge(k * s.abs());
+    let fails = low_high(m, s1.abs()).simd_ge(k * s.abs());
     let t = num / den;
     let f = Relative {
         hit: fails.to_bitmask() == 0 && (EXP_MIN..0x7ff).contains(&(t.to_bits() >> 52 & 0x7ff)),
@@ -235,6 +235,21 @@ pub(crate) fn first_pair(
         },
         f,
     )
+}
+
+/// `[x₀, y₁]`: one `movsd` on x86-64, where building the pair from
+/// scalars takes a shuffle of each.
+#[inline(always)]
+fn low_high(x: wide::f64x2, y: wide::f64x2) -> wide::f64x2 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use wide::bytemuck::cast;
+        cast(safe_arch::copy_replace_low_f64_m128d(cast(y), cast(x)))
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        wide::f64x2::from([x.to_array()[0], y.to_array()[1]])
+    }
 }
 
 /// [`first_pair`]'s lanes: `[n̂um, d̂en]`, `[ŵ₀n₀ + ŵ₁n₁, ŝ₁]`, the two
