@@ -268,3 +268,57 @@ fn inputs(case: &Case) -> (Option<Ray>, Vec<Vec<f32>>) {
         Case::Camera(p, _) => (None, vec![v(p.position), v(p.dir), v(p.up), vec![p.angle]]),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Declared, Semantics};
+
+    /// Each form of [`Declared::PRECONDITIONS`] parses to its setting,
+    /// `spread:K` from `K = 1` and `magnitudes:LO:HI` from `LO = HI = 0`;
+    /// every refusal names the input and the valid forms.
+    #[test]
+    fn every_precondition_parses_from_its_least_bound() {
+        let d = Declared::f32(Semantics::NearestPositive);
+        let require = |s: &str| d.require(s);
+        assert_eq!(require("unit-dirs"), Ok(d.unit_dirs()));
+        assert_eq!(require("no-subnormals"), Ok(d.no_subnormals()));
+        assert_eq!(require("off-surface"), Ok(d.off_surface()));
+        assert_eq!(require("spread:1"), Ok(d.spread(1.0)));
+        assert_eq!(require("spread:1e6"), Ok(d.spread(1e6)));
+        assert_eq!(require("magnitudes:0:0"), Ok(d.magnitudes(0.0, 0.0)));
+        assert_eq!(require("magnitudes:1e-9:1e9"), Ok(d.magnitudes(1e-9, 1e9)));
+        for bad in [
+            "spread:0.99",
+            "spread:NaN",
+            "spread:",
+            "magnitudes:2:1",
+            "magnitudes:-1:1",
+            "magnitudes:1",
+            "off_surface",
+            "",
+        ] {
+            let e = require(bad).unwrap_err();
+            assert!(
+                e.contains(&format!("{bad:?}")) && e.contains(Declared::PRECONDITIONS),
+                "{e}"
+            );
+        }
+    }
+
+    /// `spread:K` skips a case whose largest magnitude is more than `K`
+    /// times its least, not one at exactly `K` times: here a centre 4
+    /// from the origin and a radius of 1 (the direction left out).
+    #[cfg(feature = "sphere")]
+    #[test]
+    fn spread_skips_beyond_its_ratio_not_at_it() {
+        use crate::{Ray, case::Case, sphere::Sphere};
+        use glam::Vec3;
+        let d = Declared::f32(Semantics::NearestPositive);
+        let c = Case::Sphere(
+            Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1e9)),
+            Sphere::new(Vec3::new(0.0, 0.0, -4.0), 1.0),
+        );
+        assert_eq!(d.spread(4.0).skips(&c), None);
+        assert_eq!(d.spread(3.9).skips(&c), Some("spread"));
+    }
+}

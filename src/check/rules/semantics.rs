@@ -119,3 +119,40 @@ impl FromStr for Semantics {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Semantics;
+
+    /// Each name parses to its semantics; an interval must be nonempty
+    /// (`T0 < T1`, so NaN is refused), and every refusal names the input
+    /// and the valid forms.
+    #[test]
+    fn every_form_parses_and_an_empty_interval_is_refused() {
+        let parse = |s: &str| s.parse::<Semantics>();
+        assert_eq!(parse("whole-line"), Ok(Semantics::WholeLine));
+        assert_eq!(parse("nearest"), Ok(Semantics::NearestPositive));
+        assert_eq!(parse("solid"), Ok(Semantics::Solid));
+        let (t_min, t_max) = (-1.0, 2.0);
+        assert_eq!(parse("range:-1:2"), Ok(Semantics::Range { t_min, t_max }));
+        assert_eq!(
+            parse("roots-in:-1:2"),
+            Ok(Semantics::RootsIn { t_min, t_max })
+        );
+        for bad in [
+            "range:1:1",
+            "roots-in:2:1",
+            "range:0:NaN",
+            "range:1",
+            "range:a:1",
+            "near",
+            "",
+        ] {
+            let e = parse(bad).unwrap_err();
+            assert!(
+                e.contains(&format!("{bad:?}")) && e.contains(Semantics::FORMS),
+                "{e}"
+            );
+        }
+    }
+}
