@@ -115,6 +115,26 @@ mod tests {
             assert_eq!(sq(x), u64::from(x * x));
         }
         assert_eq!(calls.get(), 1 + KEPT);
+        for x in 10..10 + KEPT as u32 {
+            assert_eq!(sq(x), u64::from(x * x));
+        }
+        assert_eq!(calls.get(), 1 + KEPT, "all of the last KEPT are kept");
         assert_eq!((sq(3), calls.get()), (9, 2 + KEPT));
+    }
+
+    /// Two keys of the same hash are told apart by the keys: a collision
+    /// is never an answer. (The hash only spares most comparisons of keys.)
+    #[test]
+    fn a_hash_collision_is_not_an_answer() {
+        thread_local! {
+            static PAIRS: RefCell<Memo<(u64, u64), u64>> = const { RefCell::new(Memo::new()) };
+        }
+        // A pair hashes to ((a·C).rotl(5) ^ b)·C: the second words make up
+        // for the first.
+        let first = |a: u64| a.wrapping_mul(0x51_7c_c1_b7_27_22_0a_95).rotate_left(5);
+        let (x, y) = ((1, 0), (2, first(1) ^ first(2)));
+        assert!(x != y && hash(&x) == hash(&y));
+        assert_eq!(remembered(&PAIRS, x, || 1), 1);
+        assert_eq!(remembered(&PAIRS, y, || 2), 2);
     }
 }

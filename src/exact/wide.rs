@@ -120,6 +120,24 @@ mod tests {
         if r.random_bool(0.5) { -m } else { m }
     }
 
+    /// A magnitude of `2^255` or more is refused, whatever its bytes past
+    /// the 32nd: here each of them nonzero, or the least beyond the tier.
+    #[test]
+    fn from_ibig_refuses_every_value_past_the_tier() {
+        let one = || IBig::from(1u8);
+        let past = [
+            IBig::from(0x0101_0101_0101_0101u64) << 256,
+            (one() << 256) + one(),
+            one() << 255,
+        ];
+        for m in past {
+            assert_eq!(from_ibig(&m), None, "{m}");
+            assert_eq!(from_ibig(&-m.clone()), None, "-{m}");
+        }
+        let top = (one() << 255) - one();
+        assert!(from_ibig(&top).is_some() && from_ibig(&-top).is_some());
+    }
+
     /// The conversions round-trip every value of the tier and refuse every
     /// other; sums, products and shifts agree with big integers or decline
     /// exactly when the exact result has 256 bits or more (products: when
