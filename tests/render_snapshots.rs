@@ -101,10 +101,10 @@ fn every_fixture_scene_is_the_same_bits_on_both_paths_and_matches_its_snapshots(
 
 #[test]
 fn the_review_aid_writes_a_diff_for_a_changed_frame_and_removes_it_when_it_matches() {
-    let dir = std::env::temp_dir().join(format!("rayoracle-review-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let snap = dir.join("t__seed_depth.snap.png");
-    let diff = dir.join("t__seed_depth.diff.png");
+    // Removed on drop, a failing run's too.
+    let dir = tempfile::tempdir().unwrap();
+    let snap = dir.path().join("t__seed_depth.snap.png");
+    let diff = dir.path().join("t__seed_depth.diff.png");
     let scene = Scene::load(FsPath::new(ROOT).join("fixtures/scenes/seed.json")).unwrap();
     let old = render(&Plan::compile(&scene, Channels::DEPTH).unwrap(), Path::X4).depth_png();
     let mut moved = scene.clone();
@@ -128,5 +128,4 @@ fn the_review_aid_writes_a_diff_for_a_changed_frame_and_removes_it_when_it_match
         !diff.exists(),
         "a stale diff is removed once the frame matches"
     );
-    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -118,11 +118,11 @@ fn every_bad_scene_gets_a_located_error_naming_the_field() {
 
 #[test]
 fn a_file_error_names_the_file_line_and_column() {
-    let path =
-        std::env::temp_dir().join(format!("rayoracle-bad-scene-{}.json", std::process::id()));
-    std::fs::write(&path, "{\n  \"camera\": 7\n}\n").unwrap();
-    let e = Scene::load(&path).unwrap_err();
-    std::fs::remove_file(&path).unwrap();
+    // Removed on drop, a failing run's too.
+    let file = tempfile::Builder::new().suffix(".json").tempfile().unwrap();
+    let path = file.path();
+    std::fs::write(path, "{\n  \"camera\": 7\n}\n").unwrap();
+    let e = Scene::load(path).unwrap_err();
     let shown = e.to_string();
     let want = format!("{}:2:", path.display());
     assert!(shown.starts_with(&want), "{shown}");
