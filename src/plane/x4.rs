@@ -280,11 +280,23 @@ fn finish<L: Real4>(
 #[inline(never)]
 fn finish_full(
     hit: u32,
-    [t01, t23]: [u64; 2],
+    t: [u64; 2],
     env: impl Fn(bool) -> bool,
     ray: &Ray4,
     p: &Plane4,
 ) -> PlaneHit4 {
+    let (class, t, done) = decide_full(hit, t, ray, p);
+    if done.all() && env(flush_prone4(t)) {
+        PlaneHit4 { class, t }
+    } else {
+        PlaneHit4::settle([class, cast(t)], done, ray, p)
+    }
+}
+
+/// The packet's passes of [`finish_full`] before the scalar stages: the
+/// classes and roots, and the lanes they decide (−1), as `i32` lanes.
+#[inline(always)]
+fn decide_full(hit: u32, [t01, t23]: [u64; 2], ray: &Ray4, p: &Plane4) -> (i32x4, f32x4, i32x4) {
     let bits = i32x4::from([1, 2, 4, 8]);
     let hit = (i32x4::splat(hit as i32) & bits).simd_eq(bits);
     let t: f32x4 = cast([t01, t23]);
@@ -327,11 +339,7 @@ fn finish_full(
     // ONE where hit, NONE where parallel (never both), else ALL.
     let k = i32x4::splat;
     let class = k(ALL) + (h & k(ONE - ALL)) + (par & k(NONE - ALL));
-    if done.all() && env(flush_prone4(t)) {
-        PlaneHit4 { class, t }
-    } else {
-        PlaneHit4::settle([class, cast(t)], done, ray, p)
-    }
+    (class, t, done)
 }
 
 /// The kernel over any four-lane [`Real4`].
@@ -416,6 +424,20 @@ impl PlaneHit4 {
 mod tests {
     use super::*;
 
+    /// What the packet's own passes decide, from the first pass through
+    /// [`decide_full`], before the scalar stages: the answers, and the
+    /// lanes decided.
+    fn packet_passes(r4: &Ray4, p4: &Plane4) -> ([PlaneHit; 4], [bool; 4]) {
+        let (o, d, a, n) = widened::<F64x4>(r4, p4);
+        let first = decide(o, d, a, n);
+        let hit = F64x4::mask_i32(first.hit).to_bitmask();
+        let (class, t, done) = decide_full(hit, cast(first.t.narrow()), r4, p4);
+        (
+            PlaneHit4 { class, t }.lanes(),
+            done.to_array().map(|x| x != 0),
+        )
+    }
+
     /// Every copy of the batch (pairs of [`F64x4`], pairs of AVX
     /// registers where the CPU has AVX2, one AVX-512 register where it has
     /// AVX-512, which [`intersect_packets`] takes) gives what the baseline
@@ -458,6 +480,7 @@ mod tests {
         assert_eq!(full.hit.lanes(), [true; 4]);
         let want = rays.map(|r| reference::intersect(&r, &p));
         assert!(matches!(want[0], PlaneHit::Hit(_)), "{want:?}");
+        assert_eq!(packet_passes(&r4, &p4), (want, [true; 4]));
         assert_eq!(intersect_baseline(&r4, &p4).lanes(), want);
         assert_eq!(intersect(&r4, &p4).lanes(), want);
     }
@@ -494,7 +517,102 @@ mod tests {
             PlaneHit::Hit(6.0),
         ];
         assert_eq!(rays.map(|r| reference::intersect(&r, &p)), want);
+        assert_eq!(packet_passes(&r4, &p4), (want, [true; 4]));
         assert_eq!(intersect_baseline(&r4, &p4).lanes(), want);
+        assert_eq!(intersect(&r4, &p4).lanes(), want);
+    }
+
+    /// Lines parallel to the plane `(a − o)·n = 0`, `a = (2⁶⁰, 0, 1)`,
+    /// `n = (1, 1, 1)`: one whose offset `2⁶⁰ − 2⁶⁰ + 1` cancels below the
+    /// passes' bounds (settled by the exact offset), one in the plane
+    /// (likewise), and one whose offset `2⁶⁰ + 1` is certain but not exact
+    /// in f64 (settled by the second pass alone); and a hit. The packet's
+    /// own passes decide every lane, as the reference does, and none goes
+    /// to the scalar stages; so they do without the hit (the first pass
+    /// certifying no lane), with a line from a point of the plane in its
+    /// place, whose root 0 only the full filter certifies, and in a packet
+    /// of hits each certified by a different set of passes.
+    #[test]
+    fn the_packet_decides_parallel_lanes_whichever_pass_settles_them() {
+        use glam::Vec3;
+        let big = 2f32.powi(60);
+        let p = Plane::new(Vec3::new(big, 0.0, 1.0), Vec3::ONE);
+        let across = Vec3::new(1.0, -1.0, 0.0);
+        let rays = [
+            crate::Ray::new(Vec3::new(0.0, big, 0.0), across),
+            crate::Ray::new(Vec3::new(0.0, big, 1.0), across),
+            crate::Ray::new(Vec3::ZERO, across),
+            crate::Ray::new(Vec3::ZERO, Vec3::Z),
+        ];
+        let (r4, p4) = (Ray4::from_rays(rays), Plane4::splat(&p));
+        let (o, d, a, n) = widened::<F64x4>(&r4, &p4);
+        let c = stages::filter_compensated(o, d, a, n, 1.0);
+        assert_eq!(c.den_zero.lanes(), [true, true, true, false]);
+        assert_eq!(c.parallel.lanes(), [false, false, true, false]);
+        assert_eq!(
+            stages::exact_num(o, a, n).0.lanes(),
+            [true, true, false, false]
+        );
+        let want = [
+            PlaneHit::Parallel,
+            PlaneHit::InPlane,
+            PlaneHit::Parallel,
+            PlaneHit::Hit(big),
+        ];
+        assert_eq!(rays.map(|r| reference::intersect(&r, &p)), want);
+        assert_eq!(packet_passes(&r4, &p4), (want, [true; 4]));
+        assert_eq!(intersect_baseline(&r4, &p4).lanes(), want);
+        assert_eq!(intersect(&r4, &p4).lanes(), want);
+        // Without the hit, a packet the first pass certifies no lane of.
+        let r4 = Ray4::from_rays([rays[0], rays[1], rays[2], rays[2]]);
+        let want = [want[0], want[1], want[2], want[2]];
+        assert_eq!(packet_passes(&r4, &p4), (want, [true; 4]));
+        // With a line from a point of the plane, whose root 0 only the
+        // full filter certifies: it runs on the packet, and keeps the
+        // other lanes.
+        let from = crate::Ray::new(Vec3::new(big, 0.0, 1.0), Vec3::Z);
+        let r4 = Ray4::from_rays([from, rays[0], rays[1], rays[2]]);
+        let want = [PlaneHit::Hit(0.0), want[0], want[1], want[2]];
+        assert_eq!(reference::intersect(&from, &p), want[0]);
+        let (o, d, a, n) = widened::<F64x4>(&r4, &p4);
+        let c = stages::filter_compensated(o, d, a, n, 1.0);
+        let second = c.relative.hit & certify_relative(c.relative.t, c.relative.r);
+        assert_eq!(second.lanes(), [false; 4]);
+        assert_eq!(decide(o, d, a, n).hit.lanes(), [false; 4]);
+        assert_eq!(packet_passes(&r4, &p4), (want, [true; 4]));
+        assert_eq!(intersect(&r4, &p4).lanes(), want);
+        // Hits each certified by a different set of passes, with the full
+        // filter running: the first and second pass (`d·n = 1 − 1 + 2⁻⁶⁰`,
+        // exact in f64, below the full filter's bound), the second alone
+        // (`d·n = 1 + 2⁻⁶⁰ − 1`, whose first sum rounds), the second and
+        // the full filter (as in `nearly_parallel_lanes_go_to_the_full_filter`),
+        // and the full filter alone (the root 0 above).
+        let (s, e) = (2f32.powi(-30), f32::EPSILON);
+        let tilted = Plane::new(Vec3::Z, Vec3::new(1.0 - e, s, 2f32.powi(-20) - 1.0));
+        let ones = Plane::new(Vec3::new(1.0, 2.0, 3.0), Vec3::ONE);
+        let tiny = 2f32.powi(-60);
+        let rays = [
+            crate::Ray::new(Vec3::ZERO, Vec3::new(1.0, -1.0, tiny)),
+            crate::Ray::new(Vec3::ZERO, Vec3::new(1.0, tiny, -1.0)),
+            crate::Ray::new(Vec3::new(0.3, 0.1, 0.7), Vec3::new(1.0 - e, s, 1.0)),
+            from,
+        ];
+        let planes = [ones, ones, tilted, p];
+        let (r4, p4) = (Ray4::from_rays(rays), Plane4::from_planes(planes));
+        let (o, d, a, n) = widened::<F64x4>(&r4, &p4);
+        let c = stages::filter_compensated(o, d, a, n, 1.0);
+        let second = c.relative.hit & certify_relative(c.relative.t, c.relative.r);
+        let f = stages::filter(o, d, a, n, 1.0);
+        let full = f.hit & certify_end(f.t, f.r, f.a).0;
+        assert_eq!(decide(o, d, a, n).hit.lanes(), [true, false, false, false]);
+        assert_eq!(second.lanes(), [true, true, true, false]);
+        assert_eq!(full.lanes(), [false, false, true, true]);
+        let want = [0, 1, 2, 3].map(|i| reference::intersect(&rays[i], &planes[i]));
+        assert!(
+            want.iter().all(|h| matches!(h, PlaneHit::Hit(_))),
+            "{want:?}"
+        );
+        assert_eq!(packet_passes(&r4, &p4), (want, [true; 4]));
         assert_eq!(intersect(&r4, &p4).lanes(), want);
     }
 }
