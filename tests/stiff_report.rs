@@ -423,6 +423,13 @@ fn ftz_and_daz_change_no_answer() {
         Ray::new(Vec3::ZERO, Vec3::new(1.0, -1.0, 1e-40)),
         plane::Plane::new(Vec3::new(1e-30, 0.0, 0.0), Vec3::ONE),
     ));
+    // Roots −10⁹ and 10⁻³⁹ (subnormal) of `t² + 10⁹t − 10⁻³⁰`, from
+    // normal inputs: results of which FTZ would flush one root only.
+    let k = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1e9, 0.0, 0.0, -1e-30];
+    cases.push(Case::Quadric(
+        Ray::new(Vec3::ZERO, Vec3::X),
+        quadric::Quadric::new(k),
+    ));
     cases.push(Case::Sphere(
         Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1e18)),
         sphere::Sphere::new(Vec3::new(0.0, 0.0, 1e-20), 1e-21),

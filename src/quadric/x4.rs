@@ -390,10 +390,16 @@ fn decide_sorted<L: Real>(c: &lanes::Classes<L>, f: lanes::Sorted<L>) -> (Decide
 #[cold]
 #[inline(never)]
 fn quotients(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit4 {
+    finish(decide_quotients(ray, q), env, ray, q)
+}
+
+/// What [`quotients`] decides, before the scalar stages.
+#[inline(always)]
+fn decide_quotients(ray: &Ray4, q: &Quadric4) -> Decided<F64x4> {
     let k = q.lanes::<F64x4>();
     let w = F64x4::widen;
     let c = stages::classes(&k, ray.origin.map(w), ray.dir.map(w), 1.0);
-    let x = if F64x4::all(!(c.two | c.linear())) {
+    if F64x4::all(!(c.two | c.linear())) {
         let (none, all) = (c.none(), c.all());
         let (no_lane, nan) = (none & !none, F64x4::splat(f64::NAN));
         Decided {
@@ -406,8 +412,7 @@ fn quotients(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit
         }
     } else {
         decide(stages::roots(&c, 1.0))
-    };
-    finish(x, env, ray, q)
+    }
 }
 
 /// The first pass of [`intersect`] alone on one line, the bounds of
@@ -560,5 +565,61 @@ mod tests {
                 .iter()
                 .all(|r| reference::intersect(r, &cyl) == QuadricHit::None)
         );
+    }
+
+    /// The quotients ([`decide`]) settle a lane of each class on the
+    /// packet: two roots, the paraboloid `z = x² + y²` along its axis (α
+    /// = 0, every term 0: one root), no root, and a line in the double
+    /// plane `x² = 0` (every term of α, β and γ 0). A lane with α = 0
+    /// sends the packet to them from the first pass, which settles the two
+    /// roots and the miss itself; no lane goes on to the scalar stages, nor
+    /// in a packet of misses and lines on the surface alone.
+    #[test]
+    fn the_quotients_settle_a_lane_of_each_class() {
+        use crate::{Ray, ray4::Ray4};
+        use glam::Vec3;
+        let bowl = Quadric::new([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0]);
+        let plane = Quadric::new([1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
+        let qs = [bowl, bowl, bowl, plane];
+        let rays = [
+            Ray::new(Vec3::new(-5.0, 0.0, 1.0), Vec3::X),
+            Ray::new(Vec3::new(0.0, 0.0, -2.0), Vec3::Z),
+            Ray::new(Vec3::new(-5.0, 0.0, -1.0), Vec3::X),
+            Ray::new(Vec3::ZERO, Vec3::Y),
+        ];
+        let want = [
+            QuadricHit::Two(4.0, 6.0),
+            QuadricHit::One(2.0),
+            QuadricHit::None,
+            QuadricHit::All,
+        ];
+        assert_eq!(
+            [0, 1, 2, 3].map(|i| reference::intersect(&rays[i], &qs[i])),
+            want
+        );
+        let (r4, q4) = (Ray4::from_rays(rays), Quadric4::from_quadrics(qs));
+        let w = F64x4::widen;
+        let (o, d) = (r4.origin.map(w), r4.dir.map(w));
+        let first = lanes::classes(&q4.lanes::<F64x4>(), o, d, 1.0, 1.0);
+        let (sorted, open) = decide_sorted(&first, lanes::sorted(&first, 1.0));
+        assert_eq!(sorted.done.lanes(), [true, false, true, false]);
+        assert_eq!(open.lanes(), [false, true, false, false]);
+        let x = decide_quotients(&r4, &q4);
+        assert_eq!(x.two.lanes(), [true, false, false, false]);
+        assert_eq!(x.one.lanes(), [false, true, false, false]);
+        assert_eq!(x.all.lanes(), [false, false, false, true]);
+        assert_eq!(x.done.lanes(), [true; 4]);
+        assert_eq!(intersect_baseline(&r4, &q4).lanes(), want);
+        assert_eq!(intersect(&r4, &q4).lanes(), want);
+        // With no lane of two roots or one, the filter's classes alone.
+        let (r4, q4) = (
+            Ray4::from_rays([rays[2], rays[3], rays[3], rays[2]]),
+            Quadric4::from_quadrics([bowl, plane, plane, bowl]),
+        );
+        let x = decide_quotients(&r4, &q4);
+        assert_eq!(x.all.lanes(), [false, true, true, false]);
+        assert_eq!(x.done.lanes(), [true; 4]);
+        let want = [want[2], want[3], want[3], want[2]];
+        assert_eq!(intersect_baseline(&r4, &q4).lanes(), want);
     }
 }
