@@ -195,14 +195,12 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
 }
 
 /// What the lanes decide, before any conversion: the certified two-root
-/// lanes, the lanes done, the lanes whose class is two but whose roots are
-/// not certified yet (the only ones the second pass can decide), and, in
-/// the lanes `two`, values that round to the sorted roots' `f32` values
-/// (anything elsewhere: [`Decided::packed`] puts NaN there).
+/// lanes, the lanes done, and, in the lanes `two`, values that round to
+/// the sorted roots' `f32` values (anything elsewhere: [`Decided::packed`]
+/// puts NaN there).
 struct Decided<L: Real> {
     two: L::Mask,
     done: L::Mask,
-    open: L::Mask,
     lo: L,
     hi: L,
 }
@@ -211,20 +209,18 @@ impl<W: Real8> Decided<W> {
     #[inline(always)]
     fn halves(self) -> [Decided<W::Half>; 2] {
         let m = W::mask_halves;
-        let ([w0, w1], [d0, d1], [p0, p1]) = (m(self.two), m(self.done), m(self.open));
+        let ([w0, w1], [d0, d1]) = (m(self.two), m(self.done));
         let ([l0, l1], [h0, h1]) = (self.lo.halves(), self.hi.halves());
         [
             Decided {
                 two: w0,
                 done: d0,
-                open: p0,
                 lo: l0,
                 hi: h0,
             },
             Decided {
                 two: w1,
                 done: d1,
-                open: p1,
                 lo: l1,
                 hi: h1,
             },
@@ -234,7 +230,7 @@ impl<W: Real8> Decided<W> {
 
 impl<L: Real4> Decided<L> {
     /// The decisions in `f32` lanes, as [`Packed`] holds them: a lane
-    /// certified two whose root is 0 or subnormal is left open, for
+    /// certified two whose root is 0 or subnormal is left, for
     /// [`finish_rest`].
     #[inline(always)]
     fn packed(&self) -> Packed {
@@ -242,12 +238,11 @@ impl<L: Real4> Decided<L> {
         let normal = |t: f32x4| cast::<_, i32x4>(t.abs().simd_ge(f32x4::splat(f32::MIN_POSITIVE)));
         let certified = L::mask_i32(self.two);
         let two = certified & normal(lo) & normal(hi);
-        // Lanes certified but not normal, moved from done to open.
+        // Lanes certified but not normal, moved from done to left.
         let moved = certified ^ two;
         Packed {
             two,
             left: L::mask_i32(!self.done) | moved,
-            open: L::mask_i32(self.open) | moved,
             t0: nan_but::<L>(two, lo),
             t1: nan_but::<L>(two, hi),
         }
@@ -258,13 +253,12 @@ impl<L: Real4> Decided<L> {
 /// masks of [`Decided`] as `i32` lanes (−1 where set), with the lanes not
 /// done (`left`) in place of those done, and the roots of the lanes
 /// `two`, NaN elsewhere. No root of a lane `two` is 0 or subnormal (such
-/// a lane is left open), so the results of a packet with no lane left
-/// stand wherever denormals-are-zero is off, flush-to-zero or not.
+/// a lane is left), so the results of a packet with no lane left stand
+/// wherever denormals-are-zero is off, flush-to-zero or not.
 #[derive(Clone, Copy)]
 struct Packed {
     two: i32x4,
     left: i32x4,
-    open: i32x4,
     t0: f32x4,
     t1: f32x4,
 }
@@ -288,7 +282,6 @@ fn decide_sorted<L: Real>(f: stages::Sorted<L>) -> Decided<L> {
     Decided {
         two,
         done: f.none | two,
-        open: f.two & !two,
         lo,
         hi,
     }
@@ -299,22 +292,23 @@ fn decide_sorted<L: Real>(f: stages::Sorted<L>) -> Decided<L> {
 /// [`Packed`] needs): the masks go to `i32` lanes before the roots are
 /// ready, and the certification's own conversions give the roots, so no
 /// mask is widened to 64-bit lanes and narrowed back on the way from the
-/// roots to the result.
+/// roots to the result. With it, the lanes whose class is two but whose
+/// roots are not certified (the only ones the second pass can decide).
 #[inline(always)]
-fn decide_sorted4<L: Real4>(f: stages::Sorted<L>) -> Packed {
+fn decide_sorted4<L: Real4>(f: stages::Sorted<L>) -> (Packed, i32x4) {
     let (ok_lo, lo) = certify_normal4(f.lo, f.r, f.a);
     let (ok_hi, hi) = certify_normal4(f.hi, f.r, f.a);
     let certain = L::mask_i32(f.two);
     let two = certain & ok_lo & ok_hi;
-    Packed {
+    let x = Packed {
         two,
         // The lanes that may have a root (a line, not `miss`), but not
         // two certified.
         left: L::mask_i32(!f.none) & !two,
-        open: certain & !two,
         t0: nan_but::<L>(two, lo),
         t1: nan_but::<L>(two, hi),
-    }
+    };
+    (x, certain & !two)
 }
 
 /// The second pass, for the lanes the first leaves: [`stages::filter`],
@@ -329,7 +323,6 @@ fn decide_quotients<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L
     Decided {
         two,
         done: f.none | two,
-        open: f.two & !two,
         lo: L::select(swap, f.t1, f.t0),
         hi: L::select(swap, f.t0, f.t1),
     }
@@ -372,13 +365,15 @@ fn finish(
 #[inline(never)]
 fn finish_rest(env: impl FnOnce(bool) -> bool, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
     let (o, d, c, r) = widened::<F64x4>(ray, s);
-    let Packed {
-        mut two,
-        left,
+    let (
+        Packed {
+            mut two,
+            left,
+            mut t0,
+            mut t1,
+        },
         open,
-        mut t0,
-        mut t1,
-    } = decide_sorted4(stages::filter_sorted(o, d, c, r, 1.0));
+    ) = decide_sorted4(stages::filter_sorted(o, d, c, r, 1.0));
     let mut done = !left;
     if open.any() {
         let y = decide_quotients(o, d, c, r);
@@ -412,7 +407,13 @@ fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl Fn(bool) -> bool) -
     if L::all(k.miss) && stands {
         return SphereHit4::MISS;
     }
-    finish(decide_sorted4(stages::sorted(k, 1.0)), stands, env, ray, s)
+    finish(
+        decide_sorted4(stages::sorted(k, 1.0)).0,
+        stands,
+        env,
+        ray,
+        s,
+    )
 }
 
 /// A packet's inputs in f64 lanes.
@@ -601,25 +602,39 @@ mod tests {
         }
     }
 
-    /// Subnormal roots, which the first pass certifies, are left open in
-    /// the `f32` lanes ([`Packed`]) and decided out of line: the
-    /// reference's bits, one packet or in pairs.
+    /// Subnormal roots, which the first pass certifies, are left in the
+    /// `f32` lanes ([`Packed`]) and decided out of line, as is a lane of
+    /// one subnormal and one normal root (`(1 ∓ 0.1)·2⁻¹²⁶`), while a lane
+    /// of normal roots is done: the reference's bits, one packet or in
+    /// pairs.
     #[test]
-    fn subnormal_roots_are_left_open_and_settled() {
-        let s = Sphere::new(glam::Vec3::ZERO, 1e-40);
-        let s4 = Sphere4::splat(&s);
-        let ray = |z: f32| crate::Ray::new(glam::Vec3::new(0.0, 0.0, z), glam::Vec3::Z);
-        let rays = [-1e-39, -2e-39, -5.0, -3e-39].map(ray);
-        let r4 = Ray4::from_rays(rays);
+    fn subnormal_roots_are_left_and_settled() {
+        let tiny = Sphere::new(glam::Vec3::ZERO, 1e-40);
+        let edge = Sphere::new(glam::Vec3::Z, 0.1);
+        let unit = Sphere::new(glam::Vec3::ZERO, 1.0);
+        let spheres = [tiny, edge, tiny, unit];
+        let ray = |z: f32, d: f32| crate::Ray::new(glam::Vec3::new(0.0, 0.0, z), d * glam::Vec3::Z);
+        let rays = [
+            ray(-1e-39, 1.0),
+            ray(0.0, 2f32.powi(126)),
+            ray(-5.0, 1.0),
+            ray(-5.0, 1.0),
+        ];
+        let (r4, s4) = (Ray4::from_rays(rays), Sphere4::from_spheres(spheres));
         let (o, d, c, r) = widened::<F64x4>(&r4, &s4);
         let first = decide_sorted(stages::filter_sorted(o, d, c, r, 1.0));
         assert_eq!(first.two.lanes(), [true, true, false, true]);
-        let x = decide_sorted4(stages::filter_sorted(o, d, c, r, 1.0));
-        assert_eq!(x.two.to_array(), [0; 4]);
-        assert_eq!(x.open.to_array(), [-1, -1, 0, -1]);
-        assert_eq!(first.packed().open.to_array(), [-1, -1, 0, -1]);
-        let want = rays.map(|r| reference::intersect(&r, &s));
+        let packed = first.packed();
+        assert_eq!(packed.two.to_array(), [0, 0, 0, -1]);
+        assert_eq!(packed.left.to_array(), [-1, -1, -1, 0]);
+        let (x, open) = decide_sorted4(stages::filter_sorted(o, d, c, r, 1.0));
+        assert_eq!(x.two.to_array(), [0, 0, 0, -1]);
+        assert_eq!(x.left.to_array(), [-1, -1, -1, 0]);
+        assert_eq!(open.to_array(), [-1, -1, 0, 0]);
+        let want = [0, 1, 2, 3].map(|i| reference::intersect(&rays[i], &spheres[i]));
         assert!(matches!(want[0], SphereHit::Two(t, _) if t.is_subnormal()));
+        assert!(matches!(want[1], SphereHit::Two(t, u) if t.is_subnormal() && u.is_normal()));
+        assert_eq!(want[3], SphereHit::Two(4.0, 6.0));
         let mut out = vec![intersect(&r4, &s4); 3];
         packets_in::<Pair<F64x4>>(&[r4; 3], &s4, &mut out);
         intersect_packets(&[r4; 3], &s4, &mut out[1..]);
