@@ -430,6 +430,12 @@ fn ftz_and_daz_change_no_answer() {
         Ray::new(Vec3::ZERO, Vec3::X),
         quadric::Quadric::new(k),
     ));
+    // Roots 0.9·2⁻¹²⁶ (subnormal) and 1.1·2⁻¹²⁶ (normal): the same for a
+    // sphere, whose x4 settles such a lane out of line.
+    cases.push(Case::Sphere(
+        Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 2f32.powi(126))),
+        sphere::Sphere::new(Vec3::Z, 0.1),
+    ));
     cases.push(Case::Sphere(
         Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1e18)),
         sphere::Sphere::new(Vec3::new(0.0, 0.0, 1e-20), 1e-21),
