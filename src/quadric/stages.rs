@@ -270,13 +270,17 @@ impl Classes<f64> {
 }
 
 impl Left {
-    /// Which of α̂, β̂ and γ̂ are exact as the filter summed them, on the
-    /// data's [`grid`] `g`: those whose terms' magnitudes sum below
-    /// `2⁵²g` ([`later_by`]).
+    /// Which of α̂, β̂ and γ̂ are exact as the filter summed them, on
+    /// their [`grids`] `g`: those whose terms' magnitudes sum below
+    /// `2⁵²g` ([`later_head`]).
     #[inline(always)]
-    pub(crate) fn exact(&self, g: f64) -> [bool; 3] {
-        let limit = g * 4_503_599_627_370_496.0;
-        [self.alpha.1, self.beta.1, self.gamma.1].map(|m| m * SLACK < limit)
+    pub(crate) fn exact(&self, [ga, gb, gc]: [f64; 3]) -> [bool; 3] {
+        let limit = |g: f64| g * 4_503_599_627_370_496.0;
+        [
+            self.alpha.1 * SLACK < limit(ga),
+            self.beta.1 * SLACK < limit(gb),
+            self.gamma.1 * SLACK < limit(gc),
+        ]
     }
 }
 
@@ -636,6 +640,50 @@ pub fn grid(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> f64 {
     let nu = (m(o[0], o[1]).min(m(o[2], d[0]))).min(m(d[1], d[2]).min(1022));
     let e = (i64::from(kappa) + 2 * i64::from(nu) - 3066).clamp(-1000, 400);
     f64::from_bits(((1023 + e) as u64) << 52)
+}
+
+/// A power of two for each of α, β and γ that divides its terms, and so
+/// is at least [`grid`]: with `2^κ_q`, `2^κ_l` and `2^κ_c` the least lowest
+/// set bits of the quadratic, the linear and the constant coefficients,
+/// and `2^ν_o`, `2^ν_d` those of the origin and the direction, α's terms
+/// `k·dᵢ·dⱼ` are multiples of `2^(κ_q + 2ν_d)`; β's, `k·oᵢ·dⱼ` (some
+/// doubled) and `k·dᵢ`, of `2^min(κ_q + ν_o + ν_d, κ_l + ν_d)`; γ's,
+/// `k·oᵢ·oⱼ`, `k·oᵢ` and the constant, of `2^min(κ_q + 2ν_o, κ_l + ν_o,
+/// κ_c)`. Each exponent is capped as [`grid`]'s: a group of factors all 0
+/// makes its terms 0. An origin of many bits next to a direction of few,
+/// as on a line along a cylinder's integer axis, leaves α's and β's grids
+/// far coarser than the data's, so that they prove those sums exact where
+/// γ's terms round.
+///
+/// ```
+/// # use rayoracle::quadric::stages::{grid, grids};
+/// // The cylinder x² + y² = 1 along its axis from an origin of 24 bits.
+/// let k = [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+/// let (o, d) = ([0.1f32 as f64, 0.0, 0.0], [0.0, 0.0, 2.0]);
+/// let lo = 2f64.powi(-27);
+/// assert_eq!(grids(&k, o, d), [4.0, 2.0 * lo, lo * lo]);
+/// assert_eq!(grid(&k, o, d), lo * lo);
+/// ```
+#[doc(hidden)]
+#[inline(always)]
+pub fn grids(k: &[f64; 10], o: [f64; 3], d: [f64; 3]) -> [f64; 3] {
+    let m = |a: f64, b: f64| low_key(a).min(low_key(b));
+    let e = |k: u32| i64::from(k) - 1022;
+    let (kq, kl, kc) = (
+        e(m(k[0], k[1]).min(m(k[2], k[3])).min(m(k[4], k[5]))),
+        e(m(k[6], k[7]).min(low_key(k[8]))),
+        e(low_key(k[9])),
+    );
+    let (no, nd) = (
+        e(m(o[0], o[1]).min(low_key(o[2]))),
+        e(m(d[0], d[1]).min(low_key(d[2]))),
+    );
+    let pow2 = |e: i64| f64::from_bits(((1023 + e.clamp(-1000, 400)) as u64) << 52);
+    [
+        pow2(kq + 2 * nd),
+        pow2((kq + no + nd).min(kl + nd)),
+        pow2((kq + 2 * no).min(kl + no).min(kc)),
+    ]
 }
 
 /// The second stage: α, β, γ and `β² − 4αγ` tracked for exactness
@@ -1109,11 +1157,14 @@ pub fn disc_near(a: Approx, b: Approx, c: Approx, shrink: f64) -> Approx {
 /// nearly parallel to an axis of a cylinder or a paraboloid, whose α
 /// cancels below the filter's `E_α` while β and γ are clear of their
 /// bounds. A coefficient whose terms' magnitudes sum below `2⁵²g` (`g`
-/// the data's [`grid`]) is exact as the filter summed it (every term a
-/// multiple of `g`, every partial sum below `2⁵³g`), and its bound is 0;
-/// otherwise α is the sum of its six terms in double words, each term
-/// exact by TwoProduct, on the grid `g` ([`GridAcc`]: exact where its
-/// grid test passes, within its running bound elsewhere).
+/// its own grid, [`grids`]) is exact as the filter summed it (every term
+/// a multiple of `g`, every partial sum below `2⁵³g`), and its bound is
+/// 0; otherwise α is the sum of its six terms in double words, each term
+/// exact by TwoProduct, on α's grid ([`GridAcc`]: exact where its grid
+/// test passes, within its running bound elsewhere). The grids are the
+/// coefficients' own, not the data's: on a line along a cylinder's
+/// integer axis from an origin of many bits, α = β = 0 is proven here,
+/// next to a γ whose terms round.
 ///
 /// * α = β = 0, both exact: no root where `|γ̂| > E_γ`, every `t` where
 ///   γ is exactly 0 too;
@@ -1137,19 +1188,19 @@ pub fn disc_near(a: Approx, b: Approx, c: Approx, shrink: f64) -> Approx {
 /// ```
 pub fn tight(k: &[f64; 10], o: [f64; 3], d: [f64; 3], shrink: f64) -> Option<QuadricHit> {
     let left = classes_paired(k, o, d, 1.0).left();
-    tight_by::<Dekker>(k, o, d, &left, grid(k, o, d), shrink)
+    tight_by::<Dekker>(k, o, d, &left, shrink)
 }
 
 /// [`tight`] from what the filter left, the products' errors found by `P`.
 #[inline(always)]
 fn tight_by<P: Product>(
     k: &[f64; 10],
-    _o: [f64; 3],
+    o: [f64; 3],
     d: [f64; 3],
     left: &Left,
-    g: f64,
     shrink: f64,
 ) -> Option<QuadricHit> {
+    let g = grids(k, o, d);
     let [xa, xb, xg] = left.exact(g);
     let ((alpha, _), (beta, mb), (gamma, mg)) = (left.alpha, left.beta, left.gamma);
     let bound = |exact: bool, e: f64| if exact { 0.0 } else { e };
@@ -1180,7 +1231,7 @@ fn tight_by<P: Product>(
         for &(c, i, j) in &QUADRATIC {
             acc.add_pair(P::two_prod(k[c] * d[i], d[j]));
         }
-        acc.finish(g)
+        acc.finish(g[0])
     };
     let sa = alpha.shrunk(shrink);
     if sa.is_zero() {
@@ -1485,7 +1536,7 @@ fn later_head<P: Product>(
             double_word_coefficients::<P>(g, true, sums, shrink).map(|h| (h, Stage::DoubleWord))
         );
     }
-    if let Some(h) = tight_by::<P>(k, o, d, &left, g, shrink) {
+    if let Some(h) = tight_by::<P>(k, o, d, &left, shrink) {
         return Ok(Some((h, Stage::Tight)));
     }
     Err(g)
@@ -1750,6 +1801,104 @@ mod tests {
             let c = cases.clone();
             let got = crate::num::certify::in_environment(ftz, daz, move || grids(&c));
             check(got, daz, &format!("FTZ {ftz}, DAZ {daz}"));
+        }
+    }
+
+    /// Each coefficient's grid ([`grids`]) is the least lowest set bit of
+    /// its own factors' groups, divides every exact term of its
+    /// coefficient (both words of each TwoProduct pair), and is at least
+    /// the data's [`grid`], on data of every kind where whole groups (the
+    /// direction, the origin, the quadratic, linear or constant
+    /// coefficients) are often 0.
+    #[test]
+    fn each_coefficient_s_grid_divides_its_terms() {
+        let mut rng = SmallRng::seed_from_u64(0x6_21d5);
+        let f = |rng: &mut SmallRng| match rng.random_range(0..8) {
+            0 => 0.0,
+            1 => f64::from(f32::from_bits(rng.random_range(1..1 << 23))),
+            2 => 2f64.powi(rng.random_range(-149..128)),
+            3 => f64::from(rng.random_range(-64i32..64)),
+            _ => f64::from(f32::from_bits(
+                rng.random::<u32>() & !(0xff << 23) | rng.random_range(1..0xff) << 23,
+            )),
+        };
+        let scan = |x: &[f64]| {
+            x.iter()
+                .map(|&x| {
+                    if x == 0.0 {
+                        2000
+                    } else {
+                        low_exponent(x as f32)
+                    }
+                })
+                .min()
+                .unwrap()
+        };
+        let mut coarser = 0;
+        for n in 0..20_000 {
+            let mut k: [f64; 10] = core::array::from_fn(|_| f(&mut rng));
+            let (mut o, mut d) = ([0; 3].map(|_| f(&mut rng)), [0; 3].map(|_| f(&mut rng)));
+            // One group zeroed in each of five cases.
+            match n % 8 {
+                0 => d = [0.0; 3],
+                1 => o = [0.0; 3],
+                2 => k[..6].fill(0.0),
+                3 => k[6..9].fill(0.0),
+                4 => k[9] = 0.0,
+                _ => {}
+            }
+            let (kq, kl, kc, no, nd) = (
+                scan(&k[..6]),
+                scan(&k[6..9]),
+                scan(&k[9..]),
+                scan(&o),
+                scan(&d),
+            );
+            let want = [
+                kq + 2 * nd,
+                (kq + no + nd).min(kl + nd),
+                (kq + 2 * no).min(kl + no).min(kc),
+            ]
+            .map(|e| pow2(e.clamp(-1000, 400)));
+            let got = grids(&k, o, d);
+            assert_eq!(got, want, "{k:?} {o:?} {d:?}");
+            let g = grid(&k, o, d);
+            assert!(got.iter().all(|&x| x >= g), "{k:?} {o:?} {d:?}");
+            coarser += usize::from(got.iter().any(|&x| x > g));
+            let t = ExactTerms::new::<Dekker>(&k, o, d);
+            let terms: [&[Pair]; 3] = [&t.0, &t.1, &t.2];
+            for (terms, g) in terms.iter().zip(got) {
+                for p in terms.iter() {
+                    for x in [p.0, p.1].into_iter().filter(|x| x.is_finite()) {
+                        assert_eq!((x / g).fract(), 0.0, "{x:e} on {g:e}: {k:?} {o:?} {d:?}");
+                    }
+                }
+            }
+        }
+        // The point of them: most data has some coefficient's grid above
+        // the data's.
+        assert!(coarser > 10_000, "{coarser}");
+    }
+
+    /// The cylinder of radius 1 around the axis (1, 1, 0), along that
+    /// axis from origins of 24 bits: α = β = 0 from terms that cancel,
+    /// provable on α's and β's grids ([`grids`]) but not on the data's,
+    /// next to γ's rounded terms. The tight stage settles the miss (γ
+    /// clear of its bound), where it had left it to the exact sums; the
+    /// reference counts it there, and agrees with the oracle.
+    #[test]
+    fn a_line_along_an_integer_axis_is_missed_in_the_tight_stage() {
+        let k = [0.5, 0.5, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+        let q = Quadric::new(k.map(|x| x as f32));
+        let d = [1.0, 1.0, 0.0];
+        for o in [[0.1f32, 0.7, 0.3], [3.3, -2.9, 1e-3], [-0.04, 0.045, 7.7]] {
+            let ow = o.map(f64::from);
+            assert!(grid(&k, ow, d) * 2f64.powi(52) < 2.0, "{o:?}");
+            assert_eq!(tight(&k, ow, d, 1.0), Some(QuadricHit::None), "{o:?}");
+            let r = Ray::new(Vec3::from(o), Vec3::new(1.0, 1.0, 0.0));
+            let got = crate::quadric::reference::intersect_staged(&r, &q);
+            assert_eq!(got, (QuadricHit::None, Stage::Tight), "{o:?}");
+            assert_eq!(exact::intersect(&r, &q), Ok(QuadricHit::None), "{o:?}");
         }
     }
 
