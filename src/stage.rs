@@ -41,6 +41,11 @@
 //! # }
 //! ```
 
+#[cfg(feature = "quadric")]
+mod packed;
+#[cfg(feature = "quadric")]
+pub(crate) use packed::{Packed, Tagged};
+
 /// A stage of evaluation, cheapest first.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Stage {

@@ -5,7 +5,7 @@
 use super::{Quadric, QuadricHit, exact, stages};
 use crate::Ray;
 use crate::num::certify::{certify, denormals_are_zero, flush_prone, needs_probe, subnormals_work};
-use crate::stage::Stage;
+use crate::stage::{Packed, Stage, Tagged};
 
 /// Intersects a line with a quadric: the exact class over `t ∈ ℝ`, and the
 /// roots correctly rounded to `f32`. A NaN or infinite input gives
@@ -80,32 +80,29 @@ fn rest(ray: &Ray, quadric: &Quadric, c: stages::Classes<f64>, shrink: f64) -> (
             later(ray, quadric, c.left(), shrink)
         };
     }
-    quotients(ray, quadric, c, shrink)
+    quotients(ray, quadric, c, shrink).unpack()
 }
 
 /// The roots by [`stages::roots`], as `q/α` and `γ/q`: for the linear
-/// class, and for two roots that [`stages::sorted`] did not certify.
+/// class, and for two roots that [`stages::sorted`] did not certify. The
+/// answer [`Packed`], as [`later_in`]'s.
 #[inline(never)]
-fn quotients(
-    ray: &Ray,
-    quadric: &Quadric,
-    c: stages::Classes<f64>,
-    shrink: f64,
-) -> (QuadricHit, Stage) {
+fn quotients(ray: &Ray, quadric: &Quadric, c: stages::Classes<f64>, shrink: f64) -> Packed {
     let f = stages::roots(&c, shrink);
     if f.two && certify(f.t0, f.r0, f.a0) && certify(f.t1, f.r1, f.a1) {
-        two(ray, quadric, f.t0, f.t1)
+        Packed::of(two(ray, quadric, f.t0, f.t1))
     } else if f.linear && certify(f.t1, f.r1, f.a1) {
         if needs_probe(&[], &[f.t1]) && !subnormals_work() {
-            return (exact_stage(ray, quadric), Stage::Exact);
+            return Packed::of((exact_stage(ray, quadric), Stage::Exact));
         }
-        (QuadricHit::One(f.t1 as f32), Stage::Filter)
+        Packed::of((QuadricHit::One(f.t1 as f32), Stage::Filter))
     } else if f.none {
-        (QuadricHit::None, Stage::Filter)
+        Packed::of((QuadricHit::None, Stage::Filter))
     } else if f.all {
-        (QuadricHit::All, Stage::Filter)
+        Packed::of((QuadricHit::All, Stage::Filter))
     } else {
-        later(ray, quadric, c.left(), shrink)
+        let left = c.left();
+        later_in(ray, quadric, left.alpha, left.beta, left.gamma, shrink)
     }
 }
 
@@ -130,10 +127,10 @@ fn two(ray: &Ray, quadric: &Quadric, t0: f64, t1: f64) -> (QuadricHit, Stage) {
 /// pairs, in registers.
 #[inline(always)]
 fn later(ray: &Ray, quadric: &Quadric, left: stages::Left, shrink: f64) -> (QuadricHit, Stage) {
-    later_in(ray, quadric, left.alpha, left.beta, left.gamma, shrink)
+    later_in(ray, quadric, left.alpha, left.beta, left.gamma, shrink).unpack()
 }
 
-/// [`later`], out of line.
+/// [`later`], out of line, its answer [`Packed`] (see there why).
 #[cold]
 #[inline(never)]
 fn later_in(
@@ -143,11 +140,32 @@ fn later_in(
     beta: (f64, f64),
     gamma: (f64, f64),
     shrink: f64,
-) -> (QuadricHit, Stage) {
+) -> Packed {
     let left = stages::Left { alpha, beta, gamma };
     let w = |v: glam::Vec3| v.as_dvec3().to_array();
     let inputs = || (widen(&quadric.coeffs), w(ray.origin), w(ray.dir));
     later_with(inputs, || (*ray, *quadric), left, shrink)
+}
+
+impl Tagged for QuadricHit {
+    #[inline(always)]
+    fn tag(self) -> (u64, [f32; 2]) {
+        match self {
+            QuadricHit::None => (0, [0.0; 2]),
+            QuadricHit::One(t) => (1, [t, 0.0]),
+            QuadricHit::Two(a, b) => (2, [a, b]),
+            QuadricHit::All => (3, [0.0; 2]),
+        }
+    }
+    #[inline(always)]
+    fn untag(tag: u64, [a, b]: [f32; 2]) -> Self {
+        match tag {
+            0 => QuadricHit::None,
+            1 => QuadricHit::One(a),
+            2 => QuadricHit::Two(a, b),
+            _ => QuadricHit::All,
+        }
+    }
 }
 
 /// [`later`] on the inputs that `inputs` widens where they lie (each
@@ -160,7 +178,7 @@ fn later_with<I>(
     line: impl Fn() -> (Ray, Quadric),
     left: stages::Left,
     shrink: f64,
-) -> (QuadricHit, Stage)
+) -> Packed
 where
     I: Fn() -> ([f64; 10], [f64; 3], [f64; 3]),
 {
@@ -171,10 +189,12 @@ where
     // The answer is settled inside the copy that runs, and returned from
     // there: an `Option` passed back through memory, stored field by
     // field and read back whole, stalled store forwarding.
-    stages::later_of(inputs, left, shrink, |h| match h {
-        Some((h, _)) if prone(h) && !subnormals_work() => exact(),
-        Some(hs) => hs,
-        None => exact(),
+    stages::later_of(inputs, left, shrink, |h| {
+        Packed::of(match h {
+            Some((h, _)) if prone(h) && !subnormals_work() => exact(),
+            Some(hs) => hs,
+            None => exact(),
+        })
     })
 }
 
@@ -246,6 +266,7 @@ pub(crate) fn escalate_lane(
         stages::classes_paired(&k, o, d, 1.0).left(),
         1.0,
     )
+    .unpack()
 }
 
 /// The coefficients in f64, by a plain loop: `array::map` is not always
@@ -283,6 +304,32 @@ mod tests {
     fn escalate(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
         let q = super::super::x4::Quadric4::splat(quadric);
         escalate_lane(&crate::ray4::Ray4::splat(*ray), q.f64_lanes(), 0)
+    }
+
+    /// [`Packed`] gives back every class, root bits and stage it was
+    /// given: ±0, subnormal and infinite roots, roots in either order.
+    #[test]
+    fn packed_answers_unpack_to_themselves() {
+        let t = [0.0, -0.0, 2f32.powi(-149), -1.5, f32::INFINITY, f32::MAX];
+        let mut hits = vec![QuadricHit::None, QuadricHit::All];
+        for &a in &t {
+            hits.push(QuadricHit::One(a));
+            for &b in &t {
+                hits.push(QuadricHit::Two(a, b));
+            }
+        }
+        let bits = |h: QuadricHit| match h {
+            QuadricHit::One(a) => [1, a.to_bits(), 0],
+            QuadricHit::Two(a, b) => [2, a.to_bits(), b.to_bits()],
+            QuadricHit::None => [0; 3],
+            QuadricHit::All => [3, 0, 0],
+        };
+        for h in hits {
+            for s in Stage::ALL {
+                let (g, gs) = Packed::of((h, s)).unpack::<QuadricHit>();
+                assert_eq!((bits(g), gs), (bits(h), s), "{h:?} {s:?}");
+            }
+        }
     }
 
     /// A unit sphere written as a quadric, touched by a line at `t =

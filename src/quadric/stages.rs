@@ -1623,10 +1623,10 @@ where
             if let Some(h) = super::square::intersect(&k, o, d, shrink) {
                 return settle(Some((h, Stage::Tight)));
             }
-            settle(match later_head::<Fused>(&k, o, d, left, shrink) {
-                Ok(h) => h,
-                Err(g) => later_avx(avx2, &inputs, g, shrink),
-            })
+            match later_head::<Fused>(&k, o, d, left, shrink) {
+                Ok(h) => settle(h),
+                Err(g) => settle(later_avx(avx2, &inputs, g, shrink)),
+            }
         }
         // SAFETY: the token exists only where the CPU has AVX2 and FMA,
         // the features `run` is compiled for. In `rayoracle report`
