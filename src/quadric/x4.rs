@@ -567,7 +567,7 @@ mod tests {
         );
     }
 
-    /// The quotients ([`decide`]) settle a lane of each class on the
+    /// The quotients ([`decide_quotients`]) settle a lane of each class on the
     /// packet: two roots, the paraboloid `z = x² + y²` along its axis (α
     /// = 0, every term 0: one root), no root, and a line in the double
     /// plane `x² = 0` (every term of α, β and γ 0). A lane with α = 0
