@@ -1902,6 +1902,29 @@ mod tests {
         }
     }
 
+    /// The same cylinder, along a direction of 21 bits, `1 + 2⁻²⁰` in
+    /// `x` and `y`, from integer origins a thousand out: the data's grid
+    /// (`2⁻⁴¹`) is too fine for γ's magnitudes (about 2·10⁶), γ's own
+    /// (`2⁻¹`) is not, so γ is exact too, and the tight stage settles the
+    /// line on the surface (γ = 0) as well as the miss (γ = 3).
+    #[test]
+    fn an_exact_gamma_on_its_own_grid_settles_a_line_on_the_surface() {
+        let k = [0.5, 0.5, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+        let q = Quadric::new(k.map(|x| x as f32));
+        let e = 1.0 + 2f32.powi(-20);
+        let d = Vec3::new(e, e, 0.0);
+        for (z, want) in [(1.0, QuadricHit::All), (2.0, QuadricHit::None)] {
+            let r = Ray::new(Vec3::new(1000.0, 1000.0, z), d);
+            let (o, dw) = (r.origin.as_dvec3().to_array(), d.as_dvec3().to_array());
+            let [_, _, gc] = grids(&k, o, dw);
+            assert!(grid(&k, o, dw) < gc, "{z}");
+            assert_eq!(tight(&k, o, dw, 1.0), Some(want), "{z}");
+            let got = crate::quadric::reference::intersect_staged(&r, &q);
+            assert_eq!(got, (want, Stage::Tight), "{z}");
+            assert_eq!(exact::intersect(&r, &q), Ok(want), "{z}");
+        }
+    }
+
     /// The four-lane exact sums (`words::exact`) are the scalar ones
     /// ([`grid_sums`]): wherever both prove their words exact, the same
     /// words, on f32 data of every kind (zeros, subnormals, small integers,
