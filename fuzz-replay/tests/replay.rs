@@ -37,3 +37,48 @@ fn every_committed_fuzz_input_passes_its_target_checks() {
         failures.join("\n")
     );
 }
+
+/// The seed corpora are the fixtures as `fuzz_seeds` writes them: every
+/// line of `fixtures/cases/*.jsonl` is the `eval_line` input
+/// `fixture-<file>-<line>` byte for byte, and, where it parses, the input
+/// of that name in its kind's target is its encoding. A fixture added or
+/// changed without `cargo run --example fuzz_seeds` fails here.
+#[test]
+fn the_seed_corpora_are_the_fixtures() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let corpus = root.join("fuzz/corpus");
+    let mut files: Vec<_> = fs::read_dir(root.join("fixtures/cases"))
+        .expect("fixtures/cases")
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|e| e == "jsonl"))
+        .collect();
+    files.sort();
+    let (mut stale, mut lines) = (Vec::new(), 0);
+    for path in files {
+        let stem = path.file_stem().unwrap_or_default().to_string_lossy();
+        let text = fs::read_to_string(&path).expect("readable fixture file");
+        for (i, line) in text.lines().enumerate() {
+            lines += 1;
+            let name = format!("fixture-{stem}-{:03}", i + 1);
+            let mut want = vec![("eval_line", line.as_bytes().to_vec())];
+            if let Ok(parsed) = rayoracle::case::parse_line(line) {
+                let mut bytes = Vec::new();
+                rayoracle::fuzz::encode_case(&parsed.case, &mut bytes);
+                want.push((parsed.case.kind().as_str(), bytes));
+            }
+            for (target, bytes) in want {
+                if fs::read(corpus.join(target).join(&name)).ok() != Some(bytes) {
+                    stale.push(format!("{target}/{name}"));
+                }
+            }
+        }
+    }
+    assert!(lines > 100, "only {lines} fixture lines");
+    assert!(
+        stale.is_empty(),
+        "{} seed inputs missing or stale (run `cargo run --example fuzz_seeds`): {}",
+        stale.len(),
+        stale.join(", ")
+    );
+}
