@@ -4,7 +4,8 @@
 //! so it decodes exactly, and every raw line (plus a few malformed ones)
 //! becomes an `eval_line` input. Run `cargo run --example fuzz_seeds` after
 //! changing the fixtures; the files are committed, and `cargo test` replays
-//! them (`tests/fuzz_replay.rs`).
+//! them (`fuzz-replay/tests/replay.rs`), which also checks that they
+//! match the fixtures.
 
 use rayoracle::case::parse_line;
 use std::fs;
