@@ -41,11 +41,6 @@
 //! # }
 //! ```
 
-#[cfg(feature = "quadric")]
-mod packed;
-#[cfg(feature = "quadric")]
-pub(crate) use packed::{Packed, Tagged};
-
 /// A stage of evaluation, cheapest first.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Stage {

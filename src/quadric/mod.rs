@@ -63,6 +63,7 @@
 
 pub mod exact;
 pub mod lanes;
+mod packed;
 pub mod plain;
 pub mod reference;
 pub mod square;

@@ -2,10 +2,11 @@
 //! later stages ([`crate::stage`]) for whatever it leaves undecided, the
 //! exact oracle last.
 
+use super::packed::Packed;
 use super::{Quadric, QuadricHit, exact, stages};
 use crate::Ray;
 use crate::num::certify::{certify, denormals_are_zero, flush_prone, needs_probe, subnormals_work};
-use crate::stage::{Packed, Stage, Tagged};
+use crate::stage::Stage;
 
 /// Intersects a line with a quadric: the exact class over `t ∈ ℝ`, and the
 /// roots correctly rounded to `f32`. A NaN or infinite input gives
@@ -147,27 +148,6 @@ fn later_in(
     later_with(inputs, || (*ray, *quadric), left, shrink)
 }
 
-impl Tagged for QuadricHit {
-    #[inline(always)]
-    fn tag(self) -> (u64, [f32; 2]) {
-        match self {
-            QuadricHit::None => (0, [0.0; 2]),
-            QuadricHit::One(t) => (1, [t, 0.0]),
-            QuadricHit::Two(a, b) => (2, [a, b]),
-            QuadricHit::All => (3, [0.0; 2]),
-        }
-    }
-    #[inline(always)]
-    fn untag(tag: u64, [a, b]: [f32; 2]) -> Self {
-        match tag {
-            0 => QuadricHit::None,
-            1 => QuadricHit::One(a),
-            2 => QuadricHit::Two(a, b),
-            _ => QuadricHit::All,
-        }
-    }
-}
-
 /// [`later`] on the inputs that `inputs` widens where they lie (each
 /// stage calls it again rather than keep widened values, see
 /// [`stages::later_of`]); `line` gives them as a ray and a quadric, for
@@ -304,32 +284,6 @@ mod tests {
     fn escalate(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
         let q = super::super::x4::Quadric4::splat(quadric);
         escalate_lane(&crate::ray4::Ray4::splat(*ray), q.f64_lanes(), 0)
-    }
-
-    /// [`Packed`] gives back every class, root bits and stage it was
-    /// given: ±0, subnormal and infinite roots, roots in either order.
-    #[test]
-    fn packed_answers_unpack_to_themselves() {
-        let t = [0.0, -0.0, 2f32.powi(-149), -1.5, f32::INFINITY, f32::MAX];
-        let mut hits = vec![QuadricHit::None, QuadricHit::All];
-        for &a in &t {
-            hits.push(QuadricHit::One(a));
-            for &b in &t {
-                hits.push(QuadricHit::Two(a, b));
-            }
-        }
-        let bits = |h: QuadricHit| match h {
-            QuadricHit::One(a) => [1, a.to_bits(), 0],
-            QuadricHit::Two(a, b) => [2, a.to_bits(), b.to_bits()],
-            QuadricHit::None => [0; 3],
-            QuadricHit::All => [3, 0, 0],
-        };
-        for h in hits {
-            for s in Stage::ALL {
-                let (g, gs) = Packed::of((h, s)).unpack::<QuadricHit>();
-                assert_eq!((bits(g), gs), (bits(h), s), "{h:?} {s:?}");
-            }
-        }
     }
 
     /// A unit sphere written as a quadric, touched by a line at `t =
