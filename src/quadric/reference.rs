@@ -198,14 +198,11 @@ fn prone(h: QuadricHit) -> bool {
 /// DAZ is on. The inputs are read from the packets where they lie: a ray
 /// and a quadric built on the stack and read back at other widths stalled
 /// store forwarding on every lane (`rayoracle report`, x4 on
-/// quadric/line-on-surface: 72 against 37 ns a ray).
+/// quadric/line-on-surface: 72 against 37 ns a ray). The answer comes back
+/// [`Packed`], in registers.
 #[cold]
 #[inline(never)]
-pub(crate) fn escalate_lane(
-    rays: &crate::ray4::Ray4,
-    coeffs: &[[f64; 4]; 10],
-    i: usize,
-) -> (QuadricHit, Stage) {
+pub(crate) fn escalate_lane(rays: &crate::ray4::Ray4, coeffs: &[[f64; 4]; 10], i: usize) -> Packed {
     // Written out: `array::map` is not always inlined.
     let lane = |v: &[wide::f32x4; 3]| {
         let x = |j: usize| v[j].as_array()[i];
@@ -236,7 +233,7 @@ pub(crate) fn escalate_lane(
     if denormals_are_zero() {
         let (ray, quadric) = line();
         if needs_probe(&self::inputs(&ray, &quadric), &[]) {
-            return (exact_stage(&ray, &quadric), Stage::Exact);
+            return Packed::of((exact_stage(&ray, &quadric), Stage::Exact));
         }
     }
     let (k, o, d) = inputs();
@@ -246,7 +243,6 @@ pub(crate) fn escalate_lane(
         stages::classes_paired(&k, o, d, 1.0).left(),
         1.0,
     )
-    .unpack()
 }
 
 /// The coefficients in f64, by a plain loop: `array::map` is not always
@@ -283,7 +279,7 @@ mod tests {
     /// x4's way into the scalar stages for one line, in lane 0.
     fn escalate(ray: &Ray, quadric: &Quadric) -> (QuadricHit, Stage) {
         let q = super::super::x4::Quadric4::splat(quadric);
-        escalate_lane(&crate::ray4::Ray4::splat(*ray), q.f64_lanes(), 0)
+        escalate_lane(&crate::ray4::Ray4::splat(*ray), q.f64_lanes(), 0).unpack()
     }
 
     /// A unit sphere written as a quadric, touched by a line at `t =

@@ -467,12 +467,13 @@ impl QuadricHit4 {
         let (mut class, mut t0, mut t1) = (class.to_array(), t0.to_array(), t1.to_array());
         let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
-            (class[i], t0[i], t1[i]) = match reference::escalate_lane(ray, q.f64_lanes(), i).0 {
-                QuadricHit::None => (NONE, f32::NAN, f32::NAN),
-                QuadricHit::One(t) => (ONE, t, t),
-                QuadricHit::Two(a, b) => (TWO, a, b),
-                QuadricHit::All => (ALL, f32::NAN, f32::NAN),
-            };
+            (class[i], t0[i], t1[i]) =
+                match reference::escalate_lane(ray, q.f64_lanes(), i).unpack().0 {
+                    QuadricHit::None => (NONE, f32::NAN, f32::NAN),
+                    QuadricHit::One(t) => (ONE, t, t),
+                    QuadricHit::Two(a, b) => (TWO, a, b),
+                    QuadricHit::All => (ALL, f32::NAN, f32::NAN),
+                };
         }
         QuadricHit4 {
             class: i32x4::from(class),
