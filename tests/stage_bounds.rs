@@ -1156,3 +1156,54 @@ fn the_constructed_misses_use_most_of_the_bound() {
     let cases = bounds_search::sphere_rounding_up_seeds(&mut rng, 4, 2048);
     bounds_search::reaches_a_quarter(&cases, |c| st.critical_log2(c));
 }
+
+/// `c` with the quadric's coefficients times `2^k` and the direction
+/// times `2^j`, where every value scales exactly (zero, or normal before
+/// and after): the same line and surface, the roots times `2^−j`.
+fn scaled(c: &Case, k: i32, j: i32) -> Option<Case> {
+    let Case::Quadric(r, q) = c else { return None };
+    let exact = |x: f32, e: i32| {
+        let y = x * 2f32.powi(e);
+        (x == 0.0 || (x.is_normal() && y.is_normal())).then_some(y)
+    };
+    let mut coeffs = q.coeffs;
+    for c in &mut coeffs {
+        *c = exact(*c, k)?;
+    }
+    let d = r.dir.to_array().map(|x| exact(x, j));
+    let d = Vec3::new(d[0]?, d[1]?, d[2]?);
+    Some(Case::Quadric(Ray::new(r.origin, d), Quadric::new(coeffs)))
+}
+
+/// The x4 first pass's bounds are homogeneous, as its derivation makes
+/// them: every value scales exactly when the quadric's coefficients, or
+/// the direction, are multiplied by a power of two (`α`, `β`, `γ` and
+/// their magnitude sums by `2^k`, or by `2^{2j}`, `2^j` and 1), and every
+/// decision with it. So each of its stages (the class bounds alone, the
+/// roots' bound alone) has the same critical factor on a case and on the
+/// case scaled, far up and far down; a term of a bound of the wrong
+/// degree (a magnitude sum multiplied by another, or divided) moves it.
+/// On the committed cases of both x4 stages and the kernels' searched
+/// quadric cases.
+#[test]
+fn the_x4_first_pass_decides_alike_on_scaled_lines() {
+    let mut cases: Vec<Case> = committed()
+        .into_iter()
+        .filter(|(f, _)| f.starts_with("bounds/quadric/x4"))
+        .map(|(_, c)| c)
+        .collect();
+    cases.extend(crate::bounds::found("quadric"));
+    let mut compared = 0;
+    for name in ["bounds/quadric/x4-class", "bounds/quadric/x4-roots"] {
+        let st = stage(name);
+        for c in &cases {
+            let base = st.critical_log2(c);
+            for (k, j) in [(-24, 0), (20, 0), (0, -12), (0, 10), (16, -9)] {
+                let Some(s) = scaled(c, k, j) else { continue };
+                assert_eq!(st.critical_log2(&s), base, "{name}, 2^{k}, 2^{j}: {c:?}");
+                compared += usize::from(base.is_some());
+            }
+        }
+    }
+    assert!(compared >= 60, "{compared} comparisons of a wrong case");
+}

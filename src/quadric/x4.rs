@@ -568,6 +568,46 @@ mod tests {
         );
     }
 
+    /// A lane with α = 0 goes to the quotients only where `|β̂|` passes the
+    /// filter's test for the linear root, `|β̂| > 2E_β`: the plane `x − y +
+    /// 2⁻⁶⁰z = 2⁻⁶⁰` met along `(1, 1, 1)` from the origin has `β̂ = 2⁻⁶⁰`
+    /// (exact), far below `2E_β = 48u` (with `m_β = 2`), which the
+    /// quotients cannot take further than the first pass; so the first
+    /// pass leaves it to the scalar stages alone, and one with `β = 1`
+    /// (the plane `x = 1`) to the quotients. The answers are the
+    /// reference's either way.
+    #[test]
+    fn only_alpha_zero_lanes_the_quotients_can_decide_go_to_them() {
+        use crate::{Ray, ray4::Ray4};
+        use glam::Vec3;
+        let tiny = 2f32.powi(-60);
+        let steep = Quadric::new([0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, -1.0, tiny, -tiny]);
+        let wall = Quadric::new([0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, -1.0]);
+        let (slant, along) = (
+            Ray::new(Vec3::ZERO, Vec3::ONE),
+            Ray::new(Vec3::ZERO, Vec3::X),
+        );
+        let (rays, qs) = ([slant, along, slant, along], [steep, wall, steep, wall]);
+        let want = [QuadricHit::One(1.0); 4];
+        assert_eq!(
+            [0, 1, 2, 3].map(|i| reference::intersect(&rays[i], &qs[i])),
+            want
+        );
+        let (r4, q4) = (Ray4::from_rays(rays), Quadric4::from_quadrics(qs));
+        let w = F64x4::widen;
+        let first = lanes::classes(
+            &q4.lanes::<F64x4>(),
+            r4.origin.map(w),
+            r4.dir.map(w),
+            1.0,
+            1.0,
+        );
+        let (_, open) = decide_sorted(&first, lanes::sorted(&first, 1.0));
+        assert_eq!(open.lanes(), [false, true, false, true]);
+        assert_eq!(intersect_baseline(&r4, &q4).lanes(), want);
+        assert_eq!(intersect(&r4, &q4).lanes(), want);
+    }
+
     /// The quotients ([`decide_quotients`]) settle a lane of each class on the
     /// packet: two roots, the paraboloid `z = x² + y²` along its axis (α
     /// = 0, every term 0: one root), no root, and a line in the double
