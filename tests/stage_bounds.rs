@@ -44,7 +44,10 @@
 //!
 //! Each committed case is right at the factor 1, and for each stage some
 //! case is wrong at the factor of [`CAUGHT_AT`]: a constant of that stage
-//! cut to that fraction is caught here. Regenerate the cases (about two
+//! cut to that fraction is caught here. Each stage also has the same
+//! critical factor on its cases scaled by powers of two
+//! ([`every_stage_decides_alike_on_scaled_cases`]): the bounds are
+//! homogeneous, so a term of the wrong degree is caught too. Regenerate the cases (about two
 //! minutes with `--release`) with
 //!
 //! ```text
@@ -1157,53 +1160,79 @@ fn the_constructed_misses_use_most_of_the_bound() {
     bounds_search::reaches_a_quarter(&cases, |c| st.critical_log2(c));
 }
 
-/// `c` with the quadric's coefficients times `2^k` and the direction
-/// times `2^j`, where every value scales exactly (zero, or normal before
-/// and after): the same line and surface, the roots times `2^−j`.
+/// `c` scaled by powers of two where every value scales exactly (zero,
+/// or normal before and after): the direction times `2^j`, and the
+/// quadric's coefficients, or the plane's and sphere's lengths (origin,
+/// point or centre, radius) and the plane's normal, times `2^k`. The same
+/// line and surface, the roots times `2^{−j}` (and `2^k` for the lengths).
 fn scaled(c: &Case, k: i32, j: i32) -> Option<Case> {
-    let Case::Quadric(r, q) = c else { return None };
-    let exact = |x: f32, e: i32| {
+    let by = |x: f32, e: i32| {
         let y = x * 2f32.powi(e);
         (x == 0.0 || (x.is_normal() && y.is_normal())).then_some(y)
     };
-    let mut coeffs = q.coeffs;
-    for c in &mut coeffs {
-        *c = exact(*c, k)?;
-    }
-    let d = r.dir.to_array().map(|x| exact(x, j));
-    let d = Vec3::new(d[0]?, d[1]?, d[2]?);
-    Some(Case::Quadric(Ray::new(r.origin, d), Quadric::new(coeffs)))
+    let v = |x: Vec3, e: i32| Some(Vec3::new(by(x.x, e)?, by(x.y, e)?, by(x.z, e)?));
+    Some(match c {
+        Case::Quadric(r, q) => {
+            let mut coeffs = q.coeffs;
+            for c in &mut coeffs {
+                *c = by(*c, k)?;
+            }
+            Case::Quadric(Ray::new(r.origin, v(r.dir, j)?), Quadric::new(coeffs))
+        }
+        Case::Plane(r, p) => Case::Plane(
+            Ray::new(v(r.origin, k)?, v(r.dir, j)?),
+            Plane::new(v(p.point, k)?, v(p.normal, k)?),
+        ),
+        Case::Sphere(r, sp) => Case::Sphere(
+            Ray::new(v(r.origin, k)?, v(r.dir, j)?),
+            Sphere::new(v(sp.center, k)?, by(sp.radius, k)?),
+        ),
+        Case::Camera(..) => return None,
+    })
 }
 
-/// The x4 first pass's bounds are homogeneous, as its derivation makes
-/// them: every value scales exactly when the quadric's coefficients, or
-/// the direction, are multiplied by a power of two (`α`, `β`, `γ` and
-/// their magnitude sums by `2^k`, or by `2^{2j}`, `2^j` and 1), and every
-/// decision with it. So each of its stages (the class bounds alone, the
-/// roots' bound alone) has the same critical factor on a case and on the
-/// case scaled, far up and far down; a term of a bound of the wrong
-/// degree (a magnitude sum multiplied by another, or divided) moves it.
-/// On the committed cases of both x4 stages and the kernels' searched
-/// quadric cases.
+/// Every stage's bounds are homogeneous, as their derivations make them:
+/// scaling the inputs by powers of two ([`scaled`]) scales every value
+/// the stage computes exactly, and so each decision with it. So each
+/// stage has the same critical factor on a case and on the case scaled,
+/// far up and far down; a term of a bound of the wrong degree (a
+/// magnitude sum multiplied by another, or divided) moves it. On each
+/// stage's committed cases, and for the quadric's x4 first pass the
+/// kernels' searched quadric cases too.
 #[test]
-fn the_x4_first_pass_decides_alike_on_scaled_lines() {
-    let mut cases: Vec<Case> = committed()
-        .into_iter()
-        .filter(|(f, _)| f.starts_with("bounds/quadric/x4"))
-        .map(|(_, c)| c)
-        .collect();
-    cases.extend(crate::bounds::found("quadric"));
-    let mut compared = 0;
-    for name in ["bounds/quadric/x4-class", "bounds/quadric/x4-roots"] {
-        let st = stage(name);
-        for c in &cases {
+fn every_stage_decides_alike_on_scaled_cases() {
+    let (committed, found) = (committed(), crate::bounds::found("quadric"));
+    for st in &STAGES {
+        let family = st.family();
+        let mut cases: Vec<&Case> = committed
+            .iter()
+            .filter(|(f, _)| *f == family)
+            .map(|(_, c)| c)
+            .collect();
+        if st.name.starts_with("x4") {
+            cases.extend(&found);
+        }
+        let mut compared = 0;
+        for c in cases {
             let base = st.critical_log2(c);
-            for (k, j) in [(-24, 0), (20, 0), (0, -12), (0, 10), (16, -9)] {
+            for (k, j) in [
+                (-24, 0),
+                (20, 0),
+                (0, -12),
+                (0, 10),
+                (16, -9),
+                (-3, 2),
+                (5, -1),
+            ] {
                 let Some(s) = scaled(c, k, j) else { continue };
-                assert_eq!(st.critical_log2(&s), base, "{name}, 2^{k}, 2^{j}: {c:?}");
+                assert_eq!(st.critical_log2(&s), base, "{family}, 2^{k}, 2^{j}: {c:?}");
                 compared += usize::from(base.is_some());
             }
         }
+        println!("{family}: {compared} comparisons of a wrong case");
+        assert!(
+            compared >= 4,
+            "{family}: {compared} comparisons of a wrong case"
+        );
     }
-    assert!(compared >= 60, "{compared} comparisons of a wrong case");
 }
