@@ -112,17 +112,22 @@ pub fn add_exact(x: f64, y: f64) -> bool {
 mod tests {
     use super::*;
 
-    /// [`span_bound`] is the true span, on sets of normal values with 1 to
-    /// 24 bits, zeros and both signs, many spanning more than 24 binades.
-    #[test]
-    fn span_bound_covers_the_span() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = || {
+    /// Marsaglia's xorshift64 from `seed`: the tests' values, the same on
+    /// every run.
+    fn xorshift(mut seed: u64) -> impl FnMut() -> u64 {
+        move || {
             seed ^= seed << 13;
             seed ^= seed >> 7;
             seed ^= seed << 17;
             seed
-        };
+        }
+    }
+
+    /// [`span_bound`] is the true span, on sets of normal values with 1 to
+    /// 24 bits, zeros and both signs, many spanning more than 24 binades.
+    #[test]
+    fn span_bound_covers_the_span() {
+        let mut next = xorshift(0x9e37_79b9_7f4a_7c15);
         let mut wide = 0;
         for _ in 0..20_000 {
             let n = 1 + next() % 7;
@@ -167,6 +172,48 @@ mod tests {
             wide += usize::from(span > 24);
         }
         assert!(wide > 1000, "{wide}");
+    }
+
+    /// [`at_most_26_bits`] is [`sig_bits`] at most 26 in every value, on
+    /// triples of values with 1 to 53 bits at any exponent, zeros and both
+    /// signs among them; and the products the tracked stage takes as exact
+    /// where it holds (`fᵢdᵢ` with an f32 `dᵢ`, `fᵢ²`) are.
+    #[test]
+    fn at_most_26_bits_counts_every_value() {
+        let mut next = xorshift(0x2545_f491_4f6c_dd1d);
+        let mut value = |bits: u32| {
+            let r = next();
+            let m = if bits == 0 {
+                0
+            } else {
+                (r >> 11) & ((1u64 << (bits - 1)) - 1) | 1 << (bits - 1) | 1
+            };
+            let x = m as f64 * 2f64.powi((r % 80) as i32 - 40 - bits as i32);
+            if r >> 63 == 1 { -x } else { x }
+        };
+        let (mut held, mut failed) = (0, 0);
+        for i in 0..20_000u32 {
+            // Mostly near the limit, 24 to 28 bits; a zero now and then.
+            let bits = |k: u32| match (i >> (4 * k)) % 8 {
+                0 => 0,
+                1 => 1 + (i + k) % 53,
+                n => 22 + n.min(6),
+            };
+            let f = [value(bits(0)), value(bits(1)), value(bits(2))];
+            let want = f.iter().all(|&x| sig_bits(x) <= 26);
+            assert_eq!(at_most_26_bits(f), want, "{f:?}");
+            if want {
+                held += 1;
+                let d = (0.1f32 + i as f32) as f64;
+                for x in f {
+                    assert_eq!(two_prod(x, d).1, 0.0, "{x} · {d}");
+                    assert_eq!(two_prod(x, x).1, 0.0, "{x}²");
+                }
+            } else {
+                failed += 1;
+            }
+        }
+        assert!(held > 1000 && failed > 1000, "{held} {failed}");
     }
 
     /// The bit count against the product's own rounding, on products of

@@ -214,3 +214,51 @@ impl Words {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Ray;
+    use crate::hit::same_bits;
+    use crate::sphere::{Sphere, exact, stages::filter};
+    use glam::Vec3;
+
+    /// Lines along z past the sphere of radius 5 whose centre is `−ε` in x
+    /// and `∓ε` in y from the origin's `(3, 4)`, `ε = 2⁻⁶⁰`: `f = o − C`
+    /// is `3 + ε` and `4 ± ε`, two words each, with low words equal or
+    /// opposite. Their leading words alone make an exact tangent; the low
+    /// words make `Δ = 25 − |f|²` a miss (`−14ε − 2ε²`), which the stage
+    /// decides, or two roots (`2ε − 2ε²`, the roots `±√Δ`, which it
+    /// leaves: the filter's `c` has lost them), `2⁻⁵⁶` from 0 where the
+    /// filter cannot see either. The same with the axes turned.
+    #[test]
+    fn the_low_words_of_every_component_count() {
+        let e = 2f32.powi(-60);
+        for (k, (cy, decided)) in (0..3).flat_map(|k| [(k, (-e, true)), (k, (e, false))]) {
+            // The same turned by k axes, so that each pair of components
+            // carries the low words once.
+            let turn = |mut v: [f32; 3]| {
+                v.rotate_right(k);
+                v
+            };
+            let (o, d, c) = (
+                turn([3.0, 4.0, 0.0]),
+                turn([0.0, 0.0, 1.0]),
+                turn([-e, cy, 0.0]),
+            );
+            let w = |v: [f32; 3]| v.map(f64::from);
+            let f = filter::<f64>(w(o), w(d), w(c), 5.0, 1.0);
+            assert!(!f.two && !f.none);
+            let (ray, s) = (
+                Ray::new(Vec3::from(o), Vec3::from(d)),
+                Sphere::new(Vec3::from(c), 5.0),
+            );
+            let exact = exact::intersect(&ray, &s).unwrap();
+            assert_eq!(decided, exact == SphereHit::None, "{exact:?}");
+            match words(w(o), w(d), w(c), 5.0, 1.0) {
+                Some(got) => assert!(same_bits(&got, &exact), "{got:?} {exact:?}"),
+                None => assert!(!decided, "{exact:?} left"),
+            }
+        }
+    }
+}
