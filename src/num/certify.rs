@@ -766,13 +766,7 @@ mod tests {
     /// and random others.
     #[test]
     fn exact_conversions_match_the_default_environment() {
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = crate::num::xorshift(0x2545_f491_4f6c_dd1d);
         for _ in 0..200_000 {
             let r = next();
             let f = f32::from_bits(if r & 1 == 0 {

@@ -38,3 +38,15 @@ pub mod certify;
 pub mod dd;
 pub mod real;
 pub mod tracked;
+
+/// Marsaglia's xorshift64 from `seed`: the unit tests' values, the same on
+/// every run.
+#[cfg(test)]
+pub(crate) fn xorshift(mut seed: u64) -> impl FnMut() -> u64 {
+    move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed
+    }
+}

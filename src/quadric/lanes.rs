@@ -283,3 +283,74 @@ pub(crate) fn sorted<L: Real>(k: &Classes<L>, roots: f64) -> Sorted<L> {
         a: eb + s * es,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Lines grazing the sphere `x² + y² + z² = R²` from 2.5 to 3.2 radii
+    /// away, passing the centre at a distance tuned through the last bits
+    /// of the direction, so that `Δ` is a few thousand `u·m_β²` or less:
+    /// there the discriminant's bound `E_Δ` leads the roots' bound (its
+    /// part `E_Δ/2|α̂|ŝ` is larger than `E_β/2|α̂|` and than the relative
+    /// part), and its two terms `28u·m_β²` and `88u·m_α·m_γ` are nearly
+    /// equal, so a slip in either (a sign, a product for the sum) leaves
+    /// the bound below the roots' error. The first pass certifies two
+    /// roots on a sixth of these lines (and leaves most others), with
+    /// `E_Δ` leading on nearly all; every answer, its own and x4's, is the
+    /// oracle's.
+    #[test]
+    fn grazing_lines_whose_roots_the_discriminants_bound_leads() {
+        use crate::quadric::x4::{Quadric4, first_pass_shrunk, intersect, intersect_baseline};
+        use crate::quadric::{Quadric, QuadricHit};
+        use crate::{Ray, ray4::Ray4};
+        use glam::Vec3;
+        let mut next = crate::num::xorshift(0x1234_5678_9abc_def1);
+        let (mut two, mut led) = (0, 0);
+        let n = 20_000;
+        let mut cases = Vec::with_capacity(n);
+        for _ in 0..n {
+            let r = next();
+            let rr = 0.5 + (r % 1000) as f32 / 1000.0;
+            let q = rr * rr;
+            let radius = f64::from(q).sqrt();
+            // Inside the sphere by 1 to 64 ulps of y, from 2.5 to 3.2 radii
+            // back along x; the direction's y turns the line out to pass
+            // the centre at about R, within a few of its own ulps.
+            let j = ((r >> 10) % 64 + 1) as f32;
+            let oy = (radius as f32) * (1.0 - j * 2f32.powi(-24));
+            let ox = -rr * (2.5 + ((r >> 30) % 4096) as f32 / 4096.0 * 0.7);
+            let dy = ((radius - f64::from(oy)) / -f64::from(ox)) as f32;
+            let dy = f32::from_bits((dy.to_bits() as i32 + ((r >> 50) % 5) as i32 - 2) as u32);
+            let quadric = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -q]);
+            let ray = Ray::new(Vec3::new(ox, oy, 0.0), Vec3::new(1.0, dy, 0.0));
+            let want = crate::quadric::exact::intersect(&ray, &quadric).unwrap();
+            let got = first_pass_shrunk(&ray, &quadric, 1.0, 1.0);
+            if let Some(got) = got {
+                assert_eq!(got, want, "{ray:?} {quadric:?}");
+            }
+            if let Some(QuadricHit::Two(..)) = got {
+                two += 1;
+                let w = |v: Vec3| v.to_array().map(f64::from);
+                let k = quadric.coeffs.map(f64::from);
+                let c = classes(&k, w(ray.origin), w(ray.dir), 1.0, 1.0);
+                let sorted = sorted(&c, 1.0);
+                let (s, two_alpha) = (c.disc.sqrt(), 2.0 * c.alpha.abs());
+                let e_delta = c.ed / (two_alpha * s);
+                led +=
+                    usize::from(e_delta > c.eb / two_alpha && e_delta > sorted.r * sorted.hi.abs());
+            }
+            cases.push((ray, quadric, want));
+        }
+        for c in cases.chunks_exact(4) {
+            let (r4, q4) = (
+                Ray4::from_rays([0, 1, 2, 3].map(|i| c[i].0)),
+                Quadric4::from_quadrics([0, 1, 2, 3].map(|i| c[i].1)),
+            );
+            let want = [0, 1, 2, 3].map(|i| c[i].2);
+            assert_eq!(intersect(&r4, &q4).lanes(), want);
+            assert_eq!(intersect_baseline(&r4, &q4).lanes(), want);
+        }
+        assert!(two > n / 10 && led > two * 9 / 10, "{two} {led}");
+    }
+}

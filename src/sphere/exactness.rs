@@ -111,17 +111,7 @@ pub fn add_exact(x: f64, y: f64) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// Marsaglia's xorshift64 from `seed`: the tests' values, the same on
-    /// every run.
-    fn xorshift(mut seed: u64) -> impl FnMut() -> u64 {
-        move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        }
-    }
+    use crate::num::xorshift;
 
     /// [`span_bound`] is the true span, on sets of normal values with 1 to
     /// 24 bits, zeros and both signs, many spanning more than 24 binades.
@@ -140,7 +130,7 @@ mod tests {
                     let x = m as f32 * 2f32.powi(e);
                     if r >> 63 == 1 {
                         -x
-                    } else if r % 11 == 0 {
+                    } else if r.is_multiple_of(11) {
                         0.0
                     } else {
                         x
