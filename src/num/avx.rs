@@ -400,6 +400,33 @@ mod tests {
         );
     }
 
+    /// The token exists exactly where the standard library sees AVX2 and
+    /// FMA: on the first call, which asks it, and on every later one, from
+    /// the cache, which holds the answer. (The test below runs only where
+    /// it exists.)
+    #[test]
+    fn detect_agrees_with_the_standard_library() {
+        let want = is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma");
+        assert_eq!(Avx2::detect_first().is_some(), want);
+        assert_eq!(
+            DETECTED.load(Ordering::Relaxed),
+            if want { YES } else { NO }
+        );
+        for _ in 0..3 {
+            assert_eq!(Avx2::detect().is_some(), want);
+        }
+    }
+
+    /// The AVX lanes' probe for denormals-are-zero sees the flag, as the
+    /// baseline lanes' does, and is false without it.
+    #[test]
+    fn the_avx_probe_sees_denormals_are_zero() {
+        if Avx2::detect().is_none() {
+            return;
+        }
+        crate::num::certify::assert_probe_sees_daz::<Avx4>();
+    }
+
     /// Every operation gives, lane by lane, the bits of the SSE2 lanes.
     #[test]
     fn avx_lanes_agree_with_the_baseline() {

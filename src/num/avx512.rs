@@ -316,6 +316,31 @@ mod tests {
         assert_eq!(masks(c.off_midpoint(63))[0], [0, -1, -1, 0]);
         assert_eq!(masks(c.off_midpoint(64))[0], [0, 0, -1, 0]);
         assert_eq!(bits(Avx8::least_subnormal().halves()), [[1; 4]; 2]);
+        // A mask of every lane, and one of some.
+        assert!(Avx8::all(a.eq(a) | !a.eq(a)) && Pair::<F64x4>::all(p.eq(p) | !p.eq(p)));
+        assert!(!Avx8::all(a.gt(b)) && !Pair::<F64x4>::all(p.gt(q)));
+    }
+
+    /// The token exists exactly where the standard library sees the
+    /// features, AVX2 and FMA among them.
+    #[test]
+    fn detect_agrees_with_the_standard_library() {
+        let want = is_x86_feature_detected!("avx512f")
+            && is_x86_feature_detected!("avx512dq")
+            && is_x86_feature_detected!("avx512vl")
+            && is_x86_feature_detected!("avx2")
+            && is_x86_feature_detected!("fma");
+        assert_eq!(Avx512::detect().is_some(), want);
+    }
+
+    /// The AVX-512 lanes' probe for denormals-are-zero sees the flag, as
+    /// the baseline lanes' does, and is false without it.
+    #[test]
+    fn the_avx512_probe_sees_denormals_are_zero() {
+        if Avx512::detect().is_none() {
+            return;
+        }
+        crate::num::certify::assert_probe_sees_daz::<Avx8>();
     }
 
     #[test]

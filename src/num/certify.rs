@@ -616,6 +616,20 @@ pub(crate) fn in_environment<R: Send + 'static>(
     .unwrap()
 }
 
+/// Asserts that `L`'s probe for denormals-are-zero sees the flag, as the
+/// baseline lanes' does, and is false without it: for the tests of each
+/// lane type, on a CPU that runs `L`.
+#[cfg(all(test, target_arch = "x86_64"))]
+pub(crate) fn assert_probe_sees_daz<L: crate::num::real::Real + 'static>() {
+    use crate::num::real::F64x4;
+    for daz in [false, true] {
+        let seen = in_environment(false, daz, || {
+            (L::denormals_are_zero(), F64x4::denormals_are_zero())
+        });
+        assert_eq!(seen, (daz, daz));
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
