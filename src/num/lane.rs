@@ -311,4 +311,37 @@ mod tests {
         assert!(f32::from_bits(s[2]).is_nan());
         assert_eq!([s[3], s[4], s[5]], [1.0f32, 1.0, 1.0].map(f32::to_bits));
     }
+
+    /// select_gt takes `x` only where `a > b`: not on ties (±0 included)
+    /// nor NaN, alike on both paths. The render's facing test turns a
+    /// normal only where it points along the ray (`dot > 0`), and keeps
+    /// one at exactly 0.
+    #[test]
+    fn select_gt_takes_x_only_above_on_both_paths() {
+        let n = f32::NAN;
+        let cases = [
+            (1.0f32, 0.0f32, true),
+            (0.0, 0.0, false),
+            (-0.0, 0.0, false),
+            (0.0, -0.0, false),
+            (0.0, 1.0, false),
+            (n, 0.0, false),
+            (0.0, n, false),
+            (2.0, -3.0, true),
+        ];
+        for half in [&cases[..4], &cases[4..]] {
+            let lanes =
+                |k: fn(&(f32, f32, bool)) -> f32| f32x4::from([0, 1, 2, 3].map(|i| k(&half[i])));
+            let v = Lane::select_gt(
+                lanes(|c| c.0),
+                lanes(|c| c.1),
+                f32x4::splat(1.0),
+                f32x4::splat(2.0),
+            );
+            let want = [0, 1, 2, 3].map(|i| if half[i].2 { 1.0 } else { 2.0 });
+            let s = [0, 1, 2, 3].map(|i| Lane::select_gt(half[i].0, half[i].1, 1.0f32, 2.0));
+            assert_eq!(v.to_array(), want);
+            assert_eq!(s, want);
+        }
+    }
 }
