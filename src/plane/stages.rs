@@ -675,6 +675,7 @@ pub fn double_word(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::num::certify::certify_relative;
     use proptest::prelude::*;
 
     /// Values whose products and sums cancel, round and tie, and any f32.
@@ -698,6 +699,74 @@ mod tests {
             }),
             any::<f32>().prop_map(f64::from),
         ]
+    }
+
+    /// The first pass leaves a line whose `n̂um` cancels by [`K`] (`m̂_num
+    /// = K|n̂um|`) or whose `d̂en` cancels its first partial sum by `K − 1`
+    /// (`|ŝ₁| = (K − 1)|d̂en|`), and takes one just inside either limit:
+    /// the paired-lane pass and the generic one alike. Every sum here is
+    /// exact, so the limits are met exactly.
+    #[test]
+    fn the_first_pass_stops_at_its_cancellation_limits() {
+        let pass = |o, d, a, n| {
+            let (paired, generic) = (
+                first_pair(o, d, a, n, 1.0).1,
+                filter_relative(o, d, a, n, 1.0),
+            );
+            assert_eq!(paired.hit, generic.hit, "{o:?} {d:?} {a:?} {n:?}");
+            generic.hit && certify_relative(generic.t, generic.r)
+        };
+        let z = [0.0; 3];
+        // num = a₀ + a₁ = 1 against m_num = |a₀| + |a₁|; d·n = 1.
+        for (a0, hit) in [(512.5, false), (512.25, true)] {
+            assert_eq!(
+                pass(z, [1.0, 0.0, 0.0], [a0, 1.0 - a0, 0.0], [1.0, 1.0, 0.0]),
+                hit,
+                "{a0}"
+            );
+        }
+        // d·n = ŝ₁ + d₂ = 1 with ŝ₁ = d₀; num = 1.
+        for (d0, hit) in [(K - 1.0, false), (K - 1.5, true)] {
+            let d = [d0, 0.0, 1.0 - d0];
+            assert_eq!(pass(z, d, [1.0, 0.0, 0.0], [1.0; 3]), hit, "{d0}");
+        }
+    }
+
+    /// Every bound of the full filter scales with `shrink`: at a factor
+    /// `s < 1`, each part is at most `s` times its value at 1 (the
+    /// quotient's `1 + 2x` shrinks too), on lines from well to badly
+    /// conditioned.
+    #[test]
+    fn the_full_filters_bounds_scale_with_shrink() {
+        let mut next = crate::num::xorshift(29);
+        let mut seen = 0;
+        for _ in 0..2000 {
+            let mut v = || f64::from((next() % 2001) as f32 / 1000.0 - 1.0);
+            let (o, d, a, n) = (
+                [v(), v(), v()],
+                [v(), v(), v()],
+                [v(), v(), v()],
+                [v(), v(), v()],
+            );
+            let f = filter::<f64>(o, d, a, n, 1.0);
+            if !f.hit || !f.r.is_finite() {
+                continue;
+            }
+            seen += 1;
+            for s in [0.5, 0.25, 1.0 / 64.0] {
+                let g = filter::<f64>(o, d, a, n, s);
+                assert!(g.hit && g.t == f.t, "{o:?} {d:?} {a:?} {n:?}");
+                assert!(
+                    g.r <= s * f.r && g.a <= s * f.a,
+                    "{s}: {:e} {:e}, {:e} {:e}",
+                    g.r,
+                    f.r,
+                    g.a,
+                    f.a
+                );
+            }
+        }
+        assert!(seen > 1000, "{seen}");
     }
 
     proptest! {
