@@ -36,6 +36,9 @@
 //!   `x4/packed` leaves for the AVX2 copy where the CPU has AVX2 and FMA.
 //! * `x4/batch`: the same packets through `intersect_packets`, which runs
 //!   them two at a time as eight lanes and dispatches once per batch.
+//! * `x4/ftz-daz` (x86-64): `x4/packed` with flush-to-zero and
+//!   denormals-are-zero on, as many renderers run; no input is subnormal,
+//!   so the packets keep their fast paths.
 //! * `f64/per-ray`: the plain-f64 variant (`*::plain`; `textbook` for the
 //!   camera), one `black_box`ed call per ray.
 //! * `parry3d/per-ray` (sphere, plane): `Ball::cast_local_ray` and
@@ -265,7 +268,7 @@ fn bench_group<'a, P: Copy + 'a>(
     prim: P,
     scalar: impl Fn(&Ray, &P) -> Option<f32> + Copy + 'a,
     baseline: impl Fn(&Ray, &P) -> Option<f32> + 'a,
-    simd: impl Fn(&Ray4) -> f32x4 + 'a,
+    simd: impl Fn(&Ray4) -> f32x4 + Copy + 'a,
     base: impl Fn(&Ray4) -> f32x4 + 'a,
     mut batch: impl FnMut(&[Ray4]) -> f32x4 + 'a,
 ) {
@@ -293,6 +296,15 @@ fn bench_group<'a, P: Copy + 'a>(
         }
         acc
     });
+    #[cfg(target_arch = "x86_64")]
+    paired.bench(&mut g, name, "x4/ftz-daz", s, move || {
+        let _on = FtzDaz::on();
+        let mut acc = f32x4::ZERO;
+        for r in black_box(&packed.borrow()[..]) {
+            acc += simd(r);
+        }
+        acc
+    });
     paired.bench(&mut g, name, "x4/baseline", s, move || {
         let mut acc = f32x4::ZERO;
         for r in black_box(&packed.borrow()[..]) {
@@ -311,6 +323,34 @@ fn bench_group<'a, P: Copy + 'a>(
         acc
     });
     g.finish();
+}
+
+/// Flush-to-zero and denormals-are-zero on (MXCSR's bits 15 and 6) while
+/// it lives, the register as it was after.
+#[cfg(target_arch = "x86_64")]
+struct FtzDaz(u32);
+
+#[cfg(target_arch = "x86_64")]
+impl FtzDaz {
+    fn on() -> FtzDaz {
+        let mut saved = 0u32;
+        // SAFETY: stores the 32-bit MXCSR to `saved`, a live aligned u32;
+        // there is no other way to read the register.
+        unsafe { core::arch::asm!("stmxcsr [{}]", in(reg) &mut saved, options(nostack)) };
+        let on = saved | 1 << 15 | 1 << 6;
+        // SAFETY: loads MXCSR from `on`, a live aligned u32 holding the
+        // register as it was with the FTZ and DAZ bits set: a valid value.
+        unsafe { core::arch::asm!("ldmxcsr [{}]", in(reg) &on, options(nostack)) };
+        FtzDaz(saved)
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+impl Drop for FtzDaz {
+    fn drop(&mut self) {
+        // SAFETY: loads MXCSR from `self.0`, the value `on` read from it: valid.
+        unsafe { core::arch::asm!("ldmxcsr [{}]", in(reg) &self.0, options(nostack)) };
+    }
 }
 
 /// parry3d's cast on the same rays, moved into the shape's frame
@@ -517,22 +557,24 @@ fn rates(k: &str, ns: impl Fn(&str) -> Option<f64>) -> (String, serde_json::Valu
         (Some(a), Some(b)) => format!("{:.2}×", a / b),
         _ => "–".into(),
     };
-    let (pr, sl, x4, base, batch, f64r, peer) = (
+    let (pr, sl, x4, base, batch, daz, f64r, peer) = (
         rate("reference/per-ray"),
         rate("reference/slice"),
         rate("x4/packed"),
         rate("x4/baseline"),
         rate("x4/batch"),
+        rate("x4/ftz-daz"),
         rate("f64/per-ray"),
         rate("parry3d/per-ray"),
     );
     let md = format!(
-        "| {k} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+        "| {k} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
         f(pr),
         f(sl),
         f(x4),
         f(base),
         f(batch),
+        f(daz),
         f(f64r),
         f(peer),
         r(x4, peer),
@@ -548,6 +590,9 @@ fn rates(k: &str, ns: impl Fn(&str) -> Option<f64>) -> (String, serde_json::Valu
         "x4_batch": batch,
         "f64": f64r,
     });
+    if let Some(d) = daz {
+        o["x4_ftz_daz"] = serde_json::json!(d);
+    }
     if let Some(p) = peer {
         o["parry3d"] = serde_json::json!(p);
     }
@@ -574,7 +619,7 @@ fn print_ratios(passes: &[(String, &'static str, Passes)], complete: bool) {
             .find(|(g, i, _)| g == group && *i == id)
             .map(|b| b.2)
     };
-    let head = "| kernel | reference per-ray | reference slice | x4 | x4 baseline | x4 batch | f64 per-ray | parry3d | x4 ÷ parry3d | x4 batch ÷ parry3d | x4 ÷ f64 | f64 ÷ reference per-ray |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    let head = "| kernel | reference per-ray | reference slice | x4 | x4 baseline | x4 batch | x4 FTZ+DAZ | f64 per-ray | parry3d | x4 ÷ parry3d | x4 batch ÷ parry3d | x4 ÷ f64 | f64 ÷ reference per-ray |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     let (mut md, mut fast, mut mid) = (String::from(head), String::from(head), String::from(head));
     let mut json = Vec::new();
     for k in ["camera", "plane", "sphere", "sphere-shuffled", "quadric"] {

@@ -149,6 +149,14 @@ impl Ray4 {
         let (o, d) = (scatter3(self.origin), scatter3(self.dir));
         [0, 1, 2, 3].map(|i| Ray::new(o[i], d[i]))
     }
+
+    /// The origins' components, then the directions'.
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+    #[inline(always)]
+    pub(crate) fn components(&self) -> [f32x4; 6] {
+        let ([o0, o1, o2], [d0, d1, d2]) = (self.origin, self.dir);
+        [o0, o1, o2, d0, d1, d2]
+    }
 }
 
 /// Runs `kernel` over `items` four at a time and appends one result per item

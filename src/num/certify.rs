@@ -537,6 +537,92 @@ pub fn results_stand<L: Real>(prone: bool) -> bool {
     !L::denormals_are_zero() && (!prone || subnormals_work())
 }
 
+/// [`results_stand`] for a packet whose inputs, the `f32` lanes the kernel
+/// widens as it runs, are `inputs`. Under denormals-are-zero, results with
+/// no root 0 or subnormal stand too where no input is subnormal
+/// ([`any_subnormal4`]): DAZ reaches the filters only through a subnormal
+/// input, and their f64 arithmetic makes no subnormal ([`needs_probe`]).
+/// The inputs are scanned only under DAZ, so a renderer that runs with
+/// FTZ and DAZ on keeps the packet's fast path.
+///
+/// ```
+/// use rayoracle::num::certify::packet_results_stand;
+/// use wide::f32x4;
+/// let inputs = [f32x4::splat(1.0), f32x4::from([0.0, 1e-40, 2.0, 3.0])];
+/// // DAZ is off here: the subnormal input is read as it is.
+/// assert!(packet_results_stand::<f64>(&inputs, false));
+/// assert!(packet_results_stand::<f64>(&inputs, true));
+/// ```
+#[inline(always)]
+pub fn packet_results_stand<L: Real>(inputs: &[wide::f32x4], prone: bool) -> bool {
+    if L::denormals_are_zero() {
+        !prone && !any_subnormal4(inputs)
+    } else {
+        !prone || subnormals_work()
+    }
+}
+
+/// Whether any lane of `inputs` is subnormal: the values that
+/// denormals-are-zero reads as 0.
+///
+/// ```
+/// use rayoracle::num::certify::any_subnormal4;
+/// use wide::f32x4;
+/// let least = f32::MIN_POSITIVE;
+/// assert!(!any_subnormal4(&[f32x4::from([0.0, -0.0, least, f32::NAN]), f32x4::splat(-least)]));
+/// assert!(any_subnormal4(&[f32x4::splat(1.0), f32x4::from([1.0, 2.0, -1e-40, 3.0])]));
+/// assert!(any_subnormal4(&[f32x4::from([f32::from_bits(1), 1.0, 1.0, 1.0])]));
+/// ```
+#[inline(always)]
+pub fn any_subnormal4(inputs: &[wide::f32x4]) -> bool {
+    use wide::i32x4;
+    let mut any = i32x4::ZERO;
+    for x in inputs {
+        // The magnitude's bits: 1 to 2²³ − 1 for a subnormal.
+        let m = wide::bytemuck::cast::<_, i32x4>(*x) & i32x4::splat(0x7fff_ffff);
+        any |= m.simd_gt(i32x4::ZERO) & m.simd_lt(i32x4::splat(0x80_0000));
+    }
+    any.any()
+}
+
+/// The floating-point environment as a batch of packets reads it, once:
+/// whether DAZ is on, and whether results 0 or subnormal stand (neither
+/// FTZ nor DAZ). Each packet's own inputs then say whether its other
+/// results stand ([`packet_results_stand`], per packet).
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+#[derive(Clone, Copy)]
+pub(crate) struct BatchEnv {
+    daz: bool,
+    work: bool,
+}
+
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+impl BatchEnv {
+    /// Reads the environment, `L` picking the probe's encoding.
+    #[inline(always)]
+    pub(crate) fn read<L: Real>() -> BatchEnv {
+        let daz = L::denormals_are_zero();
+        BatchEnv {
+            daz,
+            work: !daz && subnormals_work(),
+        }
+    }
+
+    /// Whether results with no root 0 or subnormal stand for a packet
+    /// with these inputs: scanned only under DAZ.
+    #[inline(always)]
+    pub(crate) fn clean(self, inputs: &[wide::f32x4]) -> bool {
+        !self.daz || !any_subnormal4(inputs)
+    }
+
+    /// Whether a packet's results stand, from its [`clean`](Self::clean)
+    /// and whether a root is 0 or subnormal.
+    #[inline(always)]
+    pub(crate) fn stands(self, clean: bool, prone: bool) -> bool {
+        if prone { self.work } else { clean }
+    }
+}
+
 /// [`flush_prone`] over the lanes of an `f32x4`: whether any is 0 or
 /// subnormal. A NaN lane (no root) is not.
 ///

@@ -36,6 +36,8 @@ pub mod avx512;
 pub(crate) mod batch;
 pub mod certify;
 pub mod dd;
+#[cfg(all(test, any(feature = "plane", feature = "sphere", feature = "quadric")))]
+pub(crate) mod paths;
 pub mod real;
 pub mod tracked;
 

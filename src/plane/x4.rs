@@ -6,7 +6,7 @@ use super::{Plane, PlaneHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{
-    certify_end, certify_relative, flush_prone4, results_stand, subnormals_work, widen_lanes,
+    BatchEnv, certify_end, certify_relative, flush_prone4, packet_results_stand, widen_lanes,
 };
 use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::class::{ALL, NONE, ONE};
@@ -140,7 +140,9 @@ pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 /// ```
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
-    intersect_in::<F64x4>(ray, p, results_stand::<F64x4>)
+    intersect_in::<F64x4>(ray, p, |prone| {
+        packet_results_stand::<F64x4>(&ray.components(), prone)
+    })
 }
 
 /// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
@@ -161,7 +163,9 @@ pub fn intersect_baseline(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
     #[target_feature(enable = "avx2,fma")]
     fn run(_: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
-        intersect_in::<Avx4>(ray, p, results_stand::<Avx4>)
+        intersect_in::<Avx4>(ray, p, |prone| {
+            packet_results_stand::<Avx4>(&ray.components(), prone)
+        })
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.
     // Justified by the kernels bench figures in `crate::num::avx`.
@@ -192,7 +196,10 @@ pub fn intersect_packets(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
 /// [`intersect_packets`] over any eight-lane [`Real8`].
 #[inline(always)]
 fn packets_in<W: Real8>(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
-    let env = subnormals_work();
+    let env = BatchEnv::read::<W::Half>();
+    // The planes' f64 lanes were widened exactly when packed: only the
+    // rays' components meet DAZ, and only a packet the first pass leaves
+    // asks (as under DAZ, where it certifies nothing).
     let (a, n) = (
         p.point.each_ref().map(W::Half::load),
         p.normal.each_ref().map(W::Half::load),
@@ -207,13 +214,20 @@ fn packets_in<W: Real8>(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
             W::widen3(&pk[0].dir, &pk[1].dir),
         );
         let [x, y] = decide(o2, d2, a2, n2).halves();
-        o[0] = finish(x, |_| env, &pk[0], p);
-        o[1] = finish(y, |_| env, &pk[1], p);
+        o[0] = finish(x, stands(env, &pk[0]), &pk[0], p);
+        o[1] = finish(y, stands(env, &pk[1]), &pk[1], p);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
         let (o1, d1) = (one.origin.map(W::Half::widen), one.dir.map(W::Half::widen));
-        *o = finish(decide(o1, d1, a, n), |_| env, one, p);
+        *o = finish(decide(o1, d1, a, n), stands(env, one), one, p);
     }
+}
+
+/// Whether a packet's results stand, for the batch: its rays' components
+/// scanned only where asked, under DAZ.
+#[inline(always)]
+fn stands(env: BatchEnv, ray: &Ray4) -> impl Fn(bool) -> bool + '_ {
+    move |prone| env.stands(env.clean(&ray.components()), prone)
 }
 
 /// What the first pass decides, before any conversion: the hits it
@@ -244,7 +258,8 @@ fn decide<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Decided<L> {
 
 /// The results of one packet; `env(prone)` says whether they stand in the
 /// floating-point environment, `prone` where a root is 0 or subnormal
-/// ([`results_stand`]; asked only where every lane is done).
+/// ([`packet_results_stand`]; asked only where the first pass leaves a
+/// lane).
 #[inline(always)]
 fn finish<L: Real4>(
     x: Decided<L>,
@@ -285,18 +300,32 @@ fn finish_full(
     ray: &Ray4,
     p: &Plane4,
 ) -> PlaneHit4 {
-    let (class, t, done) = decide_full(hit, t, ray, p);
-    if done.all() && env(flush_prone4(t)) {
+    // Under DAZ the first pass certifies nothing. A packet with no input
+    // subnormal meets DAZ nowhere, and its second pass certifies as
+    // without it (`least` 2⁻¹⁴⁹, the value the probe gives there).
+    let least = F64x4::splat(if env(false) { 2f64.powi(-149) } else { 0.0 });
+    let (class, t, done) = decide_full(hit, t, least, ray, p);
+    // Where the results do not stand, no lane is done.
+    let stands = env(flush_prone4(t));
+    if done.all() && stands {
         PlaneHit4 { class, t }
     } else {
+        let done = done & i32x4::splat(-i32::from(stands));
         PlaneHit4::settle([class, cast(t)], done, ray, p)
     }
 }
 
 /// The packet's passes of [`finish_full`] before the scalar stages: the
-/// classes and roots, and the lanes they decide (−1), as `i32` lanes.
+/// classes and roots, and the lanes they decide (−1), as `i32` lanes;
+/// `least` for the second pass ([`stages::compensated_terms`]).
 #[inline(always)]
-fn decide_full(hit: u32, [t01, t23]: [u64; 2], ray: &Ray4, p: &Plane4) -> (i32x4, f32x4, i32x4) {
+fn decide_full(
+    hit: u32,
+    [t01, t23]: [u64; 2],
+    least: F64x4,
+    ray: &Ray4,
+    p: &Plane4,
+) -> (i32x4, f32x4, i32x4) {
     let bits = i32x4::from([1, 2, 4, 8]);
     let hit = (i32x4::splat(hit as i32) & bits).simd_eq(bits);
     let t: f32x4 = cast([t01, t23]);
@@ -304,7 +333,7 @@ fn decide_full(hit: u32, [t01, t23]: [u64; 2], ray: &Ray4, p: &Plane4) -> (i32x4
     let first = stages::first_terms(o, d, a, n);
     let x = first.terms();
     // The second pass: d·n summed once compensated.
-    let c = stages::compensated_terms(x.num, x.m_num, first.dn, F64x4::least_subnormal(), 1.0);
+    let c = stages::compensated_terms(x.num, x.m_num, first.dn, least, 1.0);
     let second = certify_relative(c.relative.t, c.relative.r);
     let m = F64x4::mask_i32;
     // Where passes certify a hit, each gives the one correctly rounded
@@ -362,16 +391,18 @@ fn widened<L: Real4>(ray: &Ray4, p: &Plane4) -> ([L; 3], [L; 3], [L; 3], [L; 3])
 }
 
 impl PlaneHit4 {
-    /// Replaces every lane not `done` (and, with subnormals flushed, every
-    /// lane) with the scalar stages' answer.
+    /// Replaces every lane not `done` with the scalar stages' answer (the
+    /// caller leaves no lane done whose result does not stand).
     #[cold]
     #[inline(never)]
     fn settle(h: [i32x4; 2], done: i32x4, ray: &Ray4, p: &Plane4) -> Self {
+        #[cfg(test)]
+        crate::num::paths::note_settled();
         let (class, t): (i32x4, f32x4) = (h[0], cast(h[1]));
         let rays = ray.to_rays();
         let (a, n) = (scatter3(p.point()), scatter3(p.normal()));
         let (mut class, mut t) = (class.to_array(), t.to_array());
-        let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
+        let done = done.to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
             (class[i], t[i]) = match reference::escalate(&rays[i], &Plane::new(a[i], n[i])).0 {
                 PlaneHit::Hit(x) => (ONE, x),
@@ -431,7 +462,8 @@ mod tests {
         let (o, d, a, n) = widened::<F64x4>(r4, p4);
         let first = decide(o, d, a, n);
         let hit = F64x4::mask_i32(first.hit).to_bitmask();
-        let (class, t, done) = decide_full(hit, cast(first.t.narrow()), r4, p4);
+        let least = F64x4::least_subnormal();
+        let (class, t, done) = decide_full(hit, cast(first.t.narrow()), least, r4, p4);
         (
             PlaneHit4 { class, t }.lanes(),
             done.to_array().map(|x| x != 0),
@@ -614,5 +646,75 @@ mod tests {
         );
         assert_eq!(packet_passes(&r4, &p4), (want, [true; 4]));
         assert_eq!(intersect(&r4, &p4).lanes(), want);
+    }
+
+    /// Under FTZ, DAZ and both, a packet with no subnormal ray component
+    /// keeps the packet's passes, one packet at a time or in pairs: the
+    /// same bits as without, and no packet sent to the scalar stages. The
+    /// planes' lanes, widened exactly when packed, meet DAZ nowhere, so a
+    /// subnormal there changes nothing either. A subnormal in any of the
+    /// rays' vectors sends its packet to the scalar stages under DAZ alone,
+    /// with the same bits again; among them a direction whose one nonzero
+    /// component is subnormal, whose root is ∞ once rounded, where DAZ
+    /// would read no direction at all.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn packets_keep_their_passes_unless_daz_meets_a_subnormal_input() {
+        use crate::num::paths::{Paths, assert_packets_keep_their_paths, fan, with_subnormal_rays};
+        use crate::num::real::Pair;
+        use glam::Vec3;
+        fn bits(h: PlaneHit4) -> [[i32; 4]; 2] {
+            [h.class, cast(h.t)].map(|v: i32x4| v.to_array())
+        }
+        fn batch(rays: &[Ray4], p: &Plane4, pairs: bool) -> Vec<[[i32; 4]; 2]> {
+            let mut out = vec![intersect_baseline(&rays[0], p); rays.len()];
+            if pairs {
+                packets_in::<Pair<F64x4>>(rays, p, &mut out);
+            } else {
+                intersect_packets(rays, p, &mut out);
+            }
+            out.into_iter().map(bits).collect()
+        }
+        let paths: Paths<Plane4, [[i32; 4]; 2]> = [
+            |r, p| r.iter().map(|r| bits(intersect(r, p))).collect(),
+            |r, p| r.iter().map(|r| bits(intersect_baseline(r, p))).collect(),
+            |r, p| batch(r, p, false),
+            |r, p| batch(r, p, true),
+        ];
+        // From (0.1, 2, 0.3) at a tilted plane: hits both ways along the
+        // rays, and one ray parallel to it.
+        let plane = Plane::new(Vec3::new(0.0, -1.0, 0.0), Vec3::new(0.1, 1.0, -0.2));
+        let rays = fan(Vec3::new(0.1, 2.0, 0.3), |i, j| match (i, j) {
+            (5, 2) => Vec3::new(2.0, 0.0, 1.0),
+            _ => Vec3::new(
+                (i % 4 * 4 + j) as f32 / 8.0 - 1.0,
+                (i / 4) as f32 / 2.0 - 1.0,
+                1.0,
+            ),
+        });
+        assert_eq!(
+            reference::intersect(&rays[5].to_rays()[2], &plane),
+            PlaneHit::Parallel
+        );
+        let tiny = Plane::new(Vec3::new(0.0, -1.0, -1e-40), Vec3::new(1e-40, 1.0, -0.2));
+        let clean = [
+            (rays.clone(), Plane4::splat(&plane)),
+            (
+                rays.clone(),
+                Plane4::from_planes([plane, tiny, plane, tiny]),
+            ),
+        ];
+        let floor = Plane::new(-Vec3::Y, Vec3::Y);
+        let lone = crate::Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::Y * -1e-40);
+        assert_eq!(
+            reference::intersect(&lone, &floor),
+            PlaneHit::Hit(f32::INFINITY)
+        );
+        let p = Plane4::splat(&floor);
+        let dirty: Vec<_> = with_subnormal_rays(&rays, lone)
+            .into_iter()
+            .map(|r| (r, p))
+            .collect();
+        assert_packets_keep_their_paths(paths, &clean, &dirty);
     }
 }

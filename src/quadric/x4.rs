@@ -9,7 +9,7 @@ use super::{Quadric, QuadricHit, lanes, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{
-    certify, certify_end, flush_prone4, narrow_exact, results_stand, subnormals_work, widen_lanes,
+    BatchEnv, certify, certify_end, flush_prone4, narrow_exact, packet_results_stand, widen_lanes,
 };
 use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::Ray4;
@@ -158,7 +158,9 @@ pub fn intersect(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
 /// ```
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
-    intersect_in::<F64x4>(ray, q, results_stand::<F64x4>)
+    intersect_in::<F64x4>(ray, q, |prone| {
+        packet_results_stand::<F64x4>(&ray.components(), prone)
+    })
 }
 
 /// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
@@ -179,7 +181,9 @@ pub fn intersect_baseline(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
 pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
     #[target_feature(enable = "avx2,fma")]
     fn run(_: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
-        intersect_in::<Avx4>(ray, q, results_stand::<Avx4>)
+        intersect_in::<Avx4>(ray, q, |prone| {
+            packet_results_stand::<Avx4>(&ray.components(), prone)
+        })
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.
     // Justified by the kernels bench figures in `crate::num::avx`.
@@ -210,7 +214,7 @@ pub fn intersect_packets(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
 /// [`intersect_packets`] over any eight-lane [`Real8`].
 #[inline(always)]
 fn packets_in<W: Real8>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
-    let env = subnormals_work();
+    let env = BatchEnv::read::<W::Half>();
     let k = q.lanes::<W::Half>();
     let t = W::twice;
     let k2 = [
@@ -233,23 +237,28 @@ fn packets_in<W: Real8>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
             W::widen3(&pk[0].origin, &pk[1].origin),
             W::widen3(&pk[0].dir, &pk[1].dir),
         );
+        // The quadrics' f64 lanes were widened exactly when packed: only
+        // the rays' components meet DAZ.
+        let clean = env.clean(&pk[0].components()) && env.clean(&pk[1].components());
+        let stands = |prone| env.stands(clean, prone);
         let c = lanes::classes(&k2, o2, d2, 1.0, 1.0);
-        if W::all(c.none) && env {
+        if W::all(c.none) && clean {
             o.fill(QuadricHit4::MISS);
             continue;
         }
         let (x, open) = decide_sorted(&c, lanes::sorted(&c, 1.0));
         if !W::all(!open) {
-            o[0] = quotients(&pk[0], q, |_| env);
-            o[1] = quotients(&pk[1], q, |_| env);
+            o[0] = quotients(&pk[0], q, stands);
+            o[1] = quotients(&pk[1], q, stands);
             continue;
         }
         let [x, y] = x.halves();
-        o[0] = finish(x, |_| env, &pk[0], q);
-        o[1] = finish(y, |_| env, &pk[1], q);
+        o[0] = finish(x, stands, &pk[0], q);
+        o[1] = finish(y, stands, &pk[1], q);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
-        *o = intersect_in::<W::Half>(one, q, |_| env);
+        let clean = env.clean(&one.components());
+        *o = intersect_in::<W::Half>(one, q, |prone| env.stands(clean, prone));
     }
 }
 
@@ -316,11 +325,11 @@ fn decide<L: Real>(f: stages::Filtered<L>) -> Decided<L> {
 
 /// The results of one packet; `env(prone)` says whether they stand in the
 /// floating-point environment, `prone` where a root is 0 or subnormal
-/// ([`results_stand`]; asked only where every lane is done).
+/// ([`packet_results_stand`]).
 #[inline(always)]
 fn finish<L: Real4>(
     x: Decided<L>,
-    env: impl FnOnce(bool) -> bool,
+    env: impl Fn(bool) -> bool,
     ray: &Ray4,
     q: &Quadric4,
 ) -> QuadricHit4 {
@@ -328,10 +337,13 @@ fn finish<L: Real4>(
     let k = i32x4::splat;
     let class = t.select(k(TWO), o.select(k(ONE), a & k(ALL)));
     let (t0, t1) = (x.lo.narrow(), x.hi.narrow());
-    if L::all(x.done) && env(flush_prone4(t0) || flush_prone4(t1)) {
+    let prone = flush_prone4(t0) || flush_prone4(t1);
+    if L::all(x.done) && env(prone) {
         QuadricHit4 { class, t0, t1 }
     } else {
-        QuadricHit4::settle([class, cast(t0), cast(t1)], L::mask_i32(x.done), ray, q)
+        // Where the results do not stand, no lane is done.
+        let done = L::mask_i32(x.done) & i32x4::splat(-i32::from(env(prone)));
+        QuadricHit4::settle([class, cast(t0), cast(t1)], done, ray, q)
     }
 }
 
@@ -457,15 +469,17 @@ impl QuadricHit4 {
         t1: f32x4::splat(f32::NAN),
     };
 
-    /// Replaces every lane not `done` (and, with subnormals flushed, every
-    /// lane) with the scalar stages' answer.
+    /// Replaces every lane not `done` with the scalar stages' answer (the
+    /// caller leaves no lane done whose result does not stand).
     #[cold]
     #[inline(never)]
     fn settle(h: [i32x4; 3], done: i32x4, ray: &Ray4, q: &Quadric4) -> Self {
+        #[cfg(test)]
+        crate::num::paths::note_settled();
         let [class, t0, t1] = h;
         let (t0, t1): (f32x4, f32x4) = (cast(t0), cast(t1));
         let (mut class, mut t0, mut t1) = (class.to_array(), t0.to_array(), t1.to_array());
-        let done = (done & i32x4::splat(-i32::from(subnormals_work()))).to_array();
+        let done = done.to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
             (class[i], t0[i], t1[i]) =
                 match reference::escalate_lane(ray, q.f64_lanes(), i).unpack().0 {
@@ -662,5 +676,65 @@ mod tests {
         assert_eq!(x.done.lanes(), [true; 4]);
         let want = [want[2], want[3], want[3], want[2]];
         assert_eq!(intersect_baseline(&r4, &q4).lanes(), want);
+    }
+
+    /// Under FTZ, DAZ and both, a packet with no subnormal ray component
+    /// keeps the fast path, one packet at a time or in pairs: the same bits
+    /// as without, and no packet sent to the scalar stages. The
+    /// coefficients, widened exactly when packed, meet DAZ nowhere, so a
+    /// subnormal there changes nothing either. A subnormal in any of the
+    /// rays' vectors sends its packet to the scalar stages under DAZ alone,
+    /// with the same bits again; among them a direction whose one nonzero
+    /// component is subnormal, from inside, whose roots are ±∞ once
+    /// rounded, where DAZ would read no line at all.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn packets_keep_the_fast_path_unless_daz_meets_a_subnormal_input() {
+        use crate::num::paths::{Paths, assert_packets_keep_their_paths, fan, with_subnormal_rays};
+        use crate::num::real::Pair;
+        use glam::Vec3;
+        fn bits(h: QuadricHit4) -> [[i32; 4]; 3] {
+            [h.class, cast(h.t0), cast(h.t1)].map(|v: i32x4| v.to_array())
+        }
+        fn batch(rays: &[Ray4], q: &Quadric4, pairs: bool) -> Vec<[[i32; 4]; 3]> {
+            let mut out = vec![QuadricHit4::MISS; rays.len()];
+            if pairs {
+                packets_in::<Pair<F64x4>>(rays, q, &mut out);
+            } else {
+                intersect_packets(rays, q, &mut out);
+            }
+            out.into_iter().map(bits).collect()
+        }
+        let paths: Paths<Quadric4, [[i32; 4]; 3]> = [
+            |r, q| r.iter().map(|r| bits(intersect(r, q))).collect(),
+            |r, q| r.iter().map(|r| bits(intersect_baseline(r, q))).collect(),
+            |r, q| batch(r, q, false),
+            |r, q| batch(r, q, true),
+        ];
+        // From (0, 0.3, −4) at the unit sphere: hits and misses.
+        let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+        let rays = fan(Vec3::new(0.0, 0.3, -4.0), |i, j| {
+            Vec3::new(
+                (i % 4 * 4 + j) as f32 / 16.0 - 0.5,
+                (i / 4) as f32 / 4.0 - 0.5,
+                1.0,
+            )
+        });
+        let q = Quadric4::splat(&ball);
+        assert!(
+            rays.iter()
+                .any(|r| intersect(r, &q).class.to_array().contains(&TWO))
+        );
+        let mut k = ball.coeffs;
+        (k[3], k[6], k[8]) = (1e-40, -1e-40, 3e-39);
+        let odd = Quadric4::from_quadrics([ball, Quadric::new(k), ball, Quadric::new(k)]);
+        let lone = crate::Ray::new(Vec3::new(0.0, 0.5, 0.0), Vec3::X * 1e-40);
+        let want = QuadricHit::Two(f32::NEG_INFINITY, f32::INFINITY);
+        assert_eq!(reference::intersect(&lone, &ball), want);
+        let dirty: Vec<_> = with_subnormal_rays(&rays, lone)
+            .into_iter()
+            .map(|r| (r, q))
+            .collect();
+        assert_packets_keep_their_paths(paths, &[(rays.clone(), q), (rays, odd)], &dirty);
     }
 }

@@ -6,7 +6,8 @@ use super::{Sphere, SphereHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{
-    certify, certify_end, certify_normal4, flush_prone4, results_stand, subnormals_work,
+    BatchEnv, certify, certify_end, certify_normal4, flush_prone4, packet_results_stand,
+    subnormals_work,
 };
 use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::class::{NONE, ONE, TWO};
@@ -115,7 +116,9 @@ pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 /// ```
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-    intersect_in::<F64x4>(ray, s, results_stand::<F64x4>)
+    intersect_in::<F64x4>(ray, s, |prone| {
+        packet_results_stand::<F64x4>(&inputs(ray, s), prone)
+    })
 }
 
 /// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
@@ -136,7 +139,9 @@ pub fn intersect_baseline(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
     #[target_feature(enable = "avx2,fma")]
     fn run(_: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-        intersect_in::<Avx4>(ray, s, results_stand::<Avx4>)
+        intersect_in::<Avx4>(ray, s, |prone| {
+            packet_results_stand::<Avx4>(&inputs(ray, s), prone)
+        })
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.
     // Justified by the kernels bench figures in `crate::num::avx`.
@@ -168,7 +173,8 @@ pub fn intersect_packets(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
 /// [`intersect_packets`] over any eight-lane [`Real8`].
 #[inline(always)]
 fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
-    let env = subnormals_work();
+    let env = BatchEnv::read::<W::Half>();
+    let sphere = env.clean(&[s.center[0], s.center[1], s.center[2], s.radius]);
     let w = W::Half::widen;
     let c2 = s.center.map(|x| W::twice(w(x)));
     let r2 = W::twice(w(s.radius));
@@ -180,17 +186,20 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
             W::widen3(&pk[0].origin, &pk[1].origin),
             W::widen3(&pk[0].dir, &pk[1].dir),
         );
+        let clean = sphere && env.clean(&pk[0].components()) && env.clean(&pk[1].components());
         let k = stages::classes(o2, d2, c2, r2, 1.0);
-        if W::all(k.miss) && env {
+        if W::all(k.miss) && clean {
             o.fill(SphereHit4::MISS);
             continue;
         }
         let [x, y] = decide_sorted(stages::sorted(k, 1.0)).halves();
-        o[0] = finish(x.packed(), env, |_| env, &pk[0], s);
-        o[1] = finish(y.packed(), env, |_| env, &pk[1], s);
+        let stands = |prone| env.stands(clean, prone);
+        o[0] = finish(x.packed(), clean, stands, &pk[0], s);
+        o[1] = finish(y.packed(), clean, stands, &pk[1], s);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
-        *o = intersect_in::<W::Half>(one, s, |_| env);
+        let clean = sphere && env.clean(&one.components());
+        *o = intersect_in::<W::Half>(one, s, |prone| env.stands(clean, prone));
     }
 }
 
@@ -331,7 +340,7 @@ fn decide_quotients<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L) -> Decided<L
 /// The results of one packet. `stands` is `env(false)`: whether results
 /// with no root 0 or subnormal, as the lanes done have ([`Packed`]),
 /// stand in the floating-point environment; `env(prone)` says it for
-/// results with such a root ([`results_stand`]). A packet with no lane
+/// results with such a root ([`packet_results_stand`]). A packet with no lane
 /// left is one test; any other (a lane the first pass leaves with the
 /// class two, an undecided class or root), or one whose results do not
 /// stand, starts again out of line, in [`finish_rest`].
@@ -387,9 +396,12 @@ fn finish_rest(env: impl FnOnce(bool) -> bool, ray: &Ray4, s: &Sphere4) -> Spher
         done |= F64x4::mask_i32(y.done);
     }
     let class = two & i32x4::splat(TWO);
-    if done.all() && env(flush_prone4(t0) || flush_prone4(t1)) {
+    // Where the results do not stand, no lane is done.
+    let stands = env(flush_prone4(t0) || flush_prone4(t1));
+    if done.all() && stands {
         SphereHit4 { class, t0, t1 }
     } else {
+        let done = done & i32x4::splat(-i32::from(stands));
         SphereHit4::settle([class, cast(t0), cast(t1)], done, ray, s)
     }
 }
@@ -416,6 +428,15 @@ fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl Fn(bool) -> bool) -
     )
 }
 
+/// The `f32` lanes a packet's kernel widens as it runs: the rays'
+/// components, then the spheres'.
+#[inline(always)]
+fn inputs(ray: &Ray4, s: &Sphere4) -> [f32x4; 10] {
+    let ([o0, o1, o2], [d0, d1, d2]) = (ray.origin, ray.dir);
+    let [c0, c1, c2] = s.center;
+    [o0, o1, o2, d0, d1, d2, c0, c1, c2, s.radius]
+}
+
 /// A packet's inputs in f64 lanes.
 #[inline(always)]
 fn widened<L: Real4>(ray: &Ray4, s: &Sphere4) -> ([L; 3], [L; 3], [L; 3], L) {
@@ -436,16 +457,18 @@ impl SphereHit4 {
         t1: f32x4::splat(f32::NAN),
     };
 
-    /// Replaces every lane not `done` (and, with subnormals flushed, every
-    /// lane) with the scalar stages' answer.
+    /// Replaces every lane not `done` with the scalar stages' answer (the
+    /// caller leaves no lane done whose result does not stand).
     #[cold]
     #[inline(never)]
     fn settle(h: [i32x4; 3], done: i32x4, ray: &Ray4, s: &Sphere4) -> Self {
+        #[cfg(test)]
+        crate::num::paths::note_settled();
         let [class, t0, t1] = h;
         let (t0, t1): (f32x4, f32x4) = (cast(t0), cast(t1));
         let (mut class, mut t0, mut t1) = (class.to_array(), t0.to_array(), t1.to_array());
         let env = subnormals_work();
-        let done = (done & i32x4::splat(-i32::from(env))).to_array();
+        let done = done.to_array();
         for i in (0..4).filter(|&i| done[i] == 0) {
             let (k, a, b) = match reference::escalate_lane(ray, s, i, env).0 {
                 SphereHit::None => (NONE, f32::NAN, f32::NAN),
@@ -676,5 +699,72 @@ mod tests {
             assert_eq!(intersect(&r4, &s4).lanes(), want);
         }
         assert!(rescued > 0 && left < 256, "{left} {rescued}");
+    }
+
+    /// Under FTZ, DAZ and both, a packet with no subnormal input keeps the
+    /// fast path, one packet at a time or in pairs: the same bits as
+    /// without, and no packet sent to the scalar stages. A subnormal in any
+    /// of a packet's input vectors, which DAZ would read as 0, sends it
+    /// there under DAZ alone, with the same bits again; among them a
+    /// direction whose one nonzero component is subnormal, from inside the
+    /// sphere, whose roots are ±∞ once rounded, where DAZ would read no
+    /// line at all.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn packets_keep_the_fast_path_unless_daz_meets_a_subnormal_input() {
+        use crate::num::paths::{
+            Paths, assert_packets_keep_their_paths, fan, with_lane, with_subnormal_rays,
+        };
+        use glam::Vec3;
+        fn bits(h: SphereHit4) -> [[i32; 4]; 3] {
+            [h.class, cast(h.t0), cast(h.t1)].map(|v: i32x4| v.to_array())
+        }
+        fn batch(rays: &[Ray4], s: &Sphere4, pairs: bool) -> Vec<[[i32; 4]; 3]> {
+            let mut out = vec![SphereHit4::MISS; rays.len()];
+            if pairs {
+                packets_in::<Pair<F64x4>>(rays, s, &mut out);
+            } else {
+                intersect_packets(rays, s, &mut out);
+            }
+            out.into_iter().map(bits).collect()
+        }
+        let paths: Paths<Sphere4, [[i32; 4]; 3]> = [
+            |r, s| r.iter().map(|r| bits(intersect(r, s))).collect(),
+            |r, s| r.iter().map(|r| bits(intersect_baseline(r, s))).collect(),
+            |r, s| batch(r, s, false),
+            |r, s| batch(r, s, true),
+        ];
+        // From (0, 0.3, −4) at the unit sphere: hits and misses.
+        let unit = Sphere::new(Vec3::ZERO, 1.0);
+        let rays = fan(Vec3::new(0.0, 0.3, -4.0), |i, j| {
+            Vec3::new(
+                (i % 4 * 4 + j) as f32 / 16.0 - 0.5,
+                (i / 4) as f32 / 4.0 - 0.5,
+                1.0,
+            )
+        });
+        let s = Sphere4::splat(&unit);
+        assert!(
+            rays.iter()
+                .any(|r| intersect(r, &s).class.to_array().contains(&TWO))
+        );
+        let lone = crate::Ray::new(Vec3::new(0.0, 0.5, 0.0), Vec3::X * 1e-40);
+        let want = SphereHit::Two(f32::NEG_INFINITY, f32::INFINITY);
+        assert_eq!(reference::intersect(&lone, &unit), want);
+        let mut dirty: Vec<_> = with_subnormal_rays(&rays, lone)
+            .into_iter()
+            .map(|r| (r, s))
+            .collect();
+        for v in 0..4 {
+            let mut s = s;
+            let x = if v < 3 {
+                &mut s.center[v]
+            } else {
+                &mut s.radius
+            };
+            *x = with_lane(*x, v, -1e-40);
+            dirty.push((rays[4..7].to_vec(), s));
+        }
+        assert_packets_keep_their_paths(paths, &[(rays, s)], &dirty);
     }
 }
