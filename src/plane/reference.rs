@@ -398,4 +398,21 @@ mod tests {
         }
         assert_eq!(seen, 512);
     }
+
+    /// The full filter takes a line whose `n̂um` cancels past both passes
+    /// (by `2¹³`) and whose `d·n`, `2⁻⁴⁰`, is small but does not cancel:
+    /// [`stages::Terms::hopeless`] reads cancellation, not magnitude.
+    #[test]
+    fn a_small_d_dot_n_that_does_not_cancel_reaches_the_filter() {
+        let e = 2f32.powi(-20);
+        // n̂um = (2²⁰ + 2⁸)·2⁻²⁰ − 1 = 2⁻¹², against m̂_num ≈ 2.
+        let p = Plane::new(
+            Vec3::new(2f32.powi(20) + 256.0, -1.0, 0.0),
+            Vec3::new(e, 1.0, 0.0),
+        );
+        let r = Ray::new(Vec3::ZERO, Vec3::new(e, 0.0, 0.0));
+        let want = PlaneHit::Hit(2f32.powi(28));
+        assert_eq!(Ok(want), exact::intersect(&r, &p));
+        assert_eq!(intersect_staged(&r, &p), (want, Stage::Filter));
+    }
 }

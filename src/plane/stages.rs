@@ -769,6 +769,38 @@ mod tests {
         assert!(seen > 1000, "{seen}");
     }
 
+    /// The second pass's test for a parallel line scales with `shrink`:
+    /// `d·n = 0` exactly, and `n̂um = 12u` against `m̂_num ≈ 2` (`1 − 1 +
+    /// 12u`), between the bound `8u m̂_num` at 1 and at 1/2.
+    #[test]
+    fn the_second_passs_parallel_test_scales_with_shrink() {
+        let (o, d, n) = ([0.0; 3], [1.0, -1.0, 0.0], [1.0; 3]);
+        let a = [1.0, -1.0, 12.0 * U];
+        let at = |s| filter_compensated::<f64>(o, d, a, n, s);
+        assert!(at(1.0).den_zero && !at(1.0).parallel);
+        assert!(at(0.5).parallel && at(0.25).parallel);
+    }
+
+    /// The tight stage on lines with `d·n = 0` exactly (`d = (1, −1, 0)`,
+    /// `n = (1, 1, 1)`): in the plane, where `n̂um`, summed again with every
+    /// operation checked, is 0; and off it by `12u` in `n̂um` against `m̂_num
+    /// ≈ 2`, with `a − o` rounding (`1 − 10⁻³⁰`), so that only the bound
+    /// `E_num = 8u m̂_num` decides: parallel where the bound is halved, left
+    /// undecided at 1.
+    #[test]
+    fn the_tight_stage_settles_exact_zeros_of_d_dot_n() {
+        let (d, n) = ([1.0, -1.0, 0.0], [1.0; 3]);
+        let on = tight([0.0, 0.0, 3.0], d, [1.0, -1.0, 3.0], n, 1.0);
+        assert_eq!(on, Some(PlaneHit::InPlane));
+        let o = [f64::from(1e-30f32), 0.0, 0.0];
+        let a = [1.0, -1.0, 12.0 * U];
+        assert_eq!(tight(o, d, a, n, 0.5), Some(PlaneHit::Parallel));
+        assert_eq!(tight(o, d, a, n, 1.0), None);
+        // The same line off the plane by 1: parallel at any factor.
+        let a = [1.0, -1.0, 1.0];
+        assert_eq!(tight(o, d, a, n, 1.0), Some(PlaneHit::Parallel));
+    }
+
     proptest! {
         /// The paired-lane first pass is the generic one, bit for bit.
         #[test]
