@@ -538,25 +538,26 @@ pub fn results_stand<L: Real>(prone: bool) -> bool {
 }
 
 /// [`results_stand`] for a packet whose inputs, the `f32` lanes the kernel
-/// widens as it runs, are `inputs`. Under denormals-are-zero, results with
-/// no root 0 or subnormal stand too where no input is subnormal
-/// ([`any_subnormal4`]): DAZ reaches the filters only through a subnormal
-/// input, and their f64 arithmetic makes no subnormal ([`needs_probe`]).
-/// The inputs are scanned only under DAZ, so a renderer that runs with
-/// FTZ and DAZ on keeps the packet's fast path.
+/// widens as it runs, have no subnormal where `clean()` says so. Under
+/// denormals-are-zero, results with no root 0 or subnormal stand too for
+/// such a packet: DAZ reaches the filters only through a subnormal input,
+/// and their f64 arithmetic makes no subnormal ([`needs_probe`]).
+/// `clean` runs only under DAZ (a kernel passes a scan out of line,
+/// [`any_subnormal4`]), so a renderer that runs with FTZ and DAZ on keeps
+/// the packet's fast path, and one that does not pays nothing for it.
 ///
 /// ```
-/// use rayoracle::num::certify::packet_results_stand;
+/// use rayoracle::num::certify::{any_subnormal4, packet_results_stand};
 /// use wide::f32x4;
 /// let inputs = [f32x4::splat(1.0), f32x4::from([0.0, 1e-40, 2.0, 3.0])];
 /// // DAZ is off here: the subnormal input is read as it is.
-/// assert!(packet_results_stand::<f64>(&inputs, false));
-/// assert!(packet_results_stand::<f64>(&inputs, true));
+/// let clean = || !any_subnormal4(&inputs);
+/// assert!(packet_results_stand::<f64>(false, clean) && packet_results_stand::<f64>(true, clean));
 /// ```
 #[inline(always)]
-pub fn packet_results_stand<L: Real>(inputs: &[wide::f32x4], prone: bool) -> bool {
+pub fn packet_results_stand<L: Real>(prone: bool, clean: impl FnOnce() -> bool) -> bool {
     if L::denormals_are_zero() {
-        !prone && !any_subnormal4(inputs)
+        !prone && clean()
     } else {
         !prone || subnormals_work()
     }

@@ -141,7 +141,7 @@ pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
     intersect_in::<F64x4>(ray, p, |prone| {
-        packet_results_stand::<F64x4>(&ray.components(), prone)
+        packet_results_stand::<F64x4>(prone, || ray.clean())
     })
 }
 
@@ -164,7 +164,7 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
     #[target_feature(enable = "avx2,fma")]
     fn run(_: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
         intersect_in::<Avx4>(ray, p, |prone| {
-            packet_results_stand::<Avx4>(&ray.components(), prone)
+            packet_results_stand::<Avx4>(prone, || ray.clean())
         })
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.

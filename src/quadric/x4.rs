@@ -9,7 +9,8 @@ use super::{Quadric, QuadricHit, lanes, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{
-    BatchEnv, certify, certify_end, flush_prone4, narrow_exact, packet_results_stand, widen_lanes,
+    any_subnormal4, certify, certify_end, flush_prone4, narrow_exact, packet_results_stand,
+    results_stand, subnormals_work, widen_lanes,
 };
 use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::Ray4;
@@ -158,9 +159,7 @@ pub fn intersect(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
 /// ```
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
-    intersect_in::<F64x4>(ray, q, |prone| {
-        packet_results_stand::<F64x4>(&ray.components(), prone)
-    })
+    intersect_in::<F64x4>(ray, q)
 }
 
 /// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
@@ -181,9 +180,7 @@ pub fn intersect_baseline(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
 pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
     #[target_feature(enable = "avx2,fma")]
     fn run(_: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
-        intersect_in::<Avx4>(ray, q, |prone| {
-            packet_results_stand::<Avx4>(&ray.components(), prone)
-        })
+        intersect_in::<Avx4>(ray, q)
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.
     // Justified by the kernels bench figures in `crate::num::avx`.
@@ -214,7 +211,12 @@ pub fn intersect_packets(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
 /// [`intersect_packets`] over any eight-lane [`Real8`].
 #[inline(always)]
 fn packets_in<W: Real8>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
-    let env = BatchEnv::read::<W::Half>();
+    if W::Half::denormals_are_zero() {
+        return packets_under_daz(rays, q, out);
+    }
+    // Results 0 or subnormal stand only without FTZ.
+    let work = subnormals_work();
+    let env = |prone: bool| !prone || work;
     let k = q.lanes::<W::Half>();
     let t = W::twice;
     let k2 = [
@@ -237,28 +239,33 @@ fn packets_in<W: Real8>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
             W::widen3(&pk[0].origin, &pk[1].origin),
             W::widen3(&pk[0].dir, &pk[1].dir),
         );
-        // The quadrics' f64 lanes were widened exactly when packed: only
-        // the rays' components meet DAZ.
-        let clean = env.clean(&pk[0].components()) && env.clean(&pk[1].components());
-        let stands = |prone| env.stands(clean, prone);
         let c = lanes::classes(&k2, o2, d2, 1.0, 1.0);
-        if W::all(c.none) && clean {
+        if W::all(c.none) {
             o.fill(QuadricHit4::MISS);
             continue;
         }
         let (x, open) = decide_sorted(&c, lanes::sorted(&c, 1.0));
         if !W::all(!open) {
-            o[0] = quotients(&pk[0], q, stands);
-            o[1] = quotients(&pk[1], q, stands);
+            o[0] = quotients(&pk[0], q, env);
+            o[1] = quotients(&pk[1], q, env);
             continue;
         }
         let [x, y] = x.halves();
-        o[0] = finish(x, stands, &pk[0], q);
-        o[1] = finish(y, stands, &pk[1], q);
+        o[0] = finish(x, env, &pk[0], q);
+        o[1] = finish(y, env, &pk[1], q);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
-        let clean = env.clean(&one.components());
-        *o = intersect_in::<W::Half>(one, q, |prone| env.stands(clean, prone));
+        *o = packet::<W::Half>(one, q, env);
+    }
+}
+
+/// [`intersect_packets`] under DAZ, out of line: one packet at a time,
+/// as [`under_daz`] takes it.
+#[cold]
+#[inline(never)]
+fn packets_under_daz(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
+    for (r, o) in rays.iter().zip(out) {
+        *o = under_daz(r, q);
     }
 }
 
@@ -347,13 +354,39 @@ fn finish<L: Real4>(
     }
 }
 
-/// The kernel over any four-lane [`Real4`]. A packet whose every lane
-/// certainly misses needs no roots (their square root, division and
-/// bounds): a camera's coherent rays often come so. A packet with a lane
-/// the first pass leaves (α = 0, a root near 0 against the other, an `α̂`
-/// that cancels or a product out of range) takes [`quotients`] whole.
+/// The kernel over any four-lane [`Real4`]: with DAZ off, [`packet`];
+/// under DAZ, [`under_daz`], out of line, so that the common path holds
+/// no call for the scan of the inputs (and saves no register for it).
 #[inline(always)]
-fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit4 {
+fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
+    if L::denormals_are_zero() {
+        return under_daz(ray, q);
+    }
+    packet::<L>(ray, q, results_stand::<L>)
+}
+
+/// A packet under DAZ: the coefficients were widened exactly when packed,
+/// so where no ray component is subnormal, DAZ changes no value of the
+/// filters ([`packet_results_stand`]), and the packet takes [`packet`] on
+/// the baseline lanes (the same bits as any); otherwise no result stands,
+/// and every lane goes to the scalar stages.
+#[cold]
+#[inline(never)]
+fn under_daz(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
+    let clean = !any_subnormal4(&ray.components());
+    packet::<F64x4>(ray, q, |prone| {
+        packet_results_stand::<F64x4>(prone, || clean)
+    })
+}
+
+/// One packet on the lanes `L`, `env(prone)` saying whether its results
+/// stand. A packet whose every lane certainly misses needs no roots
+/// (their square root, division and bounds): a camera's coherent rays
+/// often come so. A packet with a lane the first pass leaves (α = 0, a
+/// root near 0 against the other, an `α̂` that cancels or a product out
+/// of range) takes [`quotients`] whole.
+#[inline(always)]
+fn packet<L: Real4>(ray: &Ray4, q: &Quadric4, env: impl Fn(bool) -> bool) -> QuadricHit4 {
     let k = q.lanes::<L>();
     let c = lanes::classes(
         &k,

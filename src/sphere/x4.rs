@@ -6,8 +6,8 @@ use super::{Sphere, SphereHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{
-    BatchEnv, certify, certify_end, certify_normal4, flush_prone4, packet_results_stand,
-    subnormals_work,
+    any_subnormal4, certify, certify_end, certify_normal4, flush_prone4, packet_results_stand,
+    results_stand, subnormals_work,
 };
 use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::class::{NONE, ONE, TWO};
@@ -116,9 +116,7 @@ pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 /// ```
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-    intersect_in::<F64x4>(ray, s, |prone| {
-        packet_results_stand::<F64x4>(&inputs(ray, s), prone)
-    })
+    intersect_in::<F64x4>(ray, s)
 }
 
 /// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
@@ -139,9 +137,7 @@ pub fn intersect_baseline(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
     #[target_feature(enable = "avx2,fma")]
     fn run(_: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-        intersect_in::<Avx4>(ray, s, |prone| {
-            packet_results_stand::<Avx4>(&inputs(ray, s), prone)
-        })
+        intersect_in::<Avx4>(ray, s)
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.
     // Justified by the kernels bench figures in `crate::num::avx`.
@@ -173,8 +169,12 @@ pub fn intersect_packets(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
 /// [`intersect_packets`] over any eight-lane [`Real8`].
 #[inline(always)]
 fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
-    let env = BatchEnv::read::<W::Half>();
-    let sphere = env.clean(&[s.center[0], s.center[1], s.center[2], s.radius]);
+    if W::Half::denormals_are_zero() {
+        return packets_under_daz(rays, s, out);
+    }
+    // Results 0 or subnormal stand only without FTZ.
+    let work = subnormals_work();
+    let env = |prone: bool| !prone || work;
     let w = W::Half::widen;
     let c2 = s.center.map(|x| W::twice(w(x)));
     let r2 = W::twice(w(s.radius));
@@ -186,20 +186,27 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
             W::widen3(&pk[0].origin, &pk[1].origin),
             W::widen3(&pk[0].dir, &pk[1].dir),
         );
-        let clean = sphere && env.clean(&pk[0].components()) && env.clean(&pk[1].components());
         let k = stages::classes(o2, d2, c2, r2, 1.0);
-        if W::all(k.miss) && clean {
+        if W::all(k.miss) {
             o.fill(SphereHit4::MISS);
             continue;
         }
         let [x, y] = decide_sorted(stages::sorted(k, 1.0)).halves();
-        let stands = |prone| env.stands(clean, prone);
-        o[0] = finish(x.packed(), clean, stands, &pk[0], s);
-        o[1] = finish(y.packed(), clean, stands, &pk[1], s);
+        o[0] = finish(x.packed(), true, env, &pk[0], s);
+        o[1] = finish(y.packed(), true, env, &pk[1], s);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
-        let clean = sphere && env.clean(&one.components());
-        *o = intersect_in::<W::Half>(one, s, |prone| env.stands(clean, prone));
+        *o = packet::<W::Half>(one, s, true, env);
+    }
+}
+
+/// [`intersect_packets`] under DAZ, out of line: one packet at a time,
+/// as [`under_daz`] takes it.
+#[cold]
+#[inline(never)]
+fn packets_under_daz(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
+    for (r, o) in rays.iter().zip(out) {
+        *o = under_daz(r, s);
     }
 }
 
@@ -406,11 +413,43 @@ fn finish_rest(env: impl FnOnce(bool) -> bool, ray: &Ray4, s: &Sphere4) -> Spher
     }
 }
 
-/// The kernel over any four-lane [`Real4`].
+/// The kernel over any four-lane [`Real4`]: with DAZ off, [`packet`];
+/// under DAZ, [`under_daz`], out of line, so that the common path holds
+/// no call for the scan of the inputs (and saves no register for it).
 #[inline(always)]
-fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl Fn(bool) -> bool) -> SphereHit4 {
+fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+    if L::denormals_are_zero() {
+        return under_daz(ray, s);
+    }
+    packet::<L>(ray, s, true, results_stand::<L>)
+}
+
+/// A packet under DAZ: where no input it widens is subnormal (the rays'
+/// components and the spheres'), DAZ changes no value of the filters
+/// ([`packet_results_stand`]), and the packet takes [`packet`] on the
+/// baseline lanes (the same bits as any); otherwise no result stands, and
+/// [`finish_rest`] settles every lane in the scalar stages.
+#[cold]
+#[inline(never)]
+fn under_daz(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+    let ([o0, o1, o2], [d0, d1, d2]) = (ray.origin, ray.dir);
+    let [c0, c1, c2] = s.center;
+    let clean = !any_subnormal4(&[o0, o1, o2, d0, d1, d2, c0, c1, c2, s.radius]);
+    packet::<F64x4>(ray, s, clean, |prone| {
+        packet_results_stand::<F64x4>(prone, || clean)
+    })
+}
+
+/// One packet on the lanes `L`: `stands` whether results with no root 0
+/// or subnormal stand, `env(prone)` for any.
+#[inline(always)]
+fn packet<L: Real4>(
+    ray: &Ray4,
+    s: &Sphere4,
+    stands: bool,
+    env: impl Fn(bool) -> bool,
+) -> SphereHit4 {
     let (o, d, c, r) = widened::<L>(ray, s);
-    let stands = env(false);
     let k = stages::classes(o, d, c, r, 1.0);
     // A packet whose every lane certainly misses needs no roots: coherent
     // rays, such as a camera's, often come so. The test is on the sign of
@@ -426,15 +465,6 @@ fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, env: impl Fn(bool) -> bool) -
         ray,
         s,
     )
-}
-
-/// The `f32` lanes a packet's kernel widens as it runs: the rays'
-/// components, then the spheres'.
-#[inline(always)]
-fn inputs(ray: &Ray4, s: &Sphere4) -> [f32x4; 10] {
-    let ([o0, o1, o2], [d0, d1, d2]) = (ray.origin, ray.dir);
-    let [c0, c1, c2] = s.center;
-    [o0, o1, o2, d0, d1, d2, c0, c1, c2, s.radius]
 }
 
 /// A packet's inputs in f64 lanes.
