@@ -287,8 +287,16 @@ const EXP_MIN: u64 = 1023 - 125;
 /// [`filter_relative`] from the [`first_terms`] already computed.
 #[inline(always)]
 pub(crate) fn relative_terms<L: Real>(x: &First<L>, shrink: f64) -> Relative<L> {
+    relative_terms_with(x, L::least_subnormal(), shrink)
+}
+
+/// [`relative_terms`] with `least` for [`Real::least_subnormal`]: a caller
+/// that has found DAZ off, or no input subnormal, may pass `2⁻¹⁴⁹` itself,
+/// and the pass then certifies under DAZ what it certifies without.
+#[inline(always)]
+pub(crate) fn relative_terms_with<L: Real>(x: &First<L>, least: L, shrink: f64) -> Relative<L> {
     // K, or 0 under DAZ; the largest f64 below 2⁻¹²⁵.
-    let k = L::least_subnormal() * L::splat(2f64.powi(159));
+    let k = least * L::splat(2f64.powi(159));
     let (k1, below) = (L::splat(K - 1.0), L::splat(2f64.powi(-125).next_down()));
     let t = x.num / x.den;
     Relative {

@@ -300,10 +300,22 @@ fn finish_full(
     ray: &Ray4,
     p: &Plane4,
 ) -> PlaneHit4 {
-    // Under DAZ the first pass certifies nothing. A packet with no input
-    // subnormal meets DAZ nowhere, and its second pass certifies as
-    // without it (`least` 2⁻¹⁴⁹, the value the probe gives there).
-    let least = F64x4::splat(if env(false) { 2f64.powi(-149) } else { 0.0 });
+    // Under DAZ the first pass certifies nothing. A packet whose rays have
+    // no subnormal component meets DAZ nowhere: the first pass again,
+    // with `least` the value the probe gives without DAZ, 2⁻¹⁴⁹, and the
+    // second pass with it for what that leaves.
+    let stands = env(false);
+    let least = F64x4::splat(if stands { 2f64.powi(-149) } else { 0.0 });
+    if stands && F64x4::denormals_are_zero() {
+        let (o, d, a, n) = widened::<F64x4>(ray, p);
+        let f = stages::relative_terms_with(&stages::first_terms(o, d, a, n), least, 1.0);
+        if F64x4::all(f.hit & certify_relative(f.t, f.r)) {
+            return PlaneHit4 {
+                class: i32x4::splat(ONE),
+                t: f.t.narrow(),
+            };
+        }
+    }
     let (class, t, done) = decide_full(hit, t, least, ray, p);
     // Where the results do not stand, no lane is done.
     let stands = env(flush_prone4(t));
