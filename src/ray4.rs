@@ -151,7 +151,7 @@ impl Ray4 {
     }
 
     /// The origins' components, then the directions'.
-    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+    #[cfg(any(feature = "plane", feature = "quadric"))]
     #[inline(always)]
     pub(crate) fn components(&self) -> [f32x4; 6] {
         let ([o0, o1, o2], [d0, d1, d2]) = (self.origin, self.dir);
@@ -160,8 +160,8 @@ impl Ray4 {
 
     /// Whether no component is subnormal
     /// ([`any_subnormal4`](crate::num::certify::any_subnormal4)): asked by
-    /// the x4 kernels only under DAZ, out of line.
-    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+    /// the plane's x4 kernel only under DAZ, out of line.
+    #[cfg(feature = "plane")]
     #[cold]
     #[inline(never)]
     pub(crate) fn clean(&self) -> bool {

@@ -586,18 +586,18 @@ pub fn any_subnormal4(inputs: &[wide::f32x4]) -> bool {
     any.any()
 }
 
-/// The floating-point environment as a batch of packets reads it, once:
-/// whether DAZ is on, and whether results 0 or subnormal stand (neither
-/// FTZ nor DAZ). Each packet's own inputs then say whether its other
-/// results stand ([`packet_results_stand`], per packet).
-#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+/// The floating-point environment as the plane's batch of packets reads
+/// it, once: whether DAZ is on, and whether results 0 or subnormal stand
+/// (neither FTZ nor DAZ). Each packet's own inputs then say whether its
+/// other results stand ([`packet_results_stand`], per packet).
+#[cfg(feature = "plane")]
 #[derive(Clone, Copy)]
 pub(crate) struct BatchEnv {
     daz: bool,
     work: bool,
 }
 
-#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+#[cfg(feature = "plane")]
 impl BatchEnv {
     /// Reads the environment, `L` picking the probe's encoding.
     #[inline(always)]
