@@ -157,16 +157,6 @@ impl Ray4 {
         let ([o0, o1, o2], [d0, d1, d2]) = (self.origin, self.dir);
         [o0, o1, o2, d0, d1, d2]
     }
-
-    /// Whether no component is subnormal
-    /// ([`any_subnormal4`](crate::num::certify::any_subnormal4)): asked by
-    /// the plane's x4 kernel only under DAZ, out of line.
-    #[cfg(feature = "plane")]
-    #[cold]
-    #[inline(never)]
-    pub(crate) fn clean(&self) -> bool {
-        !crate::num::certify::any_subnormal4(&self.components())
-    }
 }
 
 /// Runs `kernel` over `items` four at a time and appends one result per item

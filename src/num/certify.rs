@@ -586,44 +586,6 @@ pub fn any_subnormal4(inputs: &[wide::f32x4]) -> bool {
     any.any()
 }
 
-/// The floating-point environment as the plane's batch of packets reads
-/// it, once: whether DAZ is on, and whether results 0 or subnormal stand
-/// (neither FTZ nor DAZ). Each packet's own inputs then say whether its
-/// other results stand ([`packet_results_stand`], per packet).
-#[cfg(feature = "plane")]
-#[derive(Clone, Copy)]
-pub(crate) struct BatchEnv {
-    daz: bool,
-    work: bool,
-}
-
-#[cfg(feature = "plane")]
-impl BatchEnv {
-    /// Reads the environment, `L` picking the probe's encoding.
-    #[inline(always)]
-    pub(crate) fn read<L: Real>() -> BatchEnv {
-        let daz = L::denormals_are_zero();
-        BatchEnv {
-            daz,
-            work: !daz && subnormals_work(),
-        }
-    }
-
-    /// Whether results with no root 0 or subnormal stand for a packet
-    /// with these inputs: scanned only under DAZ.
-    #[inline(always)]
-    pub(crate) fn clean(self, inputs: &[wide::f32x4]) -> bool {
-        !self.daz || !any_subnormal4(inputs)
-    }
-
-    /// Whether a packet's results stand, from its [`clean`](Self::clean)
-    /// and whether a root is 0 or subnormal.
-    #[inline(always)]
-    pub(crate) fn stands(self, clean: bool, prone: bool) -> bool {
-        if prone { self.work } else { clean }
-    }
-}
-
 /// [`flush_prone`] over the lanes of an `f32x4`: whether any is 0 or
 /// subnormal. A NaN lane (no root) is not.
 ///

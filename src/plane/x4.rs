@@ -6,7 +6,8 @@ use super::{Plane, PlaneHit, reference, stages};
 #[cfg(target_arch = "x86_64")]
 use crate::num::avx::{Avx2, Avx4};
 use crate::num::certify::{
-    BatchEnv, certify_end, certify_relative, flush_prone4, packet_results_stand, widen_lanes,
+    any_subnormal4, certify_end, certify_relative, flush_prone4, packet_results_stand,
+    results_stand, subnormals_work, widen_lanes,
 };
 use crate::num::real::{F64x4, Real, Real4, Real8};
 use crate::ray4::class::{ALL, NONE, ONE};
@@ -140,9 +141,7 @@ pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 /// ```
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
-    intersect_in::<F64x4>(ray, p, |prone| {
-        packet_results_stand::<F64x4>(prone, || ray.clean())
-    })
+    intersect_in::<F64x4>(ray, p)
 }
 
 /// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
@@ -163,9 +162,7 @@ pub fn intersect_baseline(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
     #[target_feature(enable = "avx2,fma")]
     fn run(_: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
-        intersect_in::<Avx4>(ray, p, |prone| {
-            packet_results_stand::<Avx4>(prone, || ray.clean())
-        })
+        intersect_in::<Avx4>(ray, p)
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.
     // Justified by the kernels bench figures in `crate::num::avx`.
@@ -196,10 +193,13 @@ pub fn intersect_packets(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
 /// [`intersect_packets`] over any eight-lane [`Real8`].
 #[inline(always)]
 fn packets_in<W: Real8>(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
-    let env = BatchEnv::read::<W::Half>();
-    // The planes' f64 lanes were widened exactly when packed: only the
-    // rays' components meet DAZ, and only a packet the first pass leaves
-    // asks (as under DAZ, where it certifies nothing).
+    if W::Half::denormals_are_zero() {
+        return packets_under_daz(rays, p, out);
+    }
+    // Results 0 or subnormal stand only without FTZ; only a packet the
+    // first pass leaves asks.
+    let work = subnormals_work();
+    let env = |prone: bool| !prone || work;
     let (a, n) = (
         p.point.each_ref().map(W::Half::load),
         p.normal.each_ref().map(W::Half::load),
@@ -213,21 +213,24 @@ fn packets_in<W: Real8>(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
             W::widen3(&pk[0].origin, &pk[1].origin),
             W::widen3(&pk[0].dir, &pk[1].dir),
         );
-        let [x, y] = decide(o2, d2, a2, n2).halves();
-        o[0] = finish(x, stands(env, &pk[0]), &pk[0], p);
-        o[1] = finish(y, stands(env, &pk[1]), &pk[1], p);
+        let [x, y] = decide(o2, d2, a2, n2, LEAST).halves();
+        o[0] = finish(x, env, &pk[0], p);
+        o[1] = finish(y, env, &pk[1], p);
     }
     if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
         let (o1, d1) = (one.origin.map(W::Half::widen), one.dir.map(W::Half::widen));
-        *o = finish(decide(o1, d1, a, n), stands(env, one), one, p);
+        *o = finish(decide(o1, d1, a, n, LEAST), env, one, p);
     }
 }
 
-/// Whether a packet's results stand, for the batch: its rays' components
-/// scanned only where asked, under DAZ.
-#[inline(always)]
-fn stands(env: BatchEnv, ray: &Ray4) -> impl Fn(bool) -> bool + '_ {
-    move |prone| env.stands(env.clean(&ray.components()), prone)
+/// [`intersect_packets`] under DAZ, out of line: one packet at a time,
+/// as [`under_daz`] takes it.
+#[cold]
+#[inline(never)]
+fn packets_under_daz(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
+    for (r, o) in rays.iter().zip(out) {
+        *o = under_daz(r, p);
+    }
 }
 
 /// What the first pass decides, before any conversion: the hits it
@@ -246,20 +249,25 @@ impl<W: Real8> Decided<W> {
 }
 
 /// The first pass ([`stages::filter_relative`]) and its certificate
-/// over any [`Real`].
+/// over any [`Real`], with `least` for its probe of DAZ: the least
+/// subnormal itself where the caller has found DAZ off or no input
+/// subnormal, else 0, and the pass certifies nothing.
 #[inline(always)]
-fn decide<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3]) -> Decided<L> {
-    let f = stages::filter_relative(o, d, a, n, 1.0);
+fn decide<L: Real>(o: [L; 3], d: [L; 3], a: [L; 3], n: [L; 3], least: f64) -> Decided<L> {
+    let f = stages::relative_terms_with(&stages::first_terms(o, d, a, n), L::splat(least), 1.0);
     Decided {
         hit: f.hit & certify_relative(f.t, f.r),
         t: f.t,
     }
 }
 
+/// The least subnormal `f32`, `2⁻¹⁴⁹`, as [`decide`] takes it.
+const LEAST: f64 = f32::from_bits(1) as f64;
+
 /// The results of one packet; `env(prone)` says whether they stand in the
 /// floating-point environment, `prone` where a root is 0 or subnormal
-/// ([`packet_results_stand`]; asked only where the first pass leaves a
-/// lane).
+/// ([`results_stand`], or [`packet_results_stand`] under DAZ; asked only
+/// where the first pass leaves a lane).
 #[inline(always)]
 fn finish<L: Real4>(
     x: Decided<L>,
@@ -268,8 +276,7 @@ fn finish<L: Real4>(
     p: &Plane4,
 ) -> PlaneHit4 {
     let t = x.t.narrow();
-    // A root the first pass certifies is normal as an f32: not flush-prone;
-    // and under DAZ it certifies none.
+    // A root the first pass certifies is normal as an f32: not flush-prone.
     if L::all(x.hit) {
         return PlaneHit4 {
             class: i32x4::splat(ONE),
@@ -300,22 +307,10 @@ fn finish_full(
     ray: &Ray4,
     p: &Plane4,
 ) -> PlaneHit4 {
-    // Under DAZ the first pass certifies nothing. A packet whose rays have
-    // no subnormal component meets DAZ nowhere: the first pass again,
-    // with `least` the value the probe gives without DAZ, 2⁻¹⁴⁹, and the
-    // second pass with it for what that leaves.
-    let stands = env(false);
-    let least = F64x4::splat(if stands { 2f64.powi(-149) } else { 0.0 });
-    if stands && F64x4::denormals_are_zero() {
-        let (o, d, a, n) = widened::<F64x4>(ray, p);
-        let f = stages::relative_terms_with(&stages::first_terms(o, d, a, n), least, 1.0);
-        if F64x4::all(f.hit & certify_relative(f.t, f.r)) {
-            return PlaneHit4 {
-                class: i32x4::splat(ONE),
-                t: f.t.narrow(),
-            };
-        }
-    }
+    // The second pass's `least`: the least subnormal itself wherever the
+    // inputs stand (DAZ off, or no input subnormal), else 0, as the probe
+    // gives it under DAZ.
+    let least = F64x4::splat(if env(false) { LEAST } else { 0.0 });
     let (class, t, done) = decide_full(hit, t, least, ray, p);
     // Where the results do not stand, no lane is done.
     let stands = env(flush_prone4(t));
@@ -383,11 +378,37 @@ fn decide_full(
     (class, t, done)
 }
 
-/// The kernel over any four-lane [`Real4`].
+/// The kernel over any four-lane [`Real4`]: with DAZ off, the first pass
+/// and [`finish`]; under DAZ, [`under_daz`], out of line, so that the
+/// common path holds no call for the scan of the inputs.
 #[inline(always)]
-fn intersect_in<L: Real4>(ray: &Ray4, p: &Plane4, env: impl Fn(bool) -> bool) -> PlaneHit4 {
+fn intersect_in<L: Real4>(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+    if L::denormals_are_zero() {
+        return under_daz(ray, p);
+    }
     let (o, d, a, n) = widened::<L>(ray, p);
-    finish(decide(o, d, a, n), env, ray, p)
+    finish(decide(o, d, a, n, LEAST), results_stand::<L>, ray, p)
+}
+
+/// A packet under DAZ. The planes' lanes were widened exactly when
+/// packed, so DAZ meets only the rays' components. Where none is
+/// subnormal, DAZ changes no value of the passes, and the first pass runs
+/// on the baseline lanes (the same bits as any) with `least` the least
+/// subnormal itself ([`stages::relative_terms_with`]), as without DAZ,
+/// where its probe reads 0; [`finish_full`] then takes what it leaves.
+/// Otherwise no result stands, and every lane goes to the scalar stages.
+#[cold]
+#[inline(never)]
+fn under_daz(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+    let clean = !any_subnormal4(&ray.components());
+    let (o, d, a, n) = widened::<F64x4>(ray, p);
+    let x = decide(o, d, a, n, if clean { LEAST } else { 0.0 });
+    finish(
+        x,
+        |prone| packet_results_stand::<F64x4>(prone, || clean),
+        ray,
+        p,
+    )
 }
 
 /// A packet's inputs in f64 lanes.
@@ -472,7 +493,7 @@ mod tests {
     /// lanes decided.
     fn packet_passes(r4: &Ray4, p4: &Plane4) -> ([PlaneHit; 4], [bool; 4]) {
         let (o, d, a, n) = widened::<F64x4>(r4, p4);
-        let first = decide(o, d, a, n);
+        let first = decide(o, d, a, n, LEAST);
         let hit = F64x4::mask_i32(first.hit).to_bitmask();
         let least = F64x4::least_subnormal();
         let (class, t, done) = decide_full(hit, cast(first.t.narrow()), least, r4, p4);
@@ -519,7 +540,7 @@ mod tests {
         .map(|d| crate::Ray::new(Vec3::new(0.3, 0.1, 0.7), d));
         let (r4, p4) = (Ray4::from_rays(rays), Plane4::splat(&p));
         let (o, d, a, n) = widened::<F64x4>(&r4, &p4);
-        let (first, full) = (decide(o, d, a, n), stages::filter(o, d, a, n, 1.0));
+        let (first, full) = (decide(o, d, a, n, LEAST), stages::filter(o, d, a, n, 1.0));
         assert_eq!(first.hit.lanes(), [false, true, true, true]);
         assert_eq!(full.hit.lanes(), [true; 4]);
         let want = rays.map(|r| reference::intersect(&r, &p));
@@ -622,7 +643,7 @@ mod tests {
         let c = stages::filter_compensated(o, d, a, n, 1.0);
         let second = c.relative.hit & certify_relative(c.relative.t, c.relative.r);
         assert_eq!(second.lanes(), [false; 4]);
-        assert_eq!(decide(o, d, a, n).hit.lanes(), [false; 4]);
+        assert_eq!(decide(o, d, a, n, LEAST).hit.lanes(), [false; 4]);
         assert_eq!(packet_passes(&r4, &p4), (want, [true; 4]));
         assert_eq!(intersect(&r4, &p4).lanes(), want);
         // Hits each certified by a different set of passes, with the full
@@ -648,7 +669,10 @@ mod tests {
         let second = c.relative.hit & certify_relative(c.relative.t, c.relative.r);
         let f = stages::filter(o, d, a, n, 1.0);
         let full = f.hit & certify_end(f.t, f.r, f.a).0;
-        assert_eq!(decide(o, d, a, n).hit.lanes(), [true, false, false, false]);
+        assert_eq!(
+            decide(o, d, a, n, LEAST).hit.lanes(),
+            [true, false, false, false]
+        );
         assert_eq!(second.lanes(), [true, true, true, false]);
         assert_eq!(full.lanes(), [false, false, true, true]);
         let want = [0, 1, 2, 3].map(|i| reference::intersect(&rays[i], &planes[i]));
