@@ -1,6 +1,8 @@
 //! The run-time dispatch of the batch entry points
 //! (`intersect_packets` of the plane, the sphere and the quadric), written
-//! once: [`packets_dispatch!`](crate::num::batch::packets_dispatch).
+//! once: [`packets_dispatch!`](crate::num::batch::packets_dispatch); and
+//! the out-of-line copies of their packets' path under denormals-are-zero
+//! ([`daz_copies!`](crate::num::batch::daz_copies)).
 
 /// The body of a batch entry point `intersect_packets(rays, prim, out)`:
 /// `$packets_in`, generic over [`Real8`](crate::num::real::Real8), on one
@@ -37,6 +39,35 @@ macro_rules! packets_dispatch {
 }
 
 pub(crate) use packets_dispatch;
+
+/// A kernel's path under denormals-are-zero, `$under_daz_in`, generic over
+/// [`Real4`](crate::num::real::Real4), as two cold functions: `under_daz`
+/// on the baseline lanes, and `under_daz_avx2` on the AVX lanes, compiled
+/// for AVX2 and FMA and entered with the token that proves them, as the
+/// AVX copy of the kernel that calls it. Each kernel asks DAZ first and
+/// calls the one of its own copy, so the common path holds neither call's
+/// registers.
+macro_rules! daz_copies {
+    ($under_daz_in:ident, $P:ty, $H:ty) => {
+        /// The path under DAZ on the baseline lanes, out of line.
+        #[cold]
+        #[inline(never)]
+        fn under_daz(ray: &$crate::ray4::Ray4, p: &$P) -> $H {
+            $under_daz_in::<$crate::num::real::F64x4>(ray, p)
+        }
+
+        /// The path under DAZ on the AVX lanes, out of line.
+        #[cfg(target_arch = "x86_64")]
+        #[cold]
+        #[inline(never)]
+        #[target_feature(enable = "avx2,fma")]
+        fn under_daz_avx2(_: $crate::num::avx::Avx2, ray: &$crate::ray4::Ray4, p: &$P) -> $H {
+            $under_daz_in::<$crate::num::avx::Avx4>(ray, p)
+        }
+    };
+}
+
+pub(crate) use daz_copies;
 
 /// The rays of [`every_copy_agrees!`]: seven packets from one point below
 /// the origin, fanning out, so that each primitive's test meets more than

@@ -141,7 +141,7 @@ pub fn intersect(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 /// ```
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
-    intersect_in::<F64x4>(ray, p)
+    intersect_in::<F64x4>(ray, p, || under_daz(ray, p))
 }
 
 /// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
@@ -161,8 +161,8 @@ pub fn intersect_baseline(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 #[inline]
 pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
     #[target_feature(enable = "avx2,fma")]
-    fn run(_: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
-        intersect_in::<Avx4>(ray, p)
+    fn run(avx2: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+        intersect_in::<Avx4>(ray, p, || under_daz_avx2(avx2, ray, p))
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.
     // Justified by the kernels bench figures in `crate::num::avx`.
@@ -224,12 +224,13 @@ fn packets_in<W: Real8>(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
 }
 
 /// [`intersect_packets`] under DAZ, out of line: one packet at a time,
-/// as [`under_daz`] takes it.
+/// as [`intersect`] takes it there ([`under_daz_in`], on the AVX lanes
+/// where the CPU has them).
 #[cold]
 #[inline(never)]
 fn packets_under_daz(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
     for (r, o) in rays.iter().zip(out) {
-        *o = under_daz(r, p);
+        *o = intersect(r, p);
     }
 }
 
@@ -379,12 +380,13 @@ fn decide_full(
 }
 
 /// The kernel over any four-lane [`Real4`]: with DAZ off, the first pass
-/// and [`finish`]; under DAZ, [`under_daz`], out of line, so that the
-/// common path holds no call for the scan of the inputs.
+/// and [`finish`]; under DAZ, `daz`, the same copy's [`under_daz_in`] out
+/// of line, so that the common path holds no call for the scan of the
+/// inputs.
 #[inline(always)]
-fn intersect_in<L: Real4>(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+fn intersect_in<L: Real4>(ray: &Ray4, p: &Plane4, daz: impl FnOnce() -> PlaneHit4) -> PlaneHit4 {
     if L::denormals_are_zero() {
-        return under_daz(ray, p);
+        return daz();
     }
     let (o, d, a, n) = widened::<L>(ray, p);
     finish(decide(o, d, a, n, LEAST), results_stand::<L>, ray, p)
@@ -393,23 +395,24 @@ fn intersect_in<L: Real4>(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 /// A packet under DAZ. The planes' lanes were widened exactly when
 /// packed, so DAZ meets only the rays' components. Where none is
 /// subnormal, DAZ changes no value of the passes, and the first pass runs
-/// on the baseline lanes (the same bits as any) with `least` the least
-/// subnormal itself ([`stages::relative_terms_with`]), as without DAZ,
-/// where its probe reads 0; [`finish_full`] then takes what it leaves.
-/// Otherwise no result stands, and every lane goes to the scalar stages.
-#[cold]
-#[inline(never)]
-fn under_daz(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
+/// (the same bits on any lanes) with `least` the least subnormal itself
+/// ([`stages::relative_terms_with`]), as without DAZ, where its probe
+/// reads 0; [`finish_full`] then takes what it leaves. Otherwise no result
+/// stands, and every lane goes to the scalar stages.
+#[inline(always)]
+fn under_daz_in<L: Real4>(ray: &Ray4, p: &Plane4) -> PlaneHit4 {
     let clean = !any_subnormal4(&ray.components());
-    let (o, d, a, n) = widened::<F64x4>(ray, p);
+    let (o, d, a, n) = widened::<L>(ray, p);
     let x = decide(o, d, a, n, if clean { LEAST } else { 0.0 });
     finish(
         x,
-        |prone| packet_results_stand::<F64x4>(prone, || clean),
+        |prone| packet_results_stand::<L>(prone, || clean),
         ray,
         p,
     )
 }
+
+crate::num::batch::daz_copies!(under_daz_in, Plane4, PlaneHit4);
 
 /// A packet's inputs in f64 lanes.
 #[inline(always)]

@@ -159,7 +159,7 @@ pub fn intersect(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
 /// ```
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
-    intersect_in::<F64x4>(ray, q)
+    intersect_in::<F64x4>(ray, q, || under_daz(ray, q))
 }
 
 /// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
@@ -179,8 +179,8 @@ pub fn intersect_baseline(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
 #[inline]
 pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
     #[target_feature(enable = "avx2,fma")]
-    fn run(_: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
-        intersect_in::<Avx4>(ray, q)
+    fn run(avx2: Avx2, ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
+        intersect_in::<Avx4>(ray, q, || under_daz_avx2(avx2, ray, q))
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.
     // Justified by the kernels bench figures in `crate::num::avx`.
@@ -260,12 +260,13 @@ fn packets_in<W: Real8>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
 }
 
 /// [`intersect_packets`] under DAZ, out of line: one packet at a time,
-/// as [`under_daz`] takes it.
+/// as [`intersect`] takes it there ([`under_daz_in`], on the AVX lanes
+/// where the CPU has them).
 #[cold]
 #[inline(never)]
 fn packets_under_daz(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
     for (r, o) in rays.iter().zip(out) {
-        *o = under_daz(r, q);
+        *o = intersect(r, q);
     }
 }
 
@@ -355,28 +356,32 @@ fn finish<L: Real4>(
 }
 
 /// The kernel over any four-lane [`Real4`]: with DAZ off, [`packet`];
-/// under DAZ, [`under_daz`], out of line, so that the common path holds
-/// no call for the scan of the inputs (and saves no register for it).
+/// under DAZ, `daz`, the same copy's [`under_daz_in`] out of line, so
+/// that the common path holds no call for the scan of the inputs (and
+/// saves no register for it).
 #[inline(always)]
-fn intersect_in<L: Real4>(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
+fn intersect_in<L: Real4>(
+    ray: &Ray4,
+    q: &Quadric4,
+    daz: impl FnOnce() -> QuadricHit4,
+) -> QuadricHit4 {
     if L::denormals_are_zero() {
-        return under_daz(ray, q);
+        return daz();
     }
     packet::<L>(ray, q, results_stand::<L>)
 }
 
+crate::num::batch::daz_copies!(under_daz_in, Quadric4, QuadricHit4);
+
 /// A packet under DAZ: the coefficients were widened exactly when packed,
 /// so where no ray component is subnormal, DAZ changes no value of the
-/// filters ([`packet_results_stand`]), and the packet takes [`packet`] on
-/// the baseline lanes (the same bits as any); otherwise no result stands,
-/// and every lane goes to the scalar stages.
-#[cold]
-#[inline(never)]
-fn under_daz(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
+/// filters ([`packet_results_stand`]), and the packet takes [`packet`]
+/// (the same bits on any lanes); otherwise no result stands, and every
+/// lane goes to the scalar stages.
+#[inline(always)]
+fn under_daz_in<L: Real4>(ray: &Ray4, q: &Quadric4) -> QuadricHit4 {
     let clean = !any_subnormal4(&ray.components());
-    packet::<F64x4>(ray, q, |prone| {
-        packet_results_stand::<F64x4>(prone, || clean)
-    })
+    packet::<L>(ray, q, |prone| packet_results_stand::<L>(prone, || clean))
 }
 
 /// One packet on the lanes `L`, `env(prone)` saying whether its results

@@ -116,7 +116,7 @@ pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 /// ```
 #[inline]
 pub fn intersect_baseline(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-    intersect_in::<F64x4>(ray, s)
+    intersect_in::<F64x4>(ray, s, || under_daz(ray, s))
 }
 
 /// [`intersect`] on one AVX register per value, compiled for AVX2 and FMA
@@ -136,8 +136,8 @@ pub fn intersect_baseline(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 #[inline]
 pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
     #[target_feature(enable = "avx2,fma")]
-    fn run(_: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
-        intersect_in::<Avx4>(ray, s)
+    fn run(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+        intersect_in::<Avx4>(ray, s, || under_daz_avx2(avx2, ray, s))
     }
     // SAFETY: the token exists only where AVX2 and FMA were detected.
     // Justified by the kernels bench figures in `crate::num::avx`.
@@ -201,12 +201,13 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
 }
 
 /// [`intersect_packets`] under DAZ, out of line: one packet at a time,
-/// as [`under_daz`] takes it.
+/// as [`intersect`] takes it there ([`under_daz_in`], on the AVX lanes
+/// where the CPU has them).
 #[cold]
 #[inline(never)]
 fn packets_under_daz(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
     for (r, o) in rays.iter().zip(out) {
-        *o = under_daz(r, s);
+        *o = intersect(r, s);
     }
 }
 
@@ -414,29 +415,31 @@ fn finish_rest(env: impl FnOnce(bool) -> bool, ray: &Ray4, s: &Sphere4) -> Spher
 }
 
 /// The kernel over any four-lane [`Real4`]: with DAZ off, [`packet`];
-/// under DAZ, [`under_daz`], out of line, so that the common path holds
-/// no call for the scan of the inputs (and saves no register for it).
+/// under DAZ, `daz`, the same copy's [`under_daz_in`] out of line, so
+/// that the common path holds no call for the scan of the inputs (and
+/// saves no register for it).
 #[inline(always)]
-fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+fn intersect_in<L: Real4>(ray: &Ray4, s: &Sphere4, daz: impl FnOnce() -> SphereHit4) -> SphereHit4 {
     if L::denormals_are_zero() {
-        return under_daz(ray, s);
+        return daz();
     }
     packet::<L>(ray, s, true, results_stand::<L>)
 }
 
+crate::num::batch::daz_copies!(under_daz_in, Sphere4, SphereHit4);
+
 /// A packet under DAZ: where no input it widens is subnormal (the rays'
 /// components and the spheres'), DAZ changes no value of the filters
-/// ([`packet_results_stand`]), and the packet takes [`packet`] on the
-/// baseline lanes (the same bits as any); otherwise no result stands, and
-/// [`finish_rest`] settles every lane in the scalar stages.
-#[cold]
-#[inline(never)]
-fn under_daz(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
+/// ([`packet_results_stand`]), and the packet takes [`packet`] (the same
+/// bits on any lanes); otherwise no result stands, and [`finish_rest`]
+/// settles every lane in the scalar stages.
+#[inline(always)]
+fn under_daz_in<L: Real4>(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
     let ([o0, o1, o2], [d0, d1, d2]) = (ray.origin, ray.dir);
     let [c0, c1, c2] = s.center;
     let clean = !any_subnormal4(&[o0, o1, o2, d0, d1, d2, c0, c1, c2, s.radius]);
-    packet::<F64x4>(ray, s, clean, |prone| {
-        packet_results_stand::<F64x4>(prone, || clean)
+    packet::<L>(ray, s, clean, |prone| {
+        packet_results_stand::<L>(prone, || clean)
     })
 }
 
