@@ -895,6 +895,57 @@ mod tests {
     use crate::report::Catalogue;
     use crate::sphere::{Sphere, exact};
 
+    /// The sorted pass's bound is the derivation's, `r = 20u` and `a =
+    /// (8u m_b/â + ŝ(E_Δ + 2uΔ̂)/(âΔ̂))·SLACK` with `u` scaled by `shrink`,
+    /// on one lane (three divisions) and on four (one): over directions
+    /// from `2⁻²⁰` to `2²⁰` long, so that `â`, `Δ̂` and their product range
+    /// far from 1, where a wrong reciprocal or a product taken for a
+    /// quotient shows.
+    #[test]
+    fn the_sorted_pass_bound_is_the_derivations() {
+        use super::{SLACK, U, classes, filter_sorted};
+        use crate::num::real::{F64x4, Real};
+        let cases: [([f64; 3], f64); 3] = [
+            ([0.3, 0.2, -5.0], 1.0),
+            ([1e3, -2e3, 4e3], 7e2),
+            ([1e-3, 0.0, 0.5], 2e-3),
+        ];
+        let mut seen = 0;
+        for shrink in [1.0, 0.25] {
+            for e in (-20..=20).step_by(5) {
+                let l = 2f64.powi(e);
+                for (o, rad) in cases {
+                    let o = o.map(|x| x as f32 as f64);
+                    // Towards the centre, a little off it, `l` long.
+                    let n = (o[0] * o[0] + o[1] * o[1] + o[2] * o[2]).sqrt();
+                    let aim = [0.1 * rad - o[0], -o[1], 0.05 * rad - o[2]];
+                    let dir = aim.map(|x| (x * l / n) as f32 as f64);
+                    let (c, r) = ([0.0; 3], rad as f32 as f64);
+                    let k = classes::<f64>(o, dir, c, r, shrink);
+                    if !k.two {
+                        continue;
+                    }
+                    let u = U * shrink;
+                    let (a, disc) = (k.a, k.disc);
+                    let es = disc.sqrt() * (k.ed + 2.0 * u * disc) / (a * disc);
+                    let want = (8.0 * u * k.mb / a + es) * SLACK;
+                    let one = filter_sorted::<f64>(o, dir, c, r, shrink);
+                    let w = |v: [f64; 3]| v.map(F64x4::splat);
+                    let four = filter_sorted(w(o), w(dir), w(c), F64x4::splat(r), shrink);
+                    for (got, lanes) in [(one.a, "one"), (four.a.to_array()[0], "four")] {
+                        assert!(
+                            ((got - want) / want).abs() < 1e-14,
+                            "{lanes}, 2^{e}, R = {rad}, shrink {shrink}: {got:e}, not {want:e}"
+                        );
+                    }
+                    assert_eq!((one.r, four.r.to_array()[0]), (20.0 * u, 20.0 * u));
+                    seen += 1;
+                }
+            }
+        }
+        assert!(seen >= 40, "{seen}");
+    }
+
     /// The catalogue's sphere cases, with their families.
     fn catalogue() -> Vec<(String, Ray, Sphere)> {
         let mut cases = Vec::new();
