@@ -353,4 +353,95 @@ mod tests {
         }
         assert!(two > n / 10 && led > two * 9 / 10, "{two} {led}");
     }
+
+    /// The pass's bounds are the derivation's, computed here again from
+    /// the terms of α, β and γ: `E_α = 8u m_α`, `E_β = 12u m_β` (with
+    /// `m_β` counting the square terms twice), `E_Δ = u(28 m_β² + 88 m_α
+    /// m_γ)`, all with `u` scaled by `roots`; the classes against `shrink`
+    /// times these; and the roots' `r = (1 + 2⁻⁹)w·SLACK + 20u`, `w =
+    /// 2·SLACK·E_α/2|α̂|`, and `a = (1 + 2⁻⁹)SLACK(E_β/2|α̂| + ŝ(E_Δ +
+    /// 2uΔ̂)SLACK/|2α̂Δ̂|)`. On one lane and four, over lines whose
+    /// directions run from `2⁻²⁰` to `2²⁰` long, so that `α̂`, `Δ̂` and
+    /// their product range far from 1, with `roots` and `shrink` 1 or 1/4
+    /// apart: a slip in a term, a factor or a scale shows. The committed
+    /// cases lead with `w`, the class bound or `E_Δ` (above), so the other
+    /// terms are guarded here.
+    #[test]
+    fn the_pass_bounds_are_the_derivations() {
+        use crate::num::real::F64x4;
+        let quadrics: [[f64; 10]; 3] = [
+            [1.0, -1.0, 1.0, 0.1, 0.0, 0.05, 0.0, 0.2, 0.0, -0.5],
+            [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -4.0],
+            [2.0, 0.5, 1.0, 0.25, -0.5, 0.125, 1.0, -2.0, 0.5, -30.0],
+        ];
+        let close = |got: f64, want: f64, what: &str| {
+            let ok = got == want || ((got - want) / want).abs() < 1e-14;
+            assert!(ok, "{what}: {got:e}, not {want:e}");
+        };
+        let mut seen = 0;
+        for (shrink, roots) in [(1.0, 1.0), (0.25, 1.0), (1.0, 0.25)] {
+            for e in (-20..=20).step_by(5) {
+                let l = 2f64.powi(e);
+                for k in quadrics {
+                    let o: [f64; 3] = [0.3, 0.2, -5.0];
+                    let d = [-0.05 * l, 0.02 * l, l].map(|x| x as f32 as f64);
+                    // The terms, as the report's conditioning takes them,
+                    // β's square terms doubled.
+                    let (at, bt, gt) = crate::quadric::terms64(&k, &o, &d);
+                    let m = |t: &[f64]| t.iter().map(|x| x.abs()).sum::<f64>();
+                    let (ma, mb, mg) = (m(&at), m(&bt), m(&gt));
+                    let u = U * roots;
+                    let (ea, eb, ed) = (
+                        8.0 * u * ma,
+                        12.0 * u * mb,
+                        u * (28.0 * mb * mb + 88.0 * ma * mg),
+                    );
+                    let one = classes::<f64>(&k, o, d, shrink, roots);
+                    let w4 = |v: [f64; 3]| v.map(F64x4::splat);
+                    let four = classes(&k.map(F64x4::splat), w4(o), w4(d), shrink, roots);
+                    let (a1, s1) = (sorted(&one, roots), sorted(&four, roots));
+                    let lanes = [
+                        (
+                            one.alpha, one.disc, one.ea, one.eb, one.ed, one.two, a1.r, a1.a,
+                        ),
+                        (
+                            four.alpha.to_array()[0],
+                            four.disc.to_array()[0],
+                            four.ea.to_array()[0],
+                            four.eb.to_array()[0],
+                            four.ed.to_array()[0],
+                            four.two.lanes()[0],
+                            s1.r.to_array()[0],
+                            s1.a.to_array()[0],
+                        ),
+                    ];
+                    for (alpha, disc, got_ea, got_eb, got_ed, two, r, a) in lanes {
+                        let at = format!("2^{e}, {k:?}, shrink {shrink}, roots {roots}");
+                        close(got_ea, ea, &format!("E_α, {at}"));
+                        close(got_eb, eb, &format!("E_β, {at}"));
+                        close(got_ed, ed, &format!("E_Δ, {at}"));
+                        let quadratic = alpha.abs() > ea / roots * shrink;
+                        assert_eq!(two, quadratic && disc > ed / roots * shrink, "two, {at}");
+                        if !two {
+                            continue;
+                        }
+                        let (g, ia) = (1.0 + 2f64.powi(-9), 0.5 / alpha.abs());
+                        let w = 2.0 * SLACK * ea * ia;
+                        let p = 2.0 * alpha * disc;
+                        let in_range = p.abs() > 2f64.powi(-1000) && p.abs() < 2f64.powi(1000);
+                        let want_r = if w < 2f64.powi(-10) && in_range {
+                            w * g * SLACK + 20.0 * u
+                        } else {
+                            f64::INFINITY
+                        };
+                        close(r, want_r, &format!("r, {at}"));
+                        let es = disc.sqrt() * (ed + 2.0 * u * disc) * SLACK / p.abs();
+                        close(a, g * SLACK * (eb * ia + es), &format!("a, {at}"));
+                        seen += 1;
+                    }
+                }
+            }
+        }
+        assert!(seen >= 100, "{seen}");
+    }
 }
