@@ -378,13 +378,23 @@ mod tests {
             let ok = got == want || ((got - want) / want).abs() < 1e-14;
             assert!(ok, "{what}: {got:e}, not {want:e}");
         };
-        let mut seen = 0;
+        let o: [f64; 3] = [0.3, 0.2, -5.0];
+        let mut lines = Vec::new();
+        for e in (-20..=20).step_by(5) {
+            let l = 2f64.powi(e);
+            for k in quadrics {
+                lines.push((k, [-0.05 * l, 0.02 * l, l].map(|x| x as f32 as f64)));
+            }
+        }
+        // On x² − y² + z² = 0.5, α = 1 − 1 + 2⁻⁴⁰ exactly, from terms of
+        // 1: w ≈ 2⁻⁹ (2⁻¹¹ with `roots` 1/4), past the pass's limit 2⁻¹⁰,
+        // so r is infinite, with two roots all the same.
+        let cancelling = [1.0, -1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -0.5];
+        lines.push((cancelling, [1.0, 1.0, 2f64.powi(-20)]));
+        let (mut seen, mut past) = (0, 0);
         for (shrink, roots) in [(1.0, 1.0), (0.25, 1.0), (1.0, 0.25)] {
-            for e in (-20..=20).step_by(5) {
-                let l = 2f64.powi(e);
-                for k in quadrics {
-                    let o: [f64; 3] = [0.3, 0.2, -5.0];
-                    let d = [-0.05 * l, 0.02 * l, l].map(|x| x as f32 as f64);
+            for &(k, d) in &lines {
+                {
                     // The terms, as the report's conditioning takes them,
                     // β's square terms doubled.
                     let (at, bt, gt) = crate::quadric::terms64(&k, &o, &d);
@@ -416,7 +426,7 @@ mod tests {
                         ),
                     ];
                     for (alpha, disc, got_ea, got_eb, got_ed, two, r, a) in lanes {
-                        let at = format!("2^{e}, {k:?}, shrink {shrink}, roots {roots}");
+                        let at = format!("{d:?}, {k:?}, shrink {shrink}, roots {roots}");
                         close(got_ea, ea, &format!("E_α, {at}"));
                         close(got_eb, eb, &format!("E_β, {at}"));
                         close(got_ed, ed, &format!("E_Δ, {at}"));
@@ -435,6 +445,7 @@ mod tests {
                             f64::INFINITY
                         };
                         close(r, want_r, &format!("r, {at}"));
+                        past += usize::from(r == f64::INFINITY);
                         let es = disc.sqrt() * (ed + 2.0 * u * disc) * SLACK / p.abs();
                         close(a, g * SLACK * (eb * ia + es), &format!("a, {at}"));
                         seen += 1;
@@ -442,6 +453,7 @@ mod tests {
                 }
             }
         }
-        assert!(seen >= 100, "{seen}");
+        // The cancelling line, on one lane and four, at `roots` 1.
+        assert!(seen >= 100 && past == 4, "{seen} {past}");
     }
 }
