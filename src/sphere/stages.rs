@@ -903,47 +903,99 @@ mod tests {
     /// quotient shows.
     #[test]
     fn the_sorted_pass_bound_is_the_derivations() {
-        use super::{SLACK, U, classes, filter_sorted};
+        use super::{SLACK, U, filter_sorted};
         use crate::num::real::{F64x4, Real};
+        for ((shrink, o, dir, c, r), k) in two_root_lines() {
+            let u = U * shrink;
+            let (a, disc) = (k.a, k.disc);
+            let es = disc.sqrt() * (k.ed + 2.0 * u * disc) / (a * disc);
+            let want = (8.0 * u * k.mb / a + es) * SLACK;
+            let one = filter_sorted::<f64>(o, dir, c, r, shrink);
+            let w = |v: [f64; 3]| v.map(F64x4::splat);
+            let four = filter_sorted(w(o), w(dir), w(c), F64x4::splat(r), shrink);
+            for (got, lanes) in [(one.a, "one"), (four.a.to_array()[0], "four")] {
+                assert!(
+                    ((got - want) / want).abs() < 1e-14,
+                    "{lanes}, {o:?} {dir:?}, R = {r}, shrink {shrink}: {got:e}, not {want:e}"
+                );
+            }
+            assert_eq!((one.r, four.r.to_array()[0]), (20.0 * u, 20.0 * u));
+        }
+    }
+
+    /// A line for the bound tests: `(shrink, o, d, C, R)`.
+    type Line = (f64, [f64; 3], [f64; 3], [f64; 3], f64);
+
+    /// Lines for the bound tests whose two roots the classes certify,
+    /// with those classes: towards three spheres' centres from outside, a
+    /// little off, with directions from `2⁻²⁰` to `2²⁰` long, at `shrink`
+    /// 1 and 1/4.
+    fn two_root_lines() -> Vec<(Line, super::Classes<f64>)> {
         let cases: [([f64; 3], f64); 3] = [
             ([0.3, 0.2, -5.0], 1.0),
             ([1e3, -2e3, 4e3], 7e2),
             ([1e-3, 0.0, 0.5], 2e-3),
         ];
-        let mut seen = 0;
+        let mut lines = Vec::new();
         for shrink in [1.0, 0.25] {
             for e in (-20..=20).step_by(5) {
                 let l = 2f64.powi(e);
                 for (o, rad) in cases {
                     let o = o.map(|x| x as f32 as f64);
-                    // Towards the centre, a little off it, `l` long.
                     let n = (o[0] * o[0] + o[1] * o[1] + o[2] * o[2]).sqrt();
                     let aim = [0.1 * rad - o[0], -o[1], 0.05 * rad - o[2]];
                     let dir = aim.map(|x| (x * l / n) as f32 as f64);
                     let (c, r) = ([0.0; 3], rad as f32 as f64);
-                    let k = classes::<f64>(o, dir, c, r, shrink);
-                    if !k.two {
-                        continue;
+                    let k = super::classes::<f64>(o, dir, c, r, shrink);
+                    if k.two {
+                        lines.push(((shrink, o, dir, c, r), k));
                     }
-                    let u = U * shrink;
-                    let (a, disc) = (k.a, k.disc);
-                    let es = disc.sqrt() * (k.ed + 2.0 * u * disc) / (a * disc);
-                    let want = (8.0 * u * k.mb / a + es) * SLACK;
-                    let one = filter_sorted::<f64>(o, dir, c, r, shrink);
-                    let w = |v: [f64; 3]| v.map(F64x4::splat);
-                    let four = filter_sorted(w(o), w(dir), w(c), F64x4::splat(r), shrink);
-                    for (got, lanes) in [(one.a, "one"), (four.a.to_array()[0], "four")] {
-                        assert!(
-                            ((got - want) / want).abs() < 1e-14,
-                            "{lanes}, 2^{e}, R = {rad}, shrink {shrink}: {got:e}, not {want:e}"
-                        );
-                    }
-                    assert_eq!((one.r, four.r.to_array()[0]), (20.0 * u, 20.0 * u));
-                    seen += 1;
                 }
             }
         }
-        assert!(seen >= 40, "{seen}");
+        assert!(lines.len() >= 40, "{}", lines.len());
+        lines
+    }
+
+    /// The filter's bounds are the derivation's: `r₀ = 20u`, `a₀ =
+    /// E_q/â·SLACK`, and `t₁`'s from [`quotient_bound`](super::quotient_bound)
+    /// with `E_q = E_b + E_s + 2u|q̂|`, `E_b = 8u m_b`, `E_s =
+    /// E_Δ·SLACK/ŝ + 2uŝ` and `E_c = 10u f̂f + 2u|ĉ|`, `u` scaled by
+    /// `shrink`; on one lane (three divisions) and four (one), over the
+    /// lines of [`two_root_lines`].
+    #[test]
+    fn the_filters_bounds_are_the_derivations() {
+        use super::{SLACK, U, filter, quotient_bound};
+        use crate::num::real::{F64x4, Real};
+        let close = |got: f64, want: f64, what: &str| {
+            let ok = got == want || ((got - want) / want).abs() < 1e-14;
+            assert!(ok, "{what}: {got:e}, not {want:e}");
+        };
+        for ((shrink, o, dir, c, r), k) in two_root_lines() {
+            let u = U * shrink;
+            let s = k.disc.sqrt();
+            let q = -(k.b + s.copysign(k.b));
+            let eq = 8.0 * u * k.mb + (k.ed * SLACK / s + 2.0 * u * s) + 2.0 * u * q.abs();
+            let ec = 10.0 * u * k.ff + 2.0 * u * k.cq.abs();
+            let (r1, a1) = quotient_bound(eq, ec, 1.0 / q, 20.0 * u);
+            let one = filter::<f64>(o, dir, c, r, shrink);
+            let w = |v: [f64; 3]| v.map(F64x4::splat);
+            let four = filter(w(o), w(dir), w(c), F64x4::splat(r), shrink);
+            let at = format!("{o:?} {dir:?} R = {r}, shrink {shrink}");
+            let lane = |x: F64x4| x.to_array()[0];
+            for (got, lanes) in [
+                ([one.r0, one.a0, one.r1, one.a1], "one"),
+                (
+                    [lane(four.r0), lane(four.a0), lane(four.r1), lane(four.a1)],
+                    "four",
+                ),
+            ] {
+                close(got[0], 20.0 * u, &format!("r0, {lanes}, {at}"));
+                close(got[1], eq / k.a * SLACK, &format!("a0, {lanes}, {at}"));
+                close(got[2], r1, &format!("r1, {lanes}, {at}"));
+                close(got[3], a1, &format!("a1, {lanes}, {at}"));
+            }
+        }
     }
 
     /// The catalogue's sphere cases, with their families.
