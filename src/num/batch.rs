@@ -46,7 +46,8 @@ pub(crate) use packets_dispatch;
 /// for AVX2 and FMA and entered with the token that proves them, as the
 /// AVX copy of the kernel that calls it. Each kernel asks DAZ first and
 /// calls the one of its own copy, so the common path holds neither call's
-/// registers.
+/// registers. A third, `packets_under_daz`, takes a batch under DAZ
+/// through the kernel's `intersect`, one packet at a time.
 macro_rules! daz_copies {
     ($under_daz_in:ident, $P:ty, $H:ty) => {
         /// The path under DAZ on the baseline lanes, out of line.
@@ -63,6 +64,17 @@ macro_rules! daz_copies {
         #[target_feature(enable = "avx2,fma")]
         fn under_daz_avx2(_: $crate::num::avx::Avx2, ray: &$crate::ray4::Ray4, p: &$P) -> $H {
             $under_daz_in::<$crate::num::avx::Avx4>(ray, p)
+        }
+
+        /// `intersect_packets` under DAZ, out of line: one packet at a
+        /// time, as `intersect` takes it there (on the AVX lanes where the
+        /// CPU has them).
+        #[cold]
+        #[inline(never)]
+        fn packets_under_daz(rays: &[$crate::ray4::Ray4], p: &$P, out: &mut [$H]) {
+            for (r, o) in rays.iter().zip(out) {
+                *o = intersect(r, p);
+            }
         }
     };
 }

@@ -223,17 +223,6 @@ fn packets_in<W: Real8>(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
     }
 }
 
-/// [`intersect_packets`] under DAZ, out of line: one packet at a time,
-/// as [`intersect`] takes it there ([`under_daz_in`], on the AVX lanes
-/// where the CPU has them).
-#[cold]
-#[inline(never)]
-fn packets_under_daz(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
-    for (r, o) in rays.iter().zip(out) {
-        *o = intersect(r, p);
-    }
-}
-
 /// What the first pass decides, before any conversion: the hits it
 /// certified, and where it did, a value that rounds to the root's `f32`.
 struct Decided<L: Real> {

@@ -259,17 +259,6 @@ fn packets_in<W: Real8>(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
     }
 }
 
-/// [`intersect_packets`] under DAZ, out of line: one packet at a time,
-/// as [`intersect`] takes it there ([`under_daz_in`], on the AVX lanes
-/// where the CPU has them).
-#[cold]
-#[inline(never)]
-fn packets_under_daz(rays: &[Ray4], q: &Quadric4, out: &mut [QuadricHit4]) {
-    for (r, o) in rays.iter().zip(out) {
-        *o = intersect(r, q);
-    }
-}
-
 /// What the lanes decide, before any conversion.
 struct Decided<L: Real> {
     two: L::Mask,

@@ -200,17 +200,6 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
     }
 }
 
-/// [`intersect_packets`] under DAZ, out of line: one packet at a time,
-/// as [`intersect`] takes it there ([`under_daz_in`], on the AVX lanes
-/// where the CPU has them).
-#[cold]
-#[inline(never)]
-fn packets_under_daz(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
-    for (r, o) in rays.iter().zip(out) {
-        *o = intersect(r, s);
-    }
-}
-
 /// What the lanes decide, before any conversion: the certified two-root
 /// lanes, the lanes done, and, in the lanes `two`, values that round to
 /// the sorted roots' `f32` values (anything elsewhere: [`Decided::packed`]
