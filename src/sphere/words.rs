@@ -115,6 +115,26 @@ pub(crate) fn words_by<P: Product>(
     if !k.line() {
         return Some(SphereHit::None);
     }
+    let disc = discriminant::<P>(o, d, c, r);
+    let class = disc.shrunk(shrink);
+    if class.sign_known() && disc.hi < 0.0 {
+        return Some(SphereHit::None);
+    }
+    let [a, b, c] = k.quadratic();
+    if disc.is_zero() {
+        return quotient(-b, a, shrink).map(SphereHit::Tangent);
+    }
+    if !class.sign_known() {
+        return None;
+    }
+    let (t0, t1) = two_roots(a, b, c, disc.approx(), shrink)?;
+    Some(SphereHit::Two(t0, t1))
+}
+
+/// `Δ = aR² − |m|²` in two words, with its bound as derived in the
+/// [module](self), widened by [`SLACK`] and not shrunk.
+#[inline(always)]
+fn discriminant<P: Product>(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> Dd {
     let f = [
         two_sum(o[0], -c[0]),
         two_sum(o[1], -c[1]),
@@ -147,19 +167,7 @@ pub(crate) fn words_by<P: Product>(
         U * g.abs() + m.lo * m.lo + e * (2.0 * (m.hi.abs() + m.lo.abs()) + e)
     };
     disc.err = (disc.err + (lost(&m[0], g[0]) + lost(&m[1], g[1]) + lost(&m[2], g[2]))) * SLACK;
-    let class = disc.shrunk(shrink);
-    if class.sign_known() && disc.hi < 0.0 {
-        return Some(SphereHit::None);
-    }
-    let [a, b, c] = k.quadratic();
-    if disc.is_zero() {
-        return quotient(-b, a, shrink).map(SphereHit::Tangent);
-    }
-    if !class.sign_known() {
-        return None;
-    }
-    let (t0, t1) = two_roots(a, b, c, disc.approx(), shrink)?;
-    Some(SphereHit::Two(t0, t1))
+    disc
 }
 
 /// A sum in two words, `hi + lo`, within `u·run` of the exact sum of its
@@ -222,6 +230,117 @@ mod tests {
     use crate::hit::same_bits;
     use crate::sphere::{Sphere, exact, stages::filter};
     use glam::Vec3;
+
+    /// The words stage's bound on `Δ` is the derivation's
+    /// ([module](super)): `SLACK·(u Σ|x̂| + Σᵢ (u|ĝᵢ| + lᵢ² + Eᵢ(2|hᵢ| +
+    /// 2|lᵢ| + Eᵢ)))`, `Σ|x̂|` over the computed partial sums of `Δ`'s low
+    /// word (those of `ĝ₀ + ĝ₁` and `ĝ` among them) and `Eᵢ = u Σ|x̂|`
+    /// over those of `mᵢ`'s, recomputed from the derivation with either
+    /// product and compared bit for bit (the magnitudes are summed in the
+    /// stage's order). No committed case is led by these terms, so this is
+    /// what holds them to the derivation.
+    #[test]
+    fn the_words_bound_is_the_derivations() {
+        use crate::num::dd::{Fused, Product, two_sum};
+        use rand::{Rng, SeedableRng, rngs::SmallRng};
+        /// A sum in words with `Σ|x̂|` over its low word's partial sums,
+        /// added in the stage's order, so that the bits must agree.
+        struct Kept {
+            hi: f64,
+            lo: f64,
+            run: f64,
+        }
+        fn plus(x: Kept, y: Kept) -> Kept {
+            let (hi, e) = two_sum(x.hi, y.hi);
+            let l = x.lo + y.lo;
+            let lo = l + e;
+            let run = (x.run + y.run) + (l.abs() + lo.abs());
+            Kept { hi, lo, run }
+        }
+        /// The words and bound of `Δ`, and whether a moment's low word is
+        /// above `2⁻³⁰` of its leading one (its leading products cancel).
+        fn want<P: Product>(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> (Dd, bool) {
+            let exact = |x: f64, y: f64| {
+                let (hi, lo) = P::two_prod(x, y);
+                Kept { hi, lo, run: 0.0 }
+            };
+            let f = [0, 1, 2].map(|i| two_sum(o[i], -c[i]));
+            let split = f.iter().any(|f| f.1 != 0.0);
+            let m = [(1, 2), (2, 0), (0, 1)].map(|(j, k)| {
+                let m = plus(exact(f[j].0, d[k]), exact(-f[k].0, d[j]));
+                match split {
+                    true => plus(m, plus(exact(f[j].1, d[k]), exact(-f[k].1, d[j]))),
+                    false => m,
+                }
+            });
+            let rr = r * r;
+            let ar = plus(
+                plus(exact(d[0] * d[0], rr), exact(d[1] * d[1], rr)),
+                exact(d[2] * d[2], rr),
+            );
+            let sq = |i: usize| exact(-m[i].hi, m[i].hi);
+            let mut disc = plus(ar, plus(plus(sq(0), sq(1)), sq(2)));
+            let g = m.each_ref().map(|m| 2.0 * m.hi * m.lo);
+            let (g01, gs) = (g[0] + g[1], g[0] + g[1] + g[2]);
+            disc.lo -= gs;
+            disc.run += (g01.abs() + gs.abs()) + disc.lo.abs();
+            let lost: f64 = (0..3)
+                .map(|i| {
+                    let (h, l, e) = (m[i].hi, m[i].lo, U * m[i].run);
+                    U * g[i].abs() + l * l + e * (2.0 * h.abs() + 2.0 * l.abs() + e)
+                })
+                .sum();
+            let (hi, lo) = two_sum(disc.hi, disc.lo);
+            let err = SLACK * (U * disc.run + lost);
+            let cancels = m.iter().any(|m| m.lo.abs() > 2f64.powi(-30) * m.hi.abs());
+            (Dd { hi, lo, err }, cancels)
+        }
+        let mut rng = SmallRng::seed_from_u64(0x30d5);
+        let mut x = |scale: i32| {
+            let v: f32 = rng.random_range(-1.0..1.0);
+            (v * 2f32.powi(rng.random_range(-scale..=scale))) as f64
+        };
+        // Three kinds of line: centres from far wider binades than the
+        // origins, so that `f` often takes two words; origins and centres
+        // near integers, so that it takes one; and directions along `f`
+        // rounded to f32, past a small sphere, so that the moments cancel
+        // and their own bounds lead.
+        let mut count = [0; 3];
+        for i in 0..6000 {
+            let (o, c) = ([x(8), x(8), x(8)], [x(40), x(40), x(40)]);
+            let (o, c, d, r) = match i % 3 {
+                0 => (o, c, [x(20), x(20), x(20)], x(8).abs()),
+                1 => (
+                    o.map(|v| v.round() + 0.5),
+                    o.map(f64::round),
+                    [x(20), x(20), x(20)],
+                    x(8).abs(),
+                ),
+                _ => (
+                    o,
+                    c,
+                    [0, 1, 2].map(|i| (o[i] - c[i]) as f32 as f64),
+                    x(8).abs() * 2f64.powi(-30),
+                ),
+            };
+            let split = (0..3).any(|i| two_sum(o[i], -c[i]).1 != 0.0);
+            for (got, (want, cancels)) in [
+                (
+                    discriminant::<Dekker>(o, d, c, r),
+                    want::<Dekker>(o, d, c, r),
+                ),
+                (discriminant::<Fused>(o, d, c, r), want::<Fused>(o, d, c, r)),
+            ] {
+                let at = format!("{o:?} {d:?} {c:?} {r}");
+                assert_eq!((got.hi, got.lo), (want.hi, want.lo), "{at}");
+                assert_eq!(got.err, want.err, "{at}");
+                count[0] += usize::from(split && got.err > 0.0);
+                count[1] += usize::from(!split && got.err > 0.0);
+                count[2] += usize::from(cancels);
+            }
+        }
+        assert!(count.iter().all(|&n| n >= 1000), "{count:?}");
+    }
 
     /// Lines along z past the sphere of radius 5 whose centre is `−ε` in x
     /// and `∓ε` in y from the origin's `(3, 4)`, `ε = 2⁻⁶⁰`: `f = o − C`
