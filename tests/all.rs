@@ -10,6 +10,7 @@ mod careful_f32;
 mod determinism;
 mod far_quadric;
 mod fixtures;
+mod judge_edges;
 mod known_wrong;
 mod known_wrong_camera;
 mod known_wrong_lanes;

@@ -1,0 +1,312 @@
+//! The judge's edges: each place where a rule forgives an answer, or
+//! refuses one, tested on both sides, with the fault it names.
+#![cfg(all(feature = "plane", feature = "sphere"))]
+
+use glam::Vec3;
+use rayoracle::Ray;
+use rayoracle::check::rules::{self, Answer, Declared, Fault, Semantics};
+use rayoracle::plane::Plane;
+use rayoracle::sphere::Sphere;
+
+/// The fault `d` finds in `got` on a plane case, `None` if it passes.
+fn plane(d: &Declared, ray: &Ray, p: &Plane, got: Answer) -> Option<Fault> {
+    let (_, e) = rules::plane(ray, p).expect("finite");
+    rules::judge(d, &e, &got).fault
+}
+
+/// The fault `d` finds in `got` on a sphere case, `None` if it passes.
+fn sphere(d: &Declared, ray: &Ray, s: &Sphere, got: Answer) -> Option<Fault> {
+    let (_, e) = rules::sphere(ray, s).expect("finite");
+    rules::judge(d, &e, &got).fault
+}
+
+fn strict(s: Semantics) -> Declared {
+    Declared::correctly_rounded(s)
+}
+
+/// Where every `t` is a hit, a nearest hit needs no comparison, but a NaN
+/// is still a NaN, as a `t` or in a point.
+#[test]
+fn a_nan_fails_even_where_every_t_is_a_hit() {
+    let ground = Plane::new(Vec3::ZERO, Vec3::Y);
+    let along = Ray::new(Vec3::new(0.5, 0.0, 0.0), Vec3::X);
+    let d = strict(Semantics::NearestPositive);
+    assert_eq!(plane(&d, &along, &ground, Answer::Nearest(Some(2.0))), None);
+    let nan = [
+        Answer::Nearest(Some(f32::NAN)),
+        Answer::Point(Some(Vec3::new(f32::NAN, 0.0, 0.0))),
+    ];
+    for got in nan {
+        assert_eq!(plane(&d, &along, &ground, got), Some(Fault::NanRoot));
+    }
+}
+
+/// A ray exactly in a plane whose offset's terms are not 0 (`0.1 − 0.1`):
+/// a kernel that declares a band may compute the offset as not 0 and miss,
+/// or hit once; one that declares none may not.
+#[test]
+fn a_ray_in_the_plane_may_miss_within_a_band() {
+    let p = Plane::new(Vec3::new(0.0, 0.1, 0.0), Vec3::Y);
+    let along = Ray::new(Vec3::new(0.5, 0.1, 0.0), Vec3::X);
+    for s in [Semantics::WholeLine, "roots-in:0:10".parse().unwrap()] {
+        for got in [Answer::Roots(vec![]), Answer::Roots(vec![1.0])] {
+            assert_eq!(plane(&Declared::f32(s), &along, &p, got.clone()), None);
+            let strict = plane(&strict(s), &along, &p, got);
+            assert_eq!(strict, Some(Fault::NotEverywhere));
+        }
+    }
+}
+
+/// A solid whose origin is clearly outside: `t = 0` (inside) is wrong
+/// whatever band is declared; the nearest root is right.
+#[test]
+fn an_origin_far_outside_a_solid_is_outside_in_any_band() {
+    let (ray, s) = (
+        Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.5),
+    );
+    for d in [
+        Declared::f32(Semantics::Solid),
+        Declared::faithful(Semantics::Solid),
+        strict(Semantics::Solid),
+    ] {
+        assert_eq!(sphere(&d, &ray, &s, Answer::Nearest(Some(3.5))), None);
+        assert!(sphere(&d, &ray, &s, Answer::Nearest(Some(0.0))).is_some());
+        let origin = Answer::Point(Some(ray.origin));
+        assert!(sphere(&d, &ray, &s, origin).is_some());
+    }
+}
+
+/// An origin an ulp outside a solid's surface, whose sign a kernel with a
+/// band may get wrong: there `t = 0` and the nearest root both pass, as a
+/// `t` or as a point; without a band only the root does.
+#[test]
+fn an_origin_on_a_solids_surface_may_be_either_within_a_band() {
+    let z = -(1.5f32.next_up());
+    let (ray, s) = (
+        Ray::new(Vec3::new(0.0, 0.0, z), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.5),
+    );
+    let (_, e) = rules::sphere(&ray, &s).unwrap();
+    let root = e.roots.as_ref().unwrap()[0];
+    assert!(root > 0.0 && root < 1e-6, "{root}");
+    let f32 = Declared::f32(Semantics::Solid);
+    for got in [
+        Answer::Nearest(Some(0.0)),
+        Answer::Point(Some(ray.origin)),
+        Answer::Nearest(Some(root)),
+    ] {
+        assert_eq!(sphere(&f32, &ray, &s, got), None);
+    }
+    let d = strict(Semantics::Solid);
+    assert_eq!(sphere(&d, &ray, &s, Answer::Nearest(Some(root))), None);
+    assert!(sphere(&d, &ray, &s, Answer::Nearest(Some(0.0))).is_some());
+}
+
+/// An origin inside a solid: `t = 0`, as a `t` or as the origin's point,
+/// is the answer; a root ahead is [`Fault::Inside`].
+#[test]
+fn inside_a_solid_the_origin_is_the_hit_point() {
+    let (ray, s) = (
+        Ray::new(Vec3::new(0.0, 0.0, 0.5), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.5),
+    );
+    for d in [Declared::f32(Semantics::Solid), strict(Semantics::Solid)] {
+        assert_eq!(sphere(&d, &ray, &s, Answer::Nearest(Some(0.0))), None);
+        assert_eq!(sphere(&d, &ray, &s, Answer::Point(Some(ray.origin))), None);
+        let ahead = Answer::Point(Some(Vec3::new(0.0, 0.0, 1.5)));
+        assert_eq!(sphere(&d, &ray, &s, ahead), Some(Fault::Inside));
+        let ahead = Answer::Nearest(Some(1.0));
+        assert_eq!(sphere(&d, &ray, &s, ahead), Some(Fault::Inside));
+    }
+}
+
+/// A plane `10⁻³⁵` ahead of the origin, and one `10⁻³⁵` behind it (inputs
+/// not small integers): a root that near 0 may fall on either side, so a
+/// miss for the first and `t = 0` for the second pass even a correctly
+/// rounded declaration. Planes a whole root ahead and behind give no such
+/// excuse.
+#[test]
+fn a_root_within_1e_30_of_0_may_fall_either_side() {
+    let d = strict(Semantics::NearestPositive);
+    let ray = Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 0.5));
+    let at = |z: f32| Plane::new(Vec3::new(0.0, 0.0, z), Vec3::Z);
+    let (ahead, back) = (at(1e-35), at(-1e-35));
+    let (_, e) = rules::plane(&ray, &ahead).unwrap();
+    assert_eq!(e.roots, Some(vec![2e-35]));
+    assert_eq!(plane(&d, &ray, &ahead, Answer::Nearest(None)), None);
+    assert_eq!(plane(&d, &ray, &ahead, Answer::Nearest(Some(2e-35))), None);
+    assert_eq!(plane(&d, &ray, &back, Answer::Nearest(Some(0.0))), None);
+    assert_eq!(plane(&d, &ray, &back, Answer::Nearest(None)), None);
+    let zero = plane(&d, &ray, &at(-0.5), Answer::Nearest(Some(0.0)));
+    assert_eq!(zero, Some(Fault::NotPositive));
+    // A root 1 ahead is no excuse for a miss.
+    let missed = plane(&d, &ray, &at(0.5), Answer::Nearest(None));
+    assert_eq!(missed, Some(Fault::Missed));
+}
+
+/// The ends of a root's reach `r ± w` (`w` the allowed ulps times
+/// `ulp(r)`) against the open ends of a range: a root whose reach starts
+/// exactly at `t_min`, or ends exactly at `t_max`, is not surely inside,
+/// so a miss passes; a hair further in, it is, and a miss is
+/// [`Fault::Missed`].
+#[test]
+fn a_root_whose_reach_touches_an_end_may_be_missed() {
+    let d = Declared::f32(Semantics::NearestPositive);
+    let (ray, p) = (Ray::new(Vec3::ZERO, Vec3::Z), Plane::new(Vec3::Z, Vec3::Z));
+    let (_, e) = rules::plane(&ray, &p).unwrap();
+    let w = e.reach(&d, 1.0, e.kappa[0]);
+    assert!(w > 0.0 && w < 1e-5, "{w}");
+    let (lo, hi) = ((1.0 - w) as f32, (1.0 + w) as f32);
+    assert_eq!(
+        (f64::from(lo), f64::from(hi)),
+        (1.0 - w, 1.0 + w),
+        "exact ends"
+    );
+    let within = |lo: f32, hi: f32| {
+        let d = Declared {
+            semantics: Semantics::Range {
+                t_min: lo,
+                t_max: hi,
+            },
+            ..d
+        };
+        let (_, e) = rules::plane(&ray, &p).unwrap();
+        let judge = |got| rules::judge(&d, &e, &got).fault;
+        assert_eq!(judge(Answer::Nearest(Some(1.0))), None, "({lo}, {hi})");
+        judge(Answer::Nearest(None))
+    };
+    assert_eq!(within(lo, 10.0), None);
+    assert_eq!(within(0.0, hi), None);
+    assert_eq!(within(lo.next_down(), 10.0), Some(Fault::Missed));
+    assert_eq!(within(0.0, hi.next_up()), Some(Fault::Missed));
+}
+
+/// A root that overflows to `−∞` is outside any range with a finite
+/// `t_min`, and the fault says so.
+#[test]
+fn minus_infinity_is_below_a_finite_range() {
+    let (ray, s) = (
+        Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
+    let d = strict("roots-in:0:10".parse().unwrap());
+    let got = Answer::Roots(vec![f32::NEG_INFINITY, 4.0, 6.0]);
+    let fault = sphere(&d, &ray, &s, got);
+    assert_eq!(fault, Some(Fault::OutOfRange(f32::NEG_INFINITY)));
+}
+
+/// `εt² + t − 1` (ε = 2⁻²⁴) with both roots, about 1 and −2²⁴, in the
+/// range: a kernel whose band covers α may take it for 0 and answer the
+/// one root of `t − 1`; without a band, or answering a root near neither,
+/// it fails.
+#[cfg(feature = "quadric")]
+#[test]
+fn roots_in_a_range_may_drop_one_where_alpha_is_in_the_band() {
+    use rayoracle::quadric::Quadric;
+    let e = 1.0 - 2f32.powi(-24);
+    let q = Quadric::new([1.0, -e, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, -1.0]);
+    let ray = Ray::new(Vec3::ZERO, Vec3::ONE);
+    let (_, exact) = rules::quadric(&ray, &q).unwrap();
+    assert_eq!(exact.roots.as_ref().map(Vec::len), Some(2));
+    let s: Semantics = "roots-in:-1e9:10".parse().unwrap();
+    let judge = |d: Declared, t: f32| rules::judge(&d, &exact, &Answer::Roots(vec![t])).fault;
+    assert_eq!(judge(Declared::f32(s), 1.0), None);
+    assert!(judge(Declared::f32(s), 2.0).is_some());
+    assert!(judge(strict(s), 1.0).is_some());
+}
+
+/// A ray from `(0, 1 + 2⁻²³, −5.5)` along `(0, 0, 2)` misses the unit
+/// sphere by a margin within an f32 kernel's band: a hit point at the
+/// double root `t* = 2.75`, `(0, 1, 0)`, passes, because the point's `t`
+/// is `(p − o)·d / d·d` (with `|d| = 2`, not 1); a point past it, and any
+/// point without a band, is [`Fault::Spurious`].
+#[test]
+fn a_hit_point_near_a_tangent_is_judged_by_its_t() {
+    let (ray, s) = (
+        Ray::new(
+            Vec3::new(0.0, 1f32.next_up(), -5.5),
+            Vec3::new(0.0, 0.0, 2.0),
+        ),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
+    let (_, e) = rules::sphere(&ray, &s).unwrap();
+    assert_eq!(e.roots, Some(vec![]));
+    let f32 = Declared::f32(Semantics::NearestPositive);
+    assert!(e.in_band(&f32));
+    let at = |z: f32| Answer::Point(Some(Vec3::new(0.0, 1.0, z)));
+    assert_eq!(sphere(&f32, &ray, &s, at(0.0)), None);
+    assert_eq!(sphere(&f32, &ray, &s, at(0.5)), Some(Fault::Spurious));
+    let d = strict(Semantics::NearestPositive);
+    assert_eq!(sphere(&d, &ray, &s, at(0.0)), Some(Fault::Spurious));
+}
+
+/// A hit point's own rounding is allowed at the scale of its terms,
+/// `|oᵢ| + |t dᵢ|`, even to a correctly rounded kernel: from `z = −5` to the unit
+/// sphere (`t = 4`, the terms 5 and 4, so an ulp of 9) and from `z = 0`
+/// along `0.5` to a sphere at `z = 6` (`t = 10`, the terms 0 and 5), each
+/// point may be off by its terms' ulp, plus half an ulp of `t` along `d`,
+/// and no more.
+#[test]
+fn a_hit_points_rounding_is_allowed_at_its_terms_scale() {
+    let d = strict(Semantics::NearestPositive);
+    let at = |z: f32| Answer::Point(Some(Vec3::new(0.0, 0.0, z)));
+    let (ray, s) = (
+        Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
+    // 2⁻²¹ is within ulp(9) = 2⁻²⁰, and beyond ulp(5 − 4).
+    assert_eq!(sphere(&d, &ray, &s, at(-1.0 + 2f32.powi(-21))), None);
+    let (ray, s) = (
+        Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 0.5)),
+        Sphere::new(Vec3::new(0.0, 0.0, 6.0), 1.0),
+    );
+    // ulp(5) + ½ ulp(10) · 0.5 = 3 · 2⁻²².
+    assert_eq!(sphere(&d, &ray, &s, at(5.0 + 2f32.powi(-21))), None);
+    assert_eq!(
+        sphere(&d, &ray, &s, at(5.0 + 2f32.powi(-20))),
+        Some(Fault::Point(10.0))
+    );
+}
+
+/// A hit point is matched to a root in space, not by its `t`, so which
+/// roots may be in the range decides it: the point of a root surely
+/// outside the range, or of one whose interval `[a, b]` only touches an
+/// open end (`b = t_min`, `a = t_max`), fails.
+#[test]
+fn a_hit_point_of_a_root_outside_the_range_fails() {
+    let f32 = Declared::f32(Semantics::NearestPositive);
+    let within = |lo: f32, hi: f32| Declared {
+        semantics: Semantics::Range {
+            t_min: lo,
+            t_max: hi,
+        },
+        ..f32
+    };
+    let point = |z: f32| Answer::Point(Some(Vec3::new(0.0, 0.0, z)));
+    // Roots 4 and 6 in (5, 10): the point of 4 is not the hit.
+    let (ray, s) = (
+        Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
+    let d = within(5.0, 10.0);
+    assert_eq!(sphere(&d, &ray, &s, point(1.0)), None);
+    assert_eq!(sphere(&d, &ray, &s, point(-1.0)), Some(Fault::Point(6.0)));
+    // The root 1 with its interval ending exactly at either end.
+    let (ray, p) = (Ray::new(Vec3::ZERO, Vec3::Z), Plane::new(Vec3::Z, Vec3::Z));
+    let (_, e) = rules::plane(&ray, &p).unwrap();
+    let w = e.reach(&f32, 1.0, e.kappa[0]);
+    let (a, b) = ((1.0 - w) as f32, (1.0 + w) as f32);
+    assert_eq!(
+        (f64::from(a), f64::from(b)),
+        (1.0 - w, 1.0 + w),
+        "exact ends"
+    );
+    let judge = |d: Declared, got| rules::judge(&d, &e, &got).fault;
+    for d in [within(b, 10.0), within(0.0, a)] {
+        assert_eq!(judge(d, point(1.0)), Some(Fault::Spurious));
+        assert_eq!(judge(d, Answer::Point(None)), None);
+    }
+    assert_eq!(judge(within(b.next_down(), 10.0), point(1.0)), None);
+    assert_eq!(judge(within(0.0, a.next_up()), point(1.0)), None);
+}
