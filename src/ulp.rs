@@ -21,6 +21,28 @@ pub fn ordinal(x: f32) -> i64 {
     if b >> 31 == 1 { -mag } else { mag }
 }
 
+/// The float `n` positions from `x` on the [`ordinal`] line (`+0` at
+/// position 0), saturating at `±∞`; NaN stays NaN.
+///
+/// ```
+/// use rayoracle::ulp::step;
+/// assert_eq!(step(1.0, 1), 1.0 + f32::EPSILON);
+/// assert_eq!(step(1.0, -1), 1.0 - f32::EPSILON / 2.0);
+/// assert_eq!(step(f32::from_bits(1), -2), -f32::from_bits(1));
+/// assert_eq!(step(-0.0, 0).to_bits(), 0.0f32.to_bits());
+/// assert_eq!(step(f32::MAX, 5), f32::INFINITY);
+/// assert_eq!(step(-f32::MAX, i64::MIN), f32::NEG_INFINITY);
+/// ```
+pub fn step(x: f32, n: i64) -> f32 {
+    if x.is_nan() {
+        return x;
+    }
+    let inf = ordinal(f32::INFINITY);
+    let k = ordinal(x).saturating_add(n).clamp(-inf, inf);
+    let mag = f32::from_bits(k.unsigned_abs() as u32);
+    if k < 0 { -mag } else { mag }
+}
+
 /// The number of floats between `a` and `b` (0 if equal, `±0` equal), or
 /// `u64::MAX` if exactly one of them is NaN. Two NaNs are at distance 0.
 ///

@@ -241,6 +241,44 @@ fn a_hit_point_near_a_tangent_is_judged_by_its_t() {
     assert_eq!(sphere(&d, &ray, &s, at(0.0)), Some(Fault::Spurious));
 }
 
+/// A root `r = 2 − 2⁻²³` just below a power of two, and a range whose
+/// `t_min` is where its absolute reach `r + w` ends (`w` the allowed ulps
+/// times `ulp(r)`). The floats just above `t_min` are still within the
+/// allowed ulps of `r`, because ulps above 2 are twice as wide: answered
+/// as the nearest hit, they match `r`, and pass; one ulp further does not.
+#[test]
+fn a_root_below_a_power_of_two_reaches_as_far_as_its_ulps() {
+    use rayoracle::ulp::step;
+    let d = Declared::f32(Semantics::NearestPositive);
+    let r = 2.0 - 2f32.powi(-23);
+    let (ray, p) = (
+        Ray::new(Vec3::ZERO, Vec3::Z),
+        Plane::new(Vec3::new(0.0, 0.0, r), Vec3::Z),
+    );
+    let (_, e) = rules::plane(&ray, &p).unwrap();
+    assert_eq!(e.roots, Some(vec![r]));
+    let allowed = d.allowed_ulps(e.kappa[0]);
+    let w = e.reach(&d, r, e.kappa[0]);
+    assert_eq!(w, allowed * 2f64.powi(-23));
+    let n = allowed.floor() as i64;
+    let lo = (f64::from(r) + w) as f32;
+    assert!(f64::from(lo) <= f64::from(r) + w && lo > 2.0, "{lo}");
+    let d = Declared {
+        semantics: Semantics::Range {
+            t_min: lo,
+            t_max: 10.0,
+        },
+        ..d
+    };
+    let judge = |t: Option<f32>| rules::judge(&d, &e, &Answer::Nearest(t)).fault;
+    let last = step(r, n);
+    assert!(last > lo.next_up(), "{last} {lo}");
+    assert_eq!(judge(Some(lo.next_up())), None);
+    assert_eq!(judge(Some(last)), None);
+    assert_eq!(judge(Some(last.next_up())), Some(Fault::Spurious));
+    assert_eq!(judge(None), None);
+}
+
 /// A hit point's own rounding is allowed at the scale of its terms,
 /// `|oᵢ| + |t dᵢ|`, even to a correctly rounded kernel: from `z = −5` to the unit
 /// sphere (`t = 4`, the terms 5 and 4, so an ulp of 9) and from `z = 0`

@@ -125,7 +125,7 @@ use crate::plane::{self, Plane, PlaneHit};
 use crate::quadric::{self, Quadric, QuadricHit};
 #[cfg(feature = "sphere")]
 use crate::sphere::{self, Sphere, SphereHit};
-use crate::ulp::{ulp_of, ulps};
+use crate::ulp::{step, ulp_of, ulps};
 use glam::Vec3;
 use std::fmt;
 
@@ -1422,7 +1422,11 @@ struct Span<'a> {
 }
 
 impl Span<'_> {
-    /// Root `i`'s interval (its reach 0 where it is infinite).
+    /// Root `i`'s interval (its reach 0 where it is infinite). Where the
+    /// reach `w` is not 0, the interval also holds every float within the
+    /// allowed ulps of `r`, which [`RootJudged::ok`] takes as well: above
+    /// a power of two those reach past `r + w`. So an answer that matches
+    /// root `i` always lies in its interval.
     fn ends(&self, i: usize) -> (f64, f64) {
         let r = self.e.roots.as_deref().unwrap_or(&[])[i];
         let k = self.e.kappa.get(i).copied().unwrap_or(f64::INFINITY);
@@ -1431,7 +1435,14 @@ impl Span<'_> {
         } else {
             0.0
         };
-        (f64::from(r) - w, f64::from(r) + w)
+        let (a, b) = (f64::from(r) - w, f64::from(r) + w);
+        if w > 0.0 {
+            // Finite: a reach is 0 where the ulps allowed are not.
+            let n = self.d.allowed_ulps(k).floor() as i64;
+            (a.min(f64::from(step(r, -n))), b.max(f64::from(step(r, n))))
+        } else {
+            (a, b)
+        }
     }
 
     /// Whether root `i` may be inside the range.
