@@ -91,3 +91,29 @@ pub fn ulp_of(x: f64) -> f64 {
     let e = ((a.to_bits() >> 52) & 0x7ff) as i32 - 1023;
     2f64.powi(e - 23)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `step` walks the ordinal line: `n` steps from `x` land at
+    /// `ordinal(x) + n`, across zero and the subnormals, and stop at the
+    /// infinities; position 0 is `+0`, and NaN stays NaN.
+    #[test]
+    fn step_walks_the_ordinal_line() {
+        let inf = ordinal(f32::INFINITY);
+        let tiny = f32::from_bits(1);
+        for x in [0.0, -0.0, tiny, -tiny, 1.0, -2.0, f32::MAX, -f32::MAX] {
+            for n in -3..=3 {
+                let want = (ordinal(x) + n).clamp(-inf, inf);
+                assert_eq!(ordinal(step(x, n)), want, "{x} {n}");
+            }
+        }
+        assert_eq!(step(-0.0, 0).to_bits(), 0);
+        assert_eq!(step(tiny, -1).to_bits(), 0);
+        assert_eq!(step(-tiny, 1).to_bits(), 0);
+        assert!(step(f32::NAN, 1).is_nan());
+        assert_eq!(step(1.0, i64::MAX), f32::INFINITY);
+        assert_eq!(step(-1.0, i64::MIN), f32::NEG_INFINITY);
+    }
+}

@@ -55,6 +55,19 @@ fn a_ray_in_the_plane_may_miss_within_a_band() {
             assert_eq!(strict, Some(Fault::NotEverywhere));
         }
     }
+    // Along the ground every term of `d·n` and of the offset is 0: any
+    // kernel computes them exactly, so no band excuses a miss.
+    let (ground, along) = (
+        Plane::new(Vec3::ZERO, Vec3::Y),
+        Ray::new(Vec3::new(0.5, 0.0, 0.0), Vec3::X),
+    );
+    let miss = plane(
+        &Declared::f32(Semantics::WholeLine),
+        &along,
+        &ground,
+        Answer::Roots(vec![]),
+    );
+    assert_eq!(miss, Some(Fault::NotEverywhere));
 }
 
 /// A solid whose origin is clearly outside: `t = 0` (inside) is wrong
@@ -347,4 +360,147 @@ fn a_hit_point_of_a_root_outside_the_range_fails() {
     }
     assert_eq!(judge(within(b.next_down(), 10.0), point(1.0)), None);
     assert_eq!(judge(within(0.0, a.next_up()), point(1.0)), None);
+}
+
+/// The answer the gate expects of a solid: `t = 0` with the origin
+/// inside or on the surface, else the nearest root ahead; a range with
+/// the origin inside still expects its nearest root.
+#[test]
+fn a_solid_expects_zero_inside_and_the_nearest_root_outside() {
+    let s = Sphere::new(Vec3::ZERO, 1.5);
+    let expected = |o: Vec3, sem: Semantics| {
+        let (_, e) = rules::sphere(&Ray::new(o, Vec3::Z), &s).unwrap();
+        e.expected(&strict(sem))
+    };
+    let (inside, on, outside) = (
+        Vec3::new(0.0, 0.0, 0.5),
+        Vec3::new(0.0, 0.0, -1.5),
+        Vec3::new(0.0, 0.0, -5.0),
+    );
+    assert_eq!(
+        expected(inside, Semantics::Solid),
+        Answer::Nearest(Some(0.0))
+    );
+    assert_eq!(expected(on, Semantics::Solid), Answer::Nearest(Some(0.0)));
+    assert_eq!(
+        expected(outside, Semantics::Solid),
+        Answer::Nearest(Some(3.5))
+    );
+    let range = "range:0:10".parse().unwrap();
+    assert_eq!(expected(inside, range), Answer::Nearest(Some(1.0)));
+    assert_eq!(
+        expected(inside, Semantics::NearestPositive),
+        Answer::Nearest(Some(1.0))
+    );
+}
+
+/// A root's interval reaches `allowed · ulp(r)` even where the allowance
+/// is not a whole number of ulps: with the faithful allowance of `1 + ε`
+/// ulps, the root 1 reaches past `t_min = 1 + ulp`, so its hit point
+/// passes.
+#[test]
+fn a_roots_interval_reaches_its_whole_allowance() {
+    let d = Declared::faithful(Semantics::NearestPositive);
+    let (ray, p) = (Ray::new(Vec3::ZERO, Vec3::Z), Plane::new(Vec3::Z, Vec3::Z));
+    let (_, e) = rules::plane(&ray, &p).unwrap();
+    let allowed = d.allowed_ulps(e.kappa[0]);
+    assert!(allowed > 1.0 && allowed < 2.0, "{allowed}");
+    let d = Declared {
+        semantics: Semantics::Range {
+            t_min: 1f32.next_up(),
+            t_max: 10.0,
+        },
+        ..d
+    };
+    let point = Answer::Point(Some(Vec3::Z));
+    assert_eq!(rules::judge(&d, &e, &point).fault, None);
+}
+
+/// A root exactly at 0 has an infinite κ, so an f32 kernel is allowed any
+/// ulps on it, but no absolute reach: from a sphere's surface (roots 0
+/// and 2), the nearest hit is 2, and 1 is wrong, not a rounding of 0.
+#[test]
+fn a_root_at_zero_reaches_nowhere() {
+    let d = Declared::f32(Semantics::NearestPositive);
+    let (ray, s) = (
+        Ray::new(Vec3::new(0.0, 0.0, -1.0), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
+    let (_, e) = rules::sphere(&ray, &s).unwrap();
+    assert_eq!(e.roots, Some(vec![0.0, 2.0]));
+    assert_eq!(d.allowed_ulps(e.kappa[0]), f64::INFINITY);
+    assert_eq!(e.reach(&d, 0.0, e.kappa[0]), 0.0);
+    assert_eq!(
+        rules::judge(&d, &e, &Answer::Nearest(Some(2.0))).fault,
+        None
+    );
+    assert!(
+        rules::judge(&d, &e, &Answer::Nearest(Some(1.0)))
+            .fault
+            .is_some()
+    );
+}
+
+/// The mirror of [`a_root_below_a_power_of_two_reaches_as_far_as_its_ulps`]
+/// below 0: the root `−(2 − 2⁻²³)` reaches down past `r − w` by its
+/// ulps, which below −2 are twice as wide, so a hit just below a `t_max`
+/// at `r − w` matches it.
+#[test]
+fn a_negative_root_reaches_down_as_far_as_its_ulps() {
+    use rayoracle::ulp::step;
+    let d = Declared::f32(Semantics::NearestPositive);
+    let r = -(2.0 - 2f32.powi(-23));
+    let (ray, p) = (
+        Ray::new(Vec3::ZERO, Vec3::Z),
+        Plane::new(Vec3::new(0.0, 0.0, r), Vec3::Z),
+    );
+    let (_, e) = rules::plane(&ray, &p).unwrap();
+    assert_eq!(e.roots, Some(vec![r]));
+    let w = e.reach(&d, r, e.kappa[0]);
+    let hi = (f64::from(r) - w) as f32;
+    assert_eq!(f64::from(hi), f64::from(r) - w, "exact end");
+    let d = Declared {
+        semantics: Semantics::Range {
+            t_min: -10.0,
+            t_max: hi,
+        },
+        ..d
+    };
+    let n = d.allowed_ulps(e.kappa[0]).floor() as i64;
+    let judge = |t: f32| rules::judge(&d, &e, &Answer::Nearest(Some(t))).fault;
+    assert_eq!(judge(hi.next_down()), None);
+    assert_eq!(judge(step(r, -n)), None);
+    assert_eq!(judge(step(r, -n).next_down()), Some(Fault::Spurious));
+}
+
+/// Where a root's error is absolute it reaches `allowed · ulp(r)`: a
+/// linear root of a quadric (α = 0) whose β is computed well; but not a
+/// root next to a double root, whose error is not linear in the margin's.
+#[cfg(feature = "quadric")]
+#[test]
+fn a_root_reaches_where_its_error_is_absolute() {
+    use rayoracle::quadric::Quadric;
+    let d = Declared::f32(Semantics::WholeLine);
+    // x² + z − 1.5 along (0, 0, 1) from (0, 0, −1): α = 0, β = 1.
+    let q = Quadric::new([1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, -1.5]);
+    let ray = Ray::new(Vec3::new(0.0, 0.0, -1.0), Vec3::Z);
+    let (_, e) = rules::quadric(&ray, &q).unwrap();
+    assert_eq!(e.roots, Some(vec![2.5]));
+    let reach = e.reach(&d, 2.5, e.kappa[0]);
+    assert_eq!(reach, d.allowed_ulps(e.kappa[0]) * 2f64.powi(-22));
+    // Roots about 5 ± 3·10⁻⁷, one ulp either side of the double root 5:
+    // a faithful kernel's allowance there already covers the double root.
+    let r = 2f32.powi(-10);
+    let (ray, s) = (
+        Ray::new(Vec3::new(0.0, r * (1.0 - 2f32.powi(-24)), -5.0), Vec3::Z),
+        Sphere::new(Vec3::ZERO, r),
+    );
+    let (_, e) = rules::sphere(&ray, &s).unwrap();
+    let roots = e.roots.clone().unwrap();
+    assert_eq!(roots.len(), 2);
+    let d = Declared::faithful(Semantics::WholeLine);
+    for (i, &x) in roots.iter().enumerate() {
+        assert!((x - 5.0).abs() <= 5e-7, "{x}");
+        assert_eq!(e.reach(&d, x, e.kappa[i]), 0.0, "{x}");
+    }
 }
