@@ -621,6 +621,20 @@ fn sphere_as_quadric_with(
 mod tests {
     use super::*;
 
+    /// A root passes the strict check only with the exact root's bits.
+    #[test]
+    fn a_root_check_wants_the_bits() {
+        let r = |exact: f32, got: f32| RootCheck {
+            exact,
+            got,
+            ulps: crate::ulp::ulps(exact, got),
+            kappa: 1.0,
+        };
+        assert!(r(1.0, 1.0).ok());
+        assert!(!r(1.0, 1f32.next_up()).ok());
+        assert!(!r(0.0, -0.0).ok());
+    }
+
     /// The plane x = 2⁻¹⁰⁰ as a linear quadric (α = 0), from the origin
     /// along x: the root 2⁻¹⁰⁰ is checked, and a wrong class is a
     /// violation.

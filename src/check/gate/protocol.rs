@@ -361,3 +361,118 @@ fn f32s<const N: usize>(field: &str, raw: &RawValue) -> Result<[f32; N], String>
     }
     Ok(out)
 }
+
+#[cfg(all(test, feature = "plane", feature = "sphere", feature = "quadric"))]
+mod tests {
+    use super::*;
+    use crate::plane::Plane;
+    use crate::quadric::Quadric;
+    use crate::sphere::Sphere;
+
+    /// Each kind's whole-line classes with the root counts they take, and
+    /// the error for any other count or class, as data.
+    #[test]
+    fn each_class_takes_its_root_counts() {
+        let ray = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z);
+        let plane = Case::Plane(ray, Plane::new(Vec3::ZERO, Vec3::Z));
+        let sphere = Case::Sphere(ray, Sphere::new(Vec3::ZERO, 1.0));
+        let ball = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+        let quadric = Case::Quadric(ray, Quadric::new(ball));
+        let roots = |r: &[f32]| Ok(Reply::Answer(Answer::Roots(r.to_vec())));
+        let every = || Ok(Reply::Answer(Answer::Everywhere));
+        let err = |e: &str| Err(e.to_string());
+        let table: &[(&Case, &str, Result<Reply, String>)] = &[
+            (&plane, r#"{"class":"hit","roots":[5]}"#, roots(&[5.0])),
+            (
+                &plane,
+                r#"{"class":"hit","roots":[]}"#,
+                err(r#"class "hit" needs 1 roots, got 0"#),
+            ),
+            (&plane, r#"{"class":"parallel","roots":[]}"#, roots(&[])),
+            (
+                &plane,
+                r#"{"class":"parallel"}"#,
+                err(r#"class "parallel" needs "roots""#),
+            ),
+            (&plane, r#"{"class":"in_plane"}"#, every()),
+            (&plane, r#"{"class":"in_plane","roots":[]}"#, every()),
+            (
+                &plane,
+                r#"{"class":"in_plane","roots":[1]}"#,
+                err(r#"class "in_plane" takes no roots"#),
+            ),
+            (&sphere, r#"{"class":"none","roots":[]}"#, roots(&[])),
+            (
+                &sphere,
+                r#"{"class":"none","roots":[4]}"#,
+                err(r#"class "none" needs 0 roots, got 1"#),
+            ),
+            (&sphere, r#"{"class":"tangent","roots":[5]}"#, roots(&[5.0])),
+            (
+                &sphere,
+                r#"{"class":"tangent","roots":[5,5]}"#,
+                roots(&[5.0, 5.0]),
+            ),
+            (
+                &sphere,
+                r#"{"class":"tangent","roots":[]}"#,
+                err(r#"class "tangent" needs 1 roots, got 0"#),
+            ),
+            (
+                &sphere,
+                r#"{"class":"all"}"#,
+                err(r#"class: "all" is not a sphere class (none, two, tangent)"#),
+            ),
+            (&quadric, r#"{"class":"all"}"#, every()),
+            (&quadric, r#"{"class":"one","roots":[4]}"#, roots(&[4.0])),
+            (
+                &quadric,
+                r#"{"class":"two","roots":[4,6]}"#,
+                roots(&[4.0, 6.0]),
+            ),
+            (
+                &quadric,
+                r#"{"class":"hit","roots":[4]}"#,
+                err(r#"class: "hit" is not a quadric class (none, one, two, tangent, all)"#),
+            ),
+            (&sphere, r#"{"roots":[4,6]}"#, roots(&[4.0, 6.0])),
+        ];
+        for (case, line, want) in table {
+            let got = read_answer(line, case).map(|a| a.reply);
+            assert_eq!(&got, want, "{line}");
+        }
+    }
+
+    /// Python's bare `NaN`, `Infinity` and `-Infinity` are read as numbers
+    /// outside strings only: a string's escaped quote does not end it, and
+    /// an escaped backslash does not escape the quote after it.
+    #[test]
+    fn bare_non_finite_numbers_are_read_outside_strings_only() {
+        let table = [
+            (r#"{"t": Infinity}"#, r#"{"t": "inf"}"#),
+            (r#"{"t": -Infinity}"#, r#"{"t": "-inf"}"#),
+            (r#"{"roots": [NaN, 1]}"#, r#"{"roots": ["nan", 1]}"#),
+            (r#"{"class": "NaN"}"#, r#"{"class": "NaN"}"#),
+            (r#"{"class": "not Infinity"}"#, r#"{"class": "not Infinity"}"#),
+            (r#"{"class": "é\"NaN"}"#, r#"{"class": "é\"NaN"}"#),
+            (
+                r#"{"class": "a\\", "t": NaN}"#,
+                r#"{"class": "a\\", "t": "nan"}"#,
+            ),
+        ];
+        for (line, want) in table {
+            assert_eq!(quote_non_finite(line), want, "{line}");
+        }
+        let case = Case::Sphere(
+            Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z),
+            Sphere::new(Vec3::ZERO, 1.0),
+        );
+        let t = |line: &str| match read_answer(line, &case).map(|a| a.reply) {
+            Ok(Reply::Answer(Answer::Nearest(Some(t)))) => t,
+            other => panic!("{line}: {other:?}"),
+        };
+        assert_eq!(t(r#"{"t": Infinity}"#), f32::INFINITY);
+        assert_eq!(t(r#"{"t": -Infinity}"#), f32::NEG_INFINITY);
+        assert!(t(r#"{"t": NaN}"#).is_nan());
+    }
+}

@@ -168,3 +168,77 @@ pub fn camera(family: &str) -> Option<BoxedStrategy<(CameraParams, [u32; 2])>> {
         .collect();
     (!cases.is_empty()).then(|| proptest::sample::select(cases).boxed())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::TestRunner;
+
+    /// `n` values of `s`.
+    fn draw<T: std::fmt::Debug>(s: BoxedStrategy<T>, runner: &mut TestRunner, n: usize) -> Vec<T> {
+        (0..n)
+            .map(|_| s.new_tree(runner).expect("a value").current())
+            .collect()
+    }
+
+    /// Every family of every kind, named once, has a strategy: a fixture
+    /// family's draws are its own compiled-in cases, which together are
+    /// every compiled-in case of the kind; a random family's are finite.
+    /// An unknown family has none.
+    #[test]
+    fn every_family_draws_its_own_cases() {
+        let mut runner = TestRunner::deterministic();
+        for kind in ["plane", "sphere", "quadric", "camera"] {
+            let names = families(kind);
+            let mut once = names.clone();
+            once.sort();
+            once.dedup();
+            assert_eq!(once.len(), names.len(), "{kind}: {names:?}");
+            assert!(names.iter().all(|n| n.starts_with(&format!("{kind}/"))));
+            assert!(names.iter().any(|n| n.contains("/random/")), "{kind}");
+            let fixed: Vec<&String> = names.iter().filter(|n| !n.contains("/random/")).collect();
+            assert!(fixed.len() >= 2, "{kind}");
+            let all = Gate::new(super::super::Declared::f32(
+                super::super::Semantics::WholeLine,
+            ))
+            .sources(kind, 0)
+            .0;
+            let total: usize = fixed.iter().map(|f| cases_of(f).len()).sum();
+            assert_eq!(total, all.len(), "{kind}");
+            for family in &names {
+                let own = cases_of(family);
+                let drawn: Vec<Case> = match kind {
+                    "plane" => draw(plane(family).unwrap(), &mut runner, 8)
+                        .into_iter()
+                        .map(|(r, p)| Case::Plane(r, p))
+                        .collect(),
+                    "sphere" => draw(sphere(family).unwrap(), &mut runner, 8)
+                        .into_iter()
+                        .map(|(r, s)| Case::Sphere(r, s))
+                        .collect(),
+                    "quadric" => draw(quadric(family).unwrap(), &mut runner, 8)
+                        .into_iter()
+                        .map(|(r, q)| Case::Quadric(r, q))
+                        .collect(),
+                    _ => draw(camera(family).unwrap(), &mut runner, 8)
+                        .into_iter()
+                        .map(|(p, px)| Case::Camera(p, px))
+                        .collect(),
+                };
+                for c in &drawn {
+                    if family.contains("/random/") {
+                        assert!(!format!("{c:?}").contains("NaN"), "{family}: {c:?}");
+                    } else {
+                        // By their printed values, so that a NaN input
+                        // matches itself.
+                        let same = |o: &Case| format!("{o:?}") == format!("{c:?}");
+                        assert!(own.iter().any(same), "{family}: {c:?}");
+                    }
+                }
+            }
+        }
+        assert!(sphere("sphere/no-such-family").is_none());
+        assert!(plane("sphere/far-tiny").is_none());
+    }
+}

@@ -341,6 +341,7 @@ mod tests {
         let out = gate.survey_sphere(&k, &cases);
         assert_eq!(out.len(), 1);
         let f = &out[0];
+        assert_eq!(f.family, "f");
         assert_eq!((f.cases, f.hits, f.max_ulps, f.median_ulps), (5, 5, 4, 2));
         // 2 bits allow 3 ulps, and κ ≥ 1 adds 4 more: none fails.
         assert_eq!(f.failures, 0);
@@ -354,5 +355,57 @@ mod tests {
         assert_eq!(gate.survey_sphere(&k, &plane)[0].cases, 0);
         let q = |_: &Ray, _: &crate::quadric::Quadric| Answer::Nearest(None);
         assert_eq!(gate.survey_quadric(&q, &cases)[0].cases, 0);
+    }
+
+    /// A kernel that never hits, surveyed over every plane and quadric
+    /// family: a row per family, in order, with every case counted, wrong
+    /// misses, and no hit; `wrong` sums its three columns.
+    #[test]
+    fn a_kernel_that_never_hits_misses_in_every_kind() {
+        let gate = Gate::new(super::super::Declared::f32(
+            super::super::Semantics::NearestPositive,
+        ))
+        .budget(8);
+        let never = |_: &Ray, _: &Plane| Answer::Nearest(None);
+        let never_q = |_: &Ray, _: &crate::quadric::Quadric| Answer::Nearest(None);
+        let (planes, quadrics) = (gate.cases("plane"), gate.cases("quadric"));
+        for (out, families) in [
+            (gate.survey_plane(&never, &planes), &planes),
+            (gate.survey_quadric(&never_q, &quadrics), &quadrics),
+        ] {
+            assert_eq!(out.len(), families.len());
+            assert!(out.iter().zip(families).all(|(s, f)| s.family == f.0));
+            assert!(out.iter().any(|s| s.wrong_misses > 0));
+            assert!(out.iter().all(|s| s.hits == 0 && s.wrong_hits == 0));
+            assert!(out.iter().map(|s| s.cases).sum::<usize>() > 0);
+        }
+        let s = FamilyStats {
+            wrong_hits: 2,
+            wrong_misses: 1,
+            other: 1,
+            ..Default::default()
+        };
+        assert_eq!(s.wrong(), 4);
+    }
+
+    /// The Markdown table: a header, and a row per family, with "–" for
+    /// the ulps of a family with no hit compared.
+    #[test]
+    fn the_markdown_table_has_a_row_per_family() {
+        let row = |hits| FamilyStats {
+            family: "sphere/x".into(),
+            cases: 3,
+            wrong_hits: 1,
+            hits,
+            max_ulps: 7,
+            median_ulps: 2,
+            ..Default::default()
+        };
+        let t = markdown(&[row(0), row(2)]);
+        let lines: Vec<&str> = t.lines().collect();
+        assert_eq!(lines.len(), 4, "{t}");
+        assert!(lines[0].starts_with("| family | cases |"));
+        assert_eq!(lines[2], "| sphere/x | 3 | 0 | 1 | 0 | 0 | 0 | – | – |");
+        assert_eq!(lines[3], "| sphere/x | 3 | 0 | 1 | 0 | 0 | 2 | 7 | 2 |");
     }
 }
