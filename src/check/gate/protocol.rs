@@ -453,7 +453,10 @@ mod tests {
             (r#"{"t": -Infinity}"#, r#"{"t": "-inf"}"#),
             (r#"{"roots": [NaN, 1]}"#, r#"{"roots": ["nan", 1]}"#),
             (r#"{"class": "NaN"}"#, r#"{"class": "NaN"}"#),
-            (r#"{"class": "not Infinity"}"#, r#"{"class": "not Infinity"}"#),
+            (
+                r#"{"class": "not Infinity"}"#,
+                r#"{"class": "not Infinity"}"#,
+            ),
             (r#"{"class": "é\"NaN"}"#, r#"{"class": "é\"NaN"}"#),
             (
                 r#"{"class": "a\\", "t": NaN}"#,
