@@ -1437,7 +1437,7 @@ impl Span<'_> {
         };
         let (a, b) = (f64::from(r) - w, f64::from(r) + w);
         if w > 0.0 {
-            // Finite: a reach is 0 where the ulps allowed are not.
+            // Saturates where the allowance is infinite, and so is `w`.
             let n = self.d.allowed_ulps(k).floor() as i64;
             (a.min(f64::from(step(r, -n))), b.max(f64::from(step(r, n))))
         } else {
