@@ -504,3 +504,107 @@ fn a_root_reaches_where_its_error_is_absolute() {
         assert_eq!(e.reach(&d, x, e.kappa[i]), 0.0, "{x}");
     }
 }
+
+/// Near a tangent, within a band, each root of the other class must lie
+/// within `√(2(|margin| + band·scale))·a^(−3/2)` of the double root. From
+/// `(0, 1 − 2⁻²⁴, −5)` along `(0, 0, 2)` to the unit sphere, the exact
+/// roots are two near the double root 2.5, the margin is about `2⁻¹⁹`
+/// and the band about `5.5·10⁻¹²`, so under `f32` (scale `2²⁰`) the reach
+/// is about `4.9·10⁻⁴`: one root at 2.5 or `4·10⁻⁴` past it passes,
+/// `6·10⁻⁴` past it is [`Fault::Stray`].
+#[test]
+fn a_tangents_roots_reach_as_far_as_its_band() {
+    let (ray, s) = (
+        Ray::new(
+            Vec3::new(0.0, 1.0 - 2f32.powi(-24), -5.0),
+            Vec3::new(0.0, 0.0, 2.0),
+        ),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
+    let (_, e) = rules::sphere(&ray, &s).unwrap();
+    assert_eq!(e.roots.as_ref().map(Vec::len), Some(2));
+    let f32 = Declared::f32(Semantics::WholeLine);
+    for t in [2.5, 2.5004, 2.4996] {
+        assert_eq!(sphere(&f32, &ray, &s, Answer::Roots(vec![t])), None, "{t}");
+    }
+    for t in [2.5006, 2.4994] {
+        let far = sphere(&f32, &ray, &s, Answer::Roots(vec![t]));
+        assert_eq!(far, Some(Fault::Stray(t)));
+    }
+}
+
+/// A ray parallel to a plane (`d·n = 0.5 − 0.5`) and `2⁻²⁴` off it (an
+/// offset `0.5 − (0.5 + 2⁻²⁴)`): with no vertex, a root answered within a
+/// band must make `(|d·n| band · |t| + offset band) · scale` reach the
+/// offset. Both bands are about `2⁻⁴⁴`, so at a scale of `2¹⁹` that holds
+/// from `|t| = 1 − 2⁻²⁴` on: `t = ±1` passes, `t = 0.5` is
+/// [`Fault::Stray`].
+#[test]
+fn a_root_of_a_parallel_ray_must_reach_the_offset() {
+    let (ray, p) = (
+        Ray::new(
+            Vec3::new(0.5, 0.5 + 2f32.powi(-24), 0.0),
+            Vec3::new(0.5, 0.5, 0.0),
+        ),
+        Plane::new(Vec3::ZERO, Vec3::new(1.0, -1.0, 0.0)),
+    );
+    let (_, e) = rules::plane(&ray, &p).unwrap();
+    assert_eq!((e.roots.clone(), e.margin), (Some(vec![]), 0.0));
+    let d = Declared {
+        band_scale: 2f64.powi(19),
+        ..Declared::f32(Semantics::WholeLine)
+    };
+    for t in [1.0, -1.0, 4.0] {
+        assert_eq!(plane(&d, &ray, &p, Answer::Roots(vec![t])), None, "{t}");
+    }
+    let near = plane(&d, &ray, &p, Answer::Roots(vec![0.5]));
+    assert_eq!(near, Some(Fault::Stray(0.5)));
+}
+
+/// A quadric whose α and β are exactly 0 from terms that are not
+/// (`x² − y² + 2⁻³⁰` from `(1, 1, 0)` along `(1, 1, 0)`: α = 1 − 1,
+/// β = 2 − 2, γ = 2⁻³⁰): no vertex, so a root answered within a band must
+/// make `(|α| band · t² + |β| band · |t| + γ band) · scale` reach γ. With
+/// bands `2⁻⁴³`, `2⁻⁴²` and about `2⁻⁴³` and a scale of `2¹⁰`, that is
+/// `(t + 1)² ≥ 8`: `t = 2` passes, `t = 1.75` is [`Fault::Stray`].
+#[cfg(feature = "quadric")]
+#[test]
+fn a_root_where_alpha_and_beta_vanish_must_reach_gamma() {
+    use rayoracle::quadric::Quadric;
+    let q = Quadric::new([1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 2f32.powi(-30)]);
+    let ray = Ray::new(Vec3::new(1.0, 1.0, 0.0), Vec3::new(1.0, 1.0, 0.0));
+    let (_, e) = rules::quadric(&ray, &q).unwrap();
+    assert_eq!(e.roots, Some(vec![]));
+    let d = Declared {
+        band_scale: 2f64.powi(10),
+        ..Declared::f32(Semantics::WholeLine)
+    };
+    let judge = |t: f32| rules::judge(&d, &e, &Answer::Roots(vec![t])).fault;
+    for t in [2.0, -2.0, 100.0] {
+        assert_eq!(judge(t), None, "{t}");
+    }
+    assert_eq!(judge(1.75), Some(Fault::Stray(1.75)));
+}
+
+/// A double root at `t* = −0` (`f·d = +0`, so `−f·d/a = −0`) and a nearest
+/// hit at `+0`: the same value, so within any reach, even under a
+/// declaration that allows no ulps (exact roots, a band on the class
+/// only). From `(0.75, 1, 0)` along z, the sphere of radius 1.25 about
+/// `(0, −2⁻³⁰, 0)` is missed by about `2⁻³⁰`, well within the band.
+#[test]
+fn a_hit_at_plus_zero_is_at_a_double_root_of_minus_zero() {
+    let (ray, s) = (
+        Ray::new(Vec3::new(0.75, 1.0, 0.0), Vec3::Z),
+        Sphere::new(Vec3::new(0.0, -(2f32.powi(-30)), 0.0), 1.25),
+    );
+    let d = Declared {
+        band_scale: 2f64.powi(20),
+        ..strict("range:-1:1".parse().unwrap())
+    };
+    let (_, e) = rules::sphere(&ray, &s).unwrap();
+    assert_eq!(e.roots, Some(vec![]));
+    assert!(e.in_band(&d) && d.allowed_ulps(1.0) == 0.0);
+    assert_eq!(sphere(&d, &ray, &s, Answer::Nearest(Some(0.0))), None);
+    let far = sphere(&d, &ray, &s, Answer::Nearest(Some(1e-3)));
+    assert_eq!(far, Some(Fault::Spurious));
+}

@@ -481,7 +481,7 @@ impl Exact {
     fn near_vertex(&self, d: &Declared, t: f32, below: bool) -> bool {
         let Some((c, k, s)) = self.vertex else {
             return match self.lies_on[..] {
-                [(0.0, au), (0.0, bu), (g, gu)] if self.alpha.is_some() => {
+                [(0.0, au), (0.0, bu), (g, gu)] => {
                     let (t, k) = (f64::from(t).abs(), d.band_scale);
                     (au * t * t + bu * t + gu) * k >= g.abs()
                 }
@@ -1679,6 +1679,59 @@ pub(crate) mod tests {
         assert_eq!(sphere_band(&ray, &s), 384.0 * 2f64.powi(-44));
     }
 
+    /// The sphere's double root, its κ and `a^(−3/2)` by hand: from
+    /// `o = (1, 2, 3)` along `d = (2, 0, 2)` to a sphere about `(0, 0, −1)`,
+    /// `f = (1, 2, 4)`, `a = 8` and `f·d = 10`, so `t* = −1.25`, and the
+    /// terms are `2 + 0 + 2|1 − 5|` (x) and `6 + 2 + 2|4 − 5|` (z):
+    /// `κ = 20 / (8 · 1.25)`. At `t = 1` they are `2 + 0 + 2|1 + 4|` and
+    /// `6 + 2 + 2|4 + 4|`: `κ = 36 / 8`. A tangent root at 0 (the origin at the tangent point)
+    /// has an infinite κ.
+    #[cfg(feature = "sphere")]
+    #[test]
+    fn sphere_vertex_by_hand() {
+        let ray = Ray::new(Vec3::new(1.0, 2.0, 3.0), Vec3::new(2.0, 0.0, 2.0));
+        let s = Sphere::new(Vec3::new(0.0, 0.0, -1.0), 1.0);
+        let v = sphere_vertex(&ray, &s, f64::NAN);
+        assert_eq!(v, (-1.25, 2.0, 8f64.powf(-1.5)));
+        assert_eq!(sphere_vertex(&ray, &s, 1.0).1, 4.5);
+        let (ray, s) = (Ray::new(Vec3::X, Vec3::Z), Sphere::new(Vec3::ZERO, 1.0));
+        let (_, e) = sphere(&ray, &s).unwrap();
+        assert_eq!((e.roots, e.kappa), (Some(vec![0.0]), vec![f64::INFINITY]));
+    }
+
+    /// `|o − C|² − R²` and its band `2⁻⁴⁴(2Σ(|oᵢ| + |Cᵢ|)|fᵢ| + R²)` by
+    /// hand: `o = (1, 2, 0)`, `C = (3, 0, 0)`, `R = 3`, `f = (−2, 2, 0)`:
+    /// `8 − 9`, and `2·4·2 + 2·2·2 + 9 = 33`.
+    #[cfg(feature = "sphere")]
+    #[test]
+    fn sphere_inside_by_hand() {
+        let ray = Ray::new(Vec3::new(1.0, 2.0, 0.0), Vec3::Z);
+        let s = Sphere::new(Vec3::new(3.0, 0.0, 0.0), 3.0);
+        assert_eq!(sphere_inside(&ray, &s), (-1.0, 33.0 * 2f64.powi(-44)));
+    }
+
+    /// The plane's κ and bands by hand: from `o = (1, 2, 3)` along `d =
+    /// (2, −1, 2)` to the plane through `a = (2, 0, 1)` with `n = (1, 2,
+    /// −1)`, `d·n = 2 − 2 − 2` and `(a − o)·n = 1 − 4 + 2`, so `κ = 6/2 +
+    /// 7/1`; the offset's band is `2⁻⁴⁴((2 + 1)·1 + (0 + 2)·2 + (1 + 3)·1)`
+    /// and the margin's `2⁻⁴⁴ · 6`. From `a` itself the offset's ratio is
+    /// `0/0`, which counts as 0; along the plane `d·n = 0` from terms that
+    /// are not, an infinite κ.
+    #[cfg(feature = "plane")]
+    #[test]
+    fn the_plane_condition_and_bands_by_hand() {
+        let (o, d) = (Vec3::new(1.0, 2.0, 3.0), Vec3::new(2.0, -1.0, 2.0));
+        let p = Plane::new(Vec3::new(2.0, 0.0, 1.0), Vec3::new(1.0, 2.0, -1.0));
+        let ray = Ray::new(o, d);
+        assert_eq!(plane_condition(&ray, &p), 10.0);
+        assert_eq!(offset_band(&ray, &p), 11.0 * 2f64.powi(-44));
+        assert_eq!(plane_band(&ray, &p), 6.0 * 2f64.powi(-44));
+        assert_eq!(plane_condition(&Ray::new(p.point, d), &p), 3.0);
+        let along = Ray::new(o, Vec3::new(2.0, -1.0, 0.0));
+        assert_eq!(plane_condition(&along, &p), f64::INFINITY);
+        assert!(plane_condition(&Ray::new(o, Vec3::new(f32::NAN, 0.0, 0.0)), &p).is_nan());
+    }
+
     /// `Σ |kᵢ dⱼ dₖ|` for `k = 1..6` and `d = (2, 3, 5)`:
     /// 4 + 18 + 75 + 4·6 + 5·10 + 6·15 = 261.
     #[cfg(feature = "quadric")]
@@ -1824,6 +1877,44 @@ pub(crate) mod tests {
         assert_eq!(quadric_kappa_at(&apex, &cone, &eq, 0.0), 0.0);
     }
 
+    /// A quadric with every coefficient in play, by hand: `k = (−3, ½, −1,
+    /// 2, 1, 3, ½, −3, 3, ½)` from `o = (½, 3, ½)` along `d = (1, 2, −1)`
+    /// has α = −5, β = −5/2, γ = 9/2, whose terms sum to 17, 40.5 and 24.5.
+    /// The double root is `t* = −¼`, at `p* = (¼, 5/2, ¾)`, where `g =
+    /// ∇F = (19/4, 9/4, 37/4)`, `Hd = (−3, 1, 9)` and F's terms sum to
+    /// 21.3125. So the frame's β is `Σ|gᵢdᵢ| = 18.5` and its γ is `21.3125 +
+    /// (|g| + |Hd|·√(21.3125/17))·|t*d|`. κ at `t = 1` is the one at the
+    /// origin, `(3·17 + 3·40.5 + 3·24.5) / (|2α + β|·1)`; at `t = −2` the
+    /// one about the vertex is less.
+    #[cfg(feature = "quadric")]
+    #[test]
+    fn the_quadric_frames_by_hand() {
+        let q = Quadric::new([-3.0, 0.5, -1.0, 2.0, 1.0, 3.0, 0.5, -3.0, 3.0, 0.5]);
+        let ray = Ray::new(Vec3::new(0.5, 3.0, 0.5), Vec3::new(1.0, 2.0, -1.0));
+        let eq = quadric::exact::quadratic(&ray, &q).unwrap();
+        let close = |x: f64, y: f64| (x - y).abs() <= 1e-14 * y.abs();
+        assert_eq!(alpha_terms(&ray, &q), 17.0);
+        assert_eq!(
+            quadric_band(&ray, &q),
+            (40.5 * 40.5 + 4.0 * 17.0 * 24.5) * 2f64.powi(-40)
+        );
+        assert_eq!(quadric_vertex(&ray, &q, &eq), (-0.25, 58.8, 0.1));
+        let v = vertex_frame(&ray, &q, &eq).unwrap();
+        let grad = 113.1875f64.sqrt() + 91f64.sqrt() * (21.3125f64 / 17.0).sqrt();
+        let gamma = 21.3125 + grad * 0.25 * 6f64.sqrt();
+        assert_eq!((v.t, v.alpha, v.beta), (-0.25, 17.0, 18.5));
+        assert!(close(v.gamma, gamma), "{} {gamma}", v.gamma);
+        let band = 18.5 * 18.5 * 2f64.powi(-40) + 17.0 * gamma * 2f64.powi(-42);
+        assert!(close(v.band(), band), "{} {band}", v.band());
+        let (_, e) = quadric(&ray, &q).unwrap();
+        assert!(close(e.band, band));
+        assert!(close(quadric_kappa_at(&ray, &q, &eq, 1.0), 246.0 / 12.5));
+        // About the vertex, s = |−2 − t*| = 1.75, over |2α(−2) + β|·2.
+        let at_vertex = (3.0 * 17.0 * 1.75 * 1.75 + 3.0 * 18.5 * 1.75 + 3.0 * gamma) / 35.0;
+        let k = quadric_kappa_at(&ray, &q, &eq, -2.0);
+        assert!(close(k, at_vertex), "{k} {at_vertex}");
+    }
+
     /// Two equal roots are a tangent only where there is a band: without
     /// one they are the other class.
     #[cfg(feature = "sphere")]
@@ -1838,6 +1929,7 @@ pub(crate) mod tests {
         assert!(judge(&Declared::faithful(Semantics::WholeLine), &e, &twice).passed());
         let cr = Declared::correctly_rounded(Semantics::WholeLine);
         assert_eq!(judge(&cr, &e, &twice).fault, Some(Fault::Class));
+        assert!(!judge(&cr, &e, &twice).passed());
         assert!(judge(&cr, &e, &Answer::Roots(vec![5.0])).passed());
     }
 
@@ -1870,6 +1962,12 @@ pub(crate) mod tests {
                 e.kappa[0]
             )
         );
+        // From the surface the first root is +0: −0 is 0 ulps from it, and
+        // the message says what differs.
+        let (_, e) = sphere(&Ray::new(-Vec3::Z, Vec3::Z), &s).unwrap();
+        let j = judge(&d, &e, &Answer::Roots(vec![-0.0, 2.0]));
+        let fault = j.fault.unwrap().to_string();
+        assert!(fault.starts_with("the sign of zero is not"), "{fault}");
     }
 
     /// A NaN camera component is out of any bound, and a +0 for the
