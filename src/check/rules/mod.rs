@@ -1877,40 +1877,45 @@ pub(crate) mod tests {
         assert_eq!(quadric_kappa_at(&apex, &cone, &eq, 0.0), 0.0);
     }
 
-    /// A quadric with every coefficient in play, by hand: `k = (−3, ½, −1,
-    /// 2, 1, 3, ½, −3, 3, ½)` from `o = (½, 3, ½)` along `d = (1, 2, −1)`
-    /// has α = −5, β = −5/2, γ = 9/2, whose terms sum to 17, 40.5 and 24.5.
-    /// The double root is `t* = −¼`, at `p* = (¼, 5/2, ¾)`, where `g =
-    /// ∇F = (19/4, 9/4, 37/4)`, `Hd = (−3, 1, 9)` and F's terms sum to
-    /// 21.3125. So the frame's β is `Σ|gᵢdᵢ| = 18.5` and its γ is `21.3125 +
-    /// (|g| + |Hd|·√(21.3125/17))·|t*d|`. κ at `t = 1` is the one at the
-    /// origin, `(3·17 + 3·40.5 + 3·24.5) / (|2α + β|·1)`; at `t = −2` the
-    /// one about the vertex is less.
+    /// A quadric with every coefficient in play, by hand: `k = (3/2, −3,
+    /// −3, 3/2, −3/2, −3/2, −3/2, 3/2, −5/2, 3)` from `o = (−3/2, −3, 3/2)`
+    /// along `d = (5, −3, 3)` has α = −48, β = −123, γ = −16.5, whose terms
+    /// sum to 150, 190.5 and 67.5. The double root is `t* = −41/32`, at
+    /// `p* = (−253/32, 27/32, −75/32)`, where `g = ∇F = (−327/16, −381/32,
+    /// 709/32)`, `Hd = (6, 21, −21)` and F's terms sum to `89667/512`. So
+    /// the frame's β is `Σ|gᵢdᵢ| = 1635/8` and its γ is `89667/512 + (|g| +
+    /// |Hd|·√(89667/512/150))·|t*d|`, with `|g|² = 537779/512` and `|t*d|²
+    /// = 72283/1024`. κ at `t = 1` is the one at the origin, `(3·150 +
+    /// 3·190.5 + 3·67.5) / (|2α + β|·1)`; at `t = −2` the one about the
+    /// vertex, with `s = 23/32`, is less. No two factors of these sums are
+    /// equal or opposite, so an operator changed in any of them changes a
+    /// result.
     #[cfg(feature = "quadric")]
     #[test]
     fn the_quadric_frames_by_hand() {
-        let q = Quadric::new([-3.0, 0.5, -1.0, 2.0, 1.0, 3.0, 0.5, -3.0, 3.0, 0.5]);
-        let ray = Ray::new(Vec3::new(0.5, 3.0, 0.5), Vec3::new(1.0, 2.0, -1.0));
+        let q = Quadric::new([1.5, -3.0, -3.0, 1.5, -1.5, -1.5, -1.5, 1.5, -2.5, 3.0]);
+        let ray = Ray::new(Vec3::new(-1.5, -3.0, 1.5), Vec3::new(5.0, -3.0, 3.0));
         let eq = quadric::exact::quadratic(&ray, &q).unwrap();
         let close = |x: f64, y: f64| (x - y).abs() <= 1e-14 * y.abs();
-        assert_eq!(alpha_terms(&ray, &q), 17.0);
-        assert_eq!(
-            quadric_band(&ray, &q),
-            (40.5 * 40.5 + 4.0 * 17.0 * 24.5) * 2f64.powi(-40)
-        );
-        assert_eq!(quadric_vertex(&ray, &q, &eq), (-0.25, 58.8, 0.1));
+        assert_eq!(alpha_terms(&ray, &q), 150.0);
+        let sums = 190.5 * 190.5 + 4.0 * 150.0 * 67.5;
+        assert_eq!(quadric_band(&ray, &q), sums * 2f64.powi(-40));
+        let kappa = 3.0 * (190.5 / 123.0 + 150.0 / 48.0);
+        assert_eq!(quadric_vertex(&ray, &q, &eq), (-1.28125, kappa, 0.5 / 48.0));
         let v = vertex_frame(&ray, &q, &eq).unwrap();
-        let grad = 113.1875f64.sqrt() + 91f64.sqrt() * (21.3125f64 / 17.0).sqrt();
-        let gamma = 21.3125 + grad * 0.25 * 6f64.sqrt();
-        assert_eq!((v.t, v.alpha, v.beta), (-0.25, 17.0, 18.5));
+        let f = 89667.0f64 / 512.0;
+        let grad = (537779.0f64 / 512.0).sqrt() + 918f64.sqrt() * (f / 150.0).sqrt();
+        let gamma = f + grad * (72283.0f64 / 1024.0).sqrt();
+        assert_eq!((v.t, v.alpha, v.beta), (-1.28125, 150.0, 204.375));
         assert!(close(v.gamma, gamma), "{} {gamma}", v.gamma);
-        let band = 18.5 * 18.5 * 2f64.powi(-40) + 17.0 * gamma * 2f64.powi(-42);
+        let band = 204.375 * 204.375 * 2f64.powi(-40) + 150.0 * gamma * 2f64.powi(-42);
         assert!(close(v.band(), band), "{} {band}", v.band());
         let (_, e) = quadric(&ray, &q).unwrap();
         assert!(close(e.band, band));
-        assert!(close(quadric_kappa_at(&ray, &q, &eq, 1.0), 246.0 / 12.5));
-        // About the vertex, s = |−2 − t*| = 1.75, over |2α(−2) + β|·2.
-        let at_vertex = (3.0 * 17.0 * 1.75 * 1.75 + 3.0 * 18.5 * 1.75 + 3.0 * gamma) / 35.0;
+        assert!(close(quadric_kappa_at(&ray, &q, &eq, 1.0), 1224.0 / 219.0));
+        // About the vertex, s = |−2 − t*|, over |2α(−2) + β|·2.
+        let s = 23.0 / 32.0;
+        let at_vertex = (3.0 * 150.0 * s * s + 3.0 * 204.375 * s + 3.0 * gamma) / 138.0;
         let k = quadric_kappa_at(&ray, &q, &eq, -2.0);
         assert!(close(k, at_vertex), "{k} {at_vertex}");
     }
