@@ -74,6 +74,39 @@ fn a_report_keeps_three_failures_a_family() {
         failing < r.families.len(),
         "some families have no hit to miss"
     );
+    // The budget holds, and the report says FAIL in each of its forms.
+    assert!(r.families.iter().all(|f| f.1 <= 8) && r.cases <= 8 * r.families.len());
+    assert!(!r.passed());
+    let failed: usize = r.families.iter().map(|f| f.2).sum();
+    let text = r.to_string();
+    assert!(text.contains(&format!("\n{}\n", r.failures[0])), "{text}");
+    assert!(
+        text.ends_with(&format!(
+            "\nFAIL: {} cases in {} families, {failed} failing in {failing} families",
+            r.cases,
+            r.families.len()
+        )),
+        "{text}"
+    );
+    let json = r.to_json();
+    assert_eq!(json["passed"], false);
+    assert_eq!(json["cases"], r.cases);
+    assert_eq!(json["stopped"], serde_json::Value::Null);
+    assert_eq!(
+        json["families"].as_array().map(Vec::len),
+        Some(r.families.len())
+    );
+    assert_eq!(json["families"][0]["family"], r.families[0].0.as_str());
+    assert_eq!(
+        json["failures"].as_array().map(Vec::len),
+        Some(r.failures.len())
+    );
+    let first = &r.failures[0];
+    assert_eq!(json["failures"][0]["family"], first.family.as_str());
+    assert_eq!(json["failures"][0]["eval_line"], first.eval_line.as_str());
+    assert_eq!(json["failures"][0]["why"], first.why.as_str());
+    assert_eq!(json["failures"][0]["expected"], first.expected.as_str());
+    assert_eq!(json["failures"][0]["got"], first.got.as_str());
 }
 
 #[test]
@@ -88,6 +121,11 @@ fn a_correct_kernel_fails_no_family() {
         r.failing_families()
     );
     assert!(r.cases > 100);
+    assert!(r.passed() && r.to_json()["passed"] == true);
+    assert!(
+        r.to_string()
+            .contains(&format!("\nPASS: {} cases in ", r.cases))
+    );
 }
 
 /// `n` cases a family for every kind, each kind with a stream of its own,
@@ -712,4 +750,91 @@ fn run_asks_one_batch_then_shrinks_each_family_by_name() {
         "no case asked after the batch"
     );
     assert_eq!(unshrunk.failing_families(), report.failing_families());
+}
+
+/// `only` runs the families named and those under them, by whole path
+/// segments; without it, every family.
+#[test]
+fn only_selects_families_by_whole_segments() {
+    let all = whole_line();
+    assert!(all.selects("sphere/far-tiny") && all.selects("anything"));
+    let g = whole_line().only(["sphere/random", "sphere/two"]);
+    for (family, run) in [
+        ("sphere/two", true),
+        ("sphere/random", true),
+        ("sphere/random/aimed", true),
+        ("sphere/randomly", false),
+        ("sphere/tw", false),
+        ("sphere", false),
+        ("sphere/far-tiny", false),
+    ] {
+        assert_eq!(g.selects(family), run, "{family}");
+    }
+    let names: Vec<String> = g.cases("sphere").into_iter().map(|f| f.0).collect();
+    assert!(names.len() > 2 && names[0] == "sphere/two", "{names:?}");
+    assert!(names[1..].iter().all(|f| f.starts_with("sphere/random/")));
+}
+
+/// A precondition's skipped cases are counted by name, the same in
+/// `skipped` and in a run's report; a declaration without one skips none.
+#[test]
+fn skipped_cases_are_counted_by_precondition() {
+    assert!(whole_line().skipped("sphere").is_empty());
+    let g = Gate::new(Declared::careful_f32_renderer(Semantics::WholeLine)).budget(16);
+    let skipped = g.skipped("sphere");
+    let names: Vec<&str> = skipped.iter().map(|s| s.0.as_str()).collect();
+    let each = [
+        "unit-dirs",
+        "off-surface",
+        "spread",
+        "no-subnormals",
+        "magnitudes",
+    ];
+    assert_eq!(names, each);
+    assert!(skipped.iter().all(|s| s.1 > 0) && skipped.iter().any(|s| s.1 > 1));
+    let any = |_: &Ray, _: &Sphere| Answer::Roots(vec![]);
+    assert_eq!(g.sphere(&any).skipped, skipped);
+}
+
+/// A kernel that stops after some replies: the report judges those, says
+/// how many were answered, and names the next case by its own family.
+#[test]
+fn a_stopped_run_names_the_next_case_and_its_family() {
+    struct Stops(usize);
+    impl CaseKernel for Stops {
+        fn answer(&mut self, cases: &[Case], replies: &mut Vec<Reply>) -> Result<(), String> {
+            let right = cases[..self.0].iter().map(|c| match c {
+                Case::Sphere(r, s) => {
+                    Reply::Answer(Answer::roots(sphere::reference::intersect(r, s)))
+                }
+                _ => Reply::Failed("not a sphere".into()),
+            });
+            replies.extend(right);
+            Err("the pipe closed".into())
+        }
+    }
+    let g = whole_line().budget(2);
+    let families = g.cases("sphere")[..2].to_vec();
+    for (answered, next) in [(1, &families[0]), (3, &families[1])] {
+        let report = g.run(&families, &mut Stops(answered));
+        let case = &next.1[answered % 2];
+        let why = format!(
+            "the pipe closed; {answered} of 4 cases were answered; the next case: {}",
+            eval_line(case, &next.0)
+        );
+        assert_eq!(report.stopped.as_deref(), Some(why.as_str()));
+        assert_eq!(report.cases, answered);
+        assert!(report.failures.is_empty() && !report.passed());
+    }
+}
+
+/// No family holds more than the budget, and the families with cases to
+/// spare hold exactly that many, for every kind.
+#[test]
+fn every_family_is_cut_to_the_budget() {
+    for kind in ["plane", "sphere", "quadric", "camera"] {
+        let families = whole_line().budget(3).cases(kind);
+        assert!(families.iter().all(|f| f.1.len() <= 3), "{kind}");
+        assert!(families.iter().any(|f| f.1.len() == 3), "{kind}");
+    }
 }
