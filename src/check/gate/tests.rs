@@ -838,3 +838,50 @@ fn every_family_is_cut_to_the_budget() {
         assert!(families.iter().any(|f| f.1.len() == 3), "{kind}");
     }
 }
+
+/// A proper case needs both a nonzero direction and a nonzero shape, for
+/// each kind.
+#[test]
+fn a_proper_case_needs_a_direction_and_a_shape() {
+    let (o, d, zero) = (Vec3::ZERO, Vec3::Z, Vec3::ZERO);
+    let ball = Quadric::new([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]);
+    let (p, flat) = (Plane::new(o, Vec3::Y), Plane::new(o, zero));
+    let cases = [
+        (Case::Sphere(Ray::new(o, d), Sphere::new(o, 1.0)), true),
+        (Case::Sphere(Ray::new(o, zero), Sphere::new(o, 1.0)), false),
+        (Case::Sphere(Ray::new(o, d), Sphere::new(o, 0.0)), false),
+        (Case::Plane(Ray::new(o, d), p), true),
+        (Case::Plane(Ray::new(o, zero), p), false),
+        (Case::Plane(Ray::new(o, d), flat), false),
+        (Case::Quadric(Ray::new(o, d), ball), true),
+        (Case::Quadric(Ray::new(o, zero), ball), false),
+        (
+            Case::Quadric(Ray::new(o, d), Quadric::new([0.0; 10])),
+            false,
+        ),
+    ];
+    for (c, want) in cases {
+        assert_eq!(proper(&c), want, "{c:?}");
+    }
+}
+
+/// A four-lane kernel's disagreement is reported as such: what was
+/// expected is the same answer in every lane.
+#[test]
+fn an_inconsistent_answer_expects_every_lane_alike() {
+    let (ray, s) = (
+        Ray::new(Vec3::new(0.0, 0.0, -3.0), Vec3::Z),
+        Sphere::new(Vec3::ZERO, 1.0),
+    );
+    let d = Declared::f32(Semantics::WholeLine);
+    let got = Answer::Inconsistent("lane 1 says no roots".into());
+    match judge_sphere(&d, &ray, &s, got) {
+        Verdict::Fail { expected, why, .. } => {
+            assert_eq!(
+                (expected.as_str(), why.as_str()),
+                ("the same answer in every lane", "lane 1 says no roots")
+            );
+        }
+        Verdict::Pass => panic!("an inconsistent answer passed"),
+    }
+}
