@@ -797,7 +797,8 @@ fn skipped_cases_are_counted_by_precondition() {
 }
 
 /// A kernel that stops after some replies: the report judges those, says
-/// how many were answered, and names the next case by its own family.
+/// how many were answered, and names the next case by its own family (at
+/// a family's first case too).
 #[test]
 fn a_stopped_run_names_the_next_case_and_its_family() {
     struct Stops(usize);
@@ -815,7 +816,7 @@ fn a_stopped_run_names_the_next_case_and_its_family() {
     }
     let g = whole_line().budget(2);
     let families = g.cases("sphere")[..2].to_vec();
-    for (answered, next) in [(1, &families[0]), (3, &families[1])] {
+    for (answered, next) in [(1, &families[0]), (2, &families[1]), (3, &families[1])] {
         let report = g.run(&families, &mut Stops(answered));
         let case = &next.1[answered % 2];
         let why = format!(
