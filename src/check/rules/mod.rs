@@ -1684,8 +1684,8 @@ pub(crate) mod tests {
     /// `f = (1, 2, 4)`, `a = 8` and `f·d = 10`, so `t* = −1.25`, and the
     /// terms are `2 + 0 + 2|1 − 5|` (x) and `6 + 2 + 2|4 − 5|` (z):
     /// `κ = 20 / (8 · 1.25)`. At `t = 1` they are `2 + 0 + 2|1 + 4|` and
-    /// `6 + 2 + 2|4 + 4|`: `κ = 36 / 8`. A tangent root at 0 (the origin at the tangent point)
-    /// has an infinite κ.
+    /// `6 + 2 + 2|4 + 4|`: `κ = 36 / 8`. A tangent root at 0 (the origin
+    /// at the tangent point) has an infinite κ.
     #[cfg(feature = "sphere")]
     #[test]
     fn sphere_vertex_by_hand() {
