@@ -455,6 +455,33 @@ pub(crate) fn sorted<L: Real>(classes: Classes<L>, shrink: f64) -> Sorted<L> {
 /// [`two_roots`]: crate::num::dd::two_roots
 #[inline]
 pub fn tight(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64, shrink: f64) -> Option<SphereHit> {
+    let t = tight_terms(o, d, c, r);
+    // The bounds are unshrunk in `t`; the class tests and `two_roots`
+    // apply `shrink`.
+    if t.a.v == 0.0 || t.dp.v < -t.dp.e * shrink {
+        return Some(SphereHit::None);
+    }
+    if !(t.dp.v > t.dp.e * shrink) {
+        return None;
+    }
+    let (t0, t1) = two_roots(t.a, t.b, t.c, t.disc, shrink)?;
+    Some(SphereHit::Two(t0, t1))
+}
+
+/// The values [`tight`] decides from, with their bounds as derived there
+/// (unshrunk): `â`, `b̂`, `ĉ`, `Δ̂'` and `Δ̂ = fl(âΔ̂')`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct TightTerms {
+    pub(crate) a: Approx,
+    pub(crate) b: Approx,
+    pub(crate) c: Approx,
+    pub(crate) dp: Approx,
+    pub(crate) disc: Approx,
+}
+
+/// [`tight`]'s values and bounds, before any decision.
+#[inline(always)]
+pub(crate) fn tight_terms(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64) -> TightTerms {
     let eta = f64::from_bits((1023 - 1000) << 52);
     let Dots {
         f,
@@ -477,23 +504,17 @@ pub fn tight(o: [f64; 3], d: [f64; 3], c: [f64; 3], r: f64, shrink: f64) -> Opti
         e2 += e * e;
     }
     let dp = rr - ll;
-    // Unshrunk here; the class tests and `two_roots` apply `shrink`.
     let edp = (4.0 * e1 + 2.0 * e2 + 8.0 * U * ll + 2.0 * U * rr) * SLACK + eta;
-    let none = a == 0.0 || dp < -edp * shrink;
-    if none || !(a > 0.0 && dp > edp * shrink) {
-        return none.then_some(SphereHit::None);
-    }
     let disc = a * dp;
-    let ed = (2.0 * U * disc + 8.0 * U * a * dp + 2.0 * a * edp) * SLACK + eta;
+    let ed = (2.0 * U * disc.abs() + 8.0 * U * a * dp.abs() + 2.0 * a * edp) * SLACK + eta;
     let x = |v: f64, e: f64| Approx { v, e };
-    let (t0, t1) = two_roots(
-        x(a, ea),
-        x(b, eb),
-        x(ff - rr, e_c(ff, ff - rr, 1.0)),
-        x(disc, ed),
-        shrink,
-    )?;
-    Some(SphereHit::Two(t0, t1))
+    TightTerms {
+        a: x(a, ea),
+        b: x(b, eb),
+        c: x(ff - rr, e_c(ff, ff - rr, 1.0)),
+        dp: x(dp, edp),
+        disc: x(disc, ed),
+    }
 }
 
 /// The roots where the filter certified two but not both roots, with `c =
@@ -575,18 +596,18 @@ pub(crate) fn compensated_from(
     r: f64,
     shrink: f64,
 ) -> Option<SphereHit> {
-    let Classes {
-        a,
-        b,
-        mb,
-        mc,
-        disc,
-        two,
-        ..
-    } = *k;
-    if !two {
+    if !k.two {
         return None;
     }
+    let [a, b, cq, disc] = compensated_terms(k, o, c, r);
+    let (t0, t1) = two_roots(a, b, cq, disc, shrink)?;
+    Some(SphereHit::Two(t0, t1))
+}
+
+/// [`compensated`]'s `a`, `b`, `c` and `Δ`, with their bounds as derived
+/// there (unshrunk): the filter's values but `ĉ`, recomputed compensated.
+#[inline(always)]
+pub(crate) fn compensated_terms(k: &Classes<f64>, o: [f64; 3], c: [f64; 3], r: f64) -> [Approx; 4] {
     let (mut h, mut low, mut mag) = (0.0, 0.0, 0.0);
     for i in 0..3 {
         let (phi, psi) = two_sum(o[i], -c[i]);
@@ -601,15 +622,13 @@ pub(crate) fn compensated_from(
     let cq = s + (low + eps);
     let ec = (2.0 * U * cq.abs() + 24.0 * U * (mag + eps.abs())) * SLACK;
     let x = |v: f64, e: f64| Approx { v, e };
-    let ed = 20.0 * U * (mb * mb + a * mc) * SLACK;
-    let (t0, t1) = two_roots(
-        x(a, 4.0 * U * a),
-        x(b, 8.0 * U * mb),
+    let ed = 20.0 * U * (k.mb * k.mb + k.a * k.mc) * SLACK;
+    [
+        x(k.a, 4.0 * U * k.a),
+        x(k.b, 8.0 * U * k.mb),
         x(cq, ec),
-        x(disc, ed),
-        shrink,
-    )?;
-    Some(SphereHit::Two(t0, t1))
+        x(k.disc, ed),
+    ]
 }
 
 /// The tracked stage's answer without its checks, where the data alone
@@ -681,8 +700,7 @@ fn grid_within(
     limit: u32,
 ) -> Option<SphereHit> {
     use super::exactness::span_bound;
-    let ed = span_bound(&d);
-    if ed > limit || ed + span_bound(&[o[0], o[1], o[2], c[0], c[1], c[2], r]) > limit {
+    if span_bound(&d) + span_bound(&[o[0], o[1], o[2], c[0], c[1], c[2], r]) > limit {
         return None;
     }
     exact_roots(k.a, k.b, k.cq, k.disc)
@@ -998,6 +1016,108 @@ mod tests {
         }
     }
 
+    /// The tight stage's bounds are the derivation's ([`super::tight`]):
+    /// `E_λ = 8u|λ̂| + 2E_b/â`, `E_lᵢ = 2u(|l̂ᵢ| + |f̂ᵢ| + |p̂ᵢ|) +
+    /// E_λ|dᵢ|`, `E_Δ' = (4Σ|l̂ᵢ|E_lᵢ + 2ΣE_lᵢ² + 8uL̂ + 2uR²)·SLACK + η` and
+    /// `E_Δ = (2u|Δ̂| + 8uâ|Δ̂'| + 2âE_Δ')·SLACK + η`, with `E_a = 4uâ`,
+    /// `E_b = 8u m_b` and the filter's `E_c`, over the lines of
+    /// [`two_root_lines`] and the same lines moved off their spheres (so
+    /// that `Δ̂'` is negative). A line from a point sphere's centre has
+    /// nothing to bound but `η = 2⁻¹⁰⁰⁰` itself.
+    #[test]
+    fn the_tight_bounds_are_the_derivations() {
+        use super::{SLACK, U, tight_terms};
+        let close = |got: f64, want: f64, what: &str| {
+            let ok = got == want || ((got - want) / want).abs() < 1e-14;
+            assert!(ok, "{what}: {got:e}, not {want:e}");
+        };
+        let eta = 2f64.powi(-1000);
+        let mut misses = 0;
+        for ((_, o, d, c, r), _) in two_root_lines() {
+            for shift in [0.0, 3.0 * r] {
+                let o = [o[0] + shift, o[1], o[2]];
+                let f = [0, 1, 2].map(|i| o[i] - c[i]);
+                let a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+                let b = f[0] * d[0] + f[1] * d[1] + f[2] * d[2];
+                let mb = (0..3).map(|i| (f[i] * d[i]).abs()).sum::<f64>();
+                let lambda = b / a;
+                let el = 8.0 * U * lambda.abs() + 2.0 * (8.0 * U * mb) / a;
+                let (mut ll, mut e1, mut e2) = (0.0, 0.0, 0.0);
+                for i in 0..3 {
+                    let p = lambda * d[i];
+                    let l = f[i] - p;
+                    let e = 2.0 * U * (l.abs() + f[i].abs() + p.abs()) + el * d[i].abs();
+                    (ll, e1, e2) = (ll + l * l, e1 + l.abs() * e, e2 + e * e);
+                }
+                let dp = r * r - ll;
+                let edp = (4.0 * e1 + 2.0 * e2 + 8.0 * U * ll + 2.0 * U * r * r) * SLACK + eta;
+                let disc = a * dp;
+                let ed =
+                    (2.0 * U * disc.abs() + 8.0 * U * a * dp.abs() + 2.0 * a * edp) * SLACK + eta;
+                let ff = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+                let cq = ff - r * r;
+                let t = tight_terms(o, d, c, r);
+                let at = format!("{o:?} {d:?} R = {r}");
+                for (got, want, what) in [
+                    (t.a.v, a, "a"),
+                    (t.a.e, 4.0 * U * a, "E_a"),
+                    (t.b.v, b, "b"),
+                    (t.b.e, 8.0 * U * mb, "E_b"),
+                    (t.c.v, cq, "c"),
+                    (t.c.e, 10.0 * U * ff + 2.0 * U * cq.abs(), "E_c"),
+                    (t.dp.v, dp, "Δ'"),
+                    (t.dp.e, edp, "E_Δ'"),
+                    (t.disc.v, disc, "Δ"),
+                    (t.disc.e, ed, "E_Δ"),
+                ] {
+                    close(got, want, &format!("{what}, {at}"));
+                }
+                misses += usize::from(dp < 0.0);
+            }
+        }
+        assert!(misses >= 20, "{misses}");
+        let t = tight_terms([1.0, 2.0, 3.0], [0.5, 0.0, 1.0], [1.0, 2.0, 3.0], 0.0);
+        assert_eq!((t.dp.v, t.dp.e), (0.0, eta));
+        assert_eq!(t.disc.e, 2.0 * 1.25 * eta * SLACK + eta);
+    }
+
+    /// The tight stage's class tests scale with `shrink`: lines from
+    /// `2²⁰` away whose distance from a unit sphere's centre is `1 +
+    /// m·2⁻⁵⁰` for small integers `m` (the direction `(0, ±m·2⁻⁷⁰, 1)`
+    /// from `(0, 1, −2²⁰)`), where `Δ'` is a few times `E_Δ'`. Each side
+    /// has a line the stage certifies (none, or two roots as the oracle
+    /// has them), and one that it leaves at `shrink` 1 and decides at ¼.
+    #[test]
+    fn the_tight_class_tests_scale_with_shrink() {
+        use super::tight;
+        use crate::sphere::SphereHit;
+        let s = Sphere::new(glam::Vec3::ZERO, 1.0);
+        for side in [1.0f32, -1.0] {
+            let (mut certain, mut scaled) = (0, 0);
+            for m in 1..32 {
+                let ray = Ray::new(
+                    glam::Vec3::new(0.0, 1.0, -(2f32.powi(20))),
+                    glam::Vec3::new(0.0, side * m as f32 * 2f32.powi(-70), 1.0),
+                );
+                let ([o, d, c], r) = wide(&ray, &s);
+                let want = exact::intersect(&ray, &s).unwrap();
+                assert_eq!(matches!(want, SphereHit::None), side > 0.0);
+                match (tight(o, d, c, r, 1.0), tight(o, d, c, r, 0.25)) {
+                    (Some(h), _) => {
+                        assert!(same_bits(&h, &want), "m = {m}: {h:?}, not {want:?}");
+                        certain += 1;
+                    }
+                    (None, Some(h)) => {
+                        assert!(same_bits(&h, &want), "m = {m}, ¼: {h:?}, not {want:?}");
+                        scaled += 1;
+                    }
+                    (None, None) => {}
+                }
+            }
+            assert!(certain > 0 && scaled > 0, "side {side}: {certain} {scaled}");
+        }
+    }
+
     /// The catalogue's sphere cases, with their families.
     fn catalogue() -> Vec<(String, Ray, Sphere)> {
         let mut cases = Vec::new();
@@ -1034,6 +1154,67 @@ mod tests {
             }
         }
         assert!(huge >= 64, "{huge}");
+    }
+
+    /// [`compensated`]'s `ĉ` is within half its bound `E_c` of the exact
+    /// `c = |o − C|² − R²` (the proof's constants are half the stage's),
+    /// and its terms are the derivation's: `ĉ = h + (l̂ + ε₃)` from the
+    /// TwoSums and TwoProducts, `E_c = (2u|ĉ| + 24uM)·SLACK`, and the
+    /// filter's `a`, `b` and `Δ` with `E_a = 4uâ`, `E_b = 8u m_b` and `E_Δ =
+    /// 20u(m_b² + â m_c)·SLACK`; on every sphere case of the catalogue whose
+    /// class the filter certifies two, among them the origins near a huge
+    /// sphere, where `c` cancels and its low words carry it.
+    #[test]
+    fn the_compensated_terms_are_the_derivations() {
+        use super::{SLACK, U, classes, compensated_terms};
+        use crate::exact::Dyadic;
+        use crate::exact::dyadic::{dot, sub3};
+        use crate::num::dd::{two_prod, two_sum};
+        let (mut cases, mut cancelled) = (0, 0);
+        for (family, ray, s) in catalogue() {
+            let ([o, d, c], r) = wide(&ray, &s);
+            let k = classes(o, d, c, r, 1.0);
+            if !k.two {
+                continue;
+            }
+            let (mut h, mut low, mut mag) = (0.0, 0.0, 0.0);
+            for i in 0..3 {
+                let (phi, psi) = two_sum(o[i], -c[i]);
+                let (p, e) = two_prod(phi, phi);
+                let m = (2.0 * phi + psi) * psi;
+                let (sum, eps) = two_sum(h, p);
+                (h, low, mag) = (
+                    sum,
+                    low + (e + m + eps),
+                    mag + e.abs() + m.abs() + eps.abs(),
+                );
+            }
+            let (sum, eps) = two_sum(h, -(r * r));
+            let cq = sum + (low + eps);
+            let m = mag + eps.abs();
+            let [a, b, got, disc] = compensated_terms(&k, o, c, r);
+            let at = format!("{family} {ray:?} {s:?}");
+            assert_eq!(got.v.to_bits(), cq.to_bits(), "ĉ, {at}");
+            let ec = (2.0 * U * cq.abs() + 24.0 * U * m) * SLACK;
+            assert!(
+                ((got.e - ec) / ec).abs() < 1e-14,
+                "E_c, {at}: {:e}, not {ec:e}",
+                got.e
+            );
+            let dy = |v: glam::Vec3| v.to_array().map(Dyadic::from_f32);
+            let f = sub3(&dy(ray.origin), &dy(s.center));
+            let rr = Dyadic::from_f32(s.radius);
+            let exact = &dot(&f, &f) - &(&rr * &rr);
+            let miss = (&Dyadic::from_f64(cq) - &exact).to_f64().abs();
+            assert!(miss <= got.e / 2.0, "|ĉ − c| = {miss:e} > E_c/2, {at}");
+            assert_eq!((a.v, a.e), (k.a, 4.0 * U * k.a), "a, {at}");
+            assert_eq!((b.v, b.e), (k.b, 8.0 * U * k.mb), "b, {at}");
+            let ed = 20.0 * U * (k.mb * k.mb + k.a * k.mc) * SLACK;
+            assert_eq!((disc.v, disc.e), (k.disc, ed), "Δ, {at}");
+            cases += 1;
+            cancelled += usize::from(k.mc > 256.0 * cq.abs() && m > 0.0);
+        }
+        assert!(cases >= 1000 && cancelled >= 64, "{cases} {cancelled}");
     }
 
     /// The words stage ([`crate::sphere::words`]) alone, on every sphere
@@ -1087,6 +1268,63 @@ mod tests {
             }
         }
         assert!(near >= 128, "{near}");
+    }
+
+    /// The tracked stage answers lines whose arithmetic is exact with the
+    /// oracle's bits: a miss, a tangent, and lines from just outside or
+    /// inside a sphere of radius 3 (the origin `(0, y, z)` with `z` the
+    /// f32 values nearest `−√(9 − y²)`), whose root near 0 is a few ulps
+    /// of `z` where the other is near `2|z|`; there `q = −(b +
+    /// sign(b)√Δ)` does not cancel, as `−(b − sign(b)√Δ)` would.
+    #[test]
+    fn tracked_answers_exact_lines_with_the_oracles_bits() {
+        use super::tracked;
+        use crate::sphere::SphereHit;
+        let s = Sphere::new(glam::Vec3::ZERO, 3.0);
+        let mut lines = vec![[0.0, 3.5, -5.0], [0.0, 3.0, -5.0]];
+        for y in [0.25f32, 0.5, 1.0, 1.5, 2.0, 2.25, 2.5, 2.75] {
+            let z = -(9.0 - f64::from(y * y)).sqrt() as f32;
+            for k in -4i32..=4 {
+                lines.push([0.0, y, f32::from_bits(z.to_bits().wrapping_add_signed(k))]);
+            }
+        }
+        let mut near_zero = 0;
+        for o in lines {
+            let ray = Ray::new(o.into(), glam::Vec3::Z);
+            let want = exact::intersect(&ray, &s).unwrap();
+            let ([o, d, c], r) = wide(&ray, &s);
+            let got = tracked(o, d, c, r);
+            assert!(
+                got.is_some_and(|h| same_bits(&h, &want)),
+                "{ray:?}: {got:?}, not {want:?}"
+            );
+            near_zero += usize::from(matches!(want, SphereHit::Two(t, _) if t.abs() < 1e-5));
+        }
+        assert!(near_zero >= 32, "{near_zero}");
+    }
+
+    /// The grid stage takes spans that sum to its limit, 23, and no more:
+    /// grazing `R = 3` at `(0, 3, 0)` from `(0, 3, −5)` (positions of span
+    /// 3) along `(0, 0, 1 + 2⁻¹⁹)` (span 20) it answers the oracle's
+    /// tangent; along `1 + 2⁻²⁰` (span 21) it answers nothing.
+    #[test]
+    fn grid_stage_takes_spans_up_to_its_limit() {
+        use super::grid_exact;
+        use crate::sphere::exactness::span_bound;
+        let o = [0.0, 3.0, -5.0];
+        assert_eq!(span_bound(&[0.0, 3.0, -5.0, 0.0, 0.0, 0.0, 3.0]), 3);
+        for (j, span, answers) in [(19, 20, true), (20, 21, false)] {
+            let d = [0.0, 0.0, 1.0 + 2f32.powi(-j)];
+            assert_eq!(span_bound(&d), span);
+            let ray = Ray::new(o.into(), d.into());
+            let want = exact::intersect(&ray, &Sphere::new(glam::Vec3::ZERO, 3.0)).unwrap();
+            assert!(matches!(want, crate::sphere::SphereHit::Tangent(_)));
+            let got = grid_exact(o, d, [0.0; 3], 3.0);
+            match got {
+                Some(h) => assert!(answers && same_bits(&h, &want), "{got:?}, not {want:?}"),
+                None => assert!(!answers, "span {span}"),
+            }
+        }
     }
 
     /// The grid stage agrees with the oracle on integer and dyadic lines
