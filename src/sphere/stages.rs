@@ -1161,18 +1161,36 @@ mod tests {
     /// and its terms are the derivation's: `ĉ = h + (l̂ + ε₃)` from the
     /// TwoSums and TwoProducts, `E_c = (2u|ĉ| + 24uM)·SLACK`, and the
     /// filter's `a`, `b` and `Δ` with `E_a = 4uâ`, `E_b = 8u m_b` and `E_Δ =
-    /// 20u(m_b² + â m_c)·SLACK`; on every sphere case of the catalogue whose
-    /// class the filter certifies two, among them the origins near a huge
-    /// sphere, where `c` cancels and its low words carry it.
+    /// 20u(m_b² + â m_c)·SLACK`. On every line whose class the filter
+    /// certifies two among the catalogue's sphere cases (origins near a
+    /// huge sphere among them, where `c` cancels and its low words carry
+    /// it), the lines of [`two_root_lines`] (where `h − R²` rounds), and
+    /// lines from origins of tiny coordinates near a sphere of radius 10⁶
+    /// (where `o − C` rounds, so that `ψᵢ ≠ 0`).
     #[test]
     fn the_compensated_terms_are_the_derivations() {
         use super::{SLACK, U, classes, compensated_terms};
         use crate::exact::Dyadic;
         use crate::exact::dyadic::{dot, sub3};
         use crate::num::dd::{two_prod, two_sum};
-        let (mut cases, mut cancelled) = (0, 0);
-        for (family, ray, s) in catalogue() {
-            let ([o, d, c], r) = wide(&ray, &s);
+        let mut lines: Vec<_> = catalogue()
+            .into_iter()
+            .map(|(family, ray, s)| {
+                let ([o, d, c], r) = wide(&ray, &s);
+                (family, o, d, c, r)
+            })
+            .collect();
+        for ((_, o, d, c, r), _) in two_root_lines() {
+            lines.push(("two-root".into(), o, d, c, r));
+        }
+        for k in 0..16 {
+            let t = f64::from(1e-9f32 * (k + 1) as f32);
+            let o = [t, -t / 3.0, t / 7.0].map(|x| x as f32 as f64);
+            let d = [-1.0, 0.25 * f64::from(k), 0.5];
+            lines.push(("tiny-origin".into(), o, d, [1e6, 0.0, 0.0], 1e6));
+        }
+        let (mut cases, mut cancelled, mut psi_used, mut eps_used) = (0, 0, 0, 0);
+        for (family, o, d, c, r) in lines {
             let k = classes(o, d, c, r, 1.0);
             if !k.two {
                 continue;
@@ -1188,22 +1206,20 @@ mod tests {
                     low + (e + m + eps),
                     mag + e.abs() + m.abs() + eps.abs(),
                 );
+                psi_used += usize::from(psi != 0.0);
             }
             let (sum, eps) = two_sum(h, -(r * r));
             let cq = sum + (low + eps);
             let m = mag + eps.abs();
             let [a, b, got, disc] = compensated_terms(&k, o, c, r);
-            let at = format!("{family} {ray:?} {s:?}");
+            let at = format!("{family} {o:?} {d:?} {c:?} R = {r}");
             assert_eq!(got.v.to_bits(), cq.to_bits(), "ĉ, {at}");
+            // To the bit: `24uM` is often `u` times the size of `2u|ĉ|`.
             let ec = (2.0 * U * cq.abs() + 24.0 * U * m) * SLACK;
-            assert!(
-                ((got.e - ec) / ec).abs() < 1e-14,
-                "E_c, {at}: {:e}, not {ec:e}",
-                got.e
-            );
-            let dy = |v: glam::Vec3| v.to_array().map(Dyadic::from_f32);
-            let f = sub3(&dy(ray.origin), &dy(s.center));
-            let rr = Dyadic::from_f32(s.radius);
+            assert_eq!(got.e.to_bits(), ec.to_bits(), "E_c, {at}: {:e}", got.e);
+            let dy = |v: [f64; 3]| v.map(Dyadic::from_f64);
+            let f = sub3(&dy(o), &dy(c));
+            let rr = Dyadic::from_f64(r);
             let exact = &dot(&f, &f) - &(&rr * &rr);
             let miss = (&Dyadic::from_f64(cq) - &exact).to_f64().abs();
             assert!(miss <= got.e / 2.0, "|ĉ − c| = {miss:e} > E_c/2, {at}");
@@ -1213,8 +1229,12 @@ mod tests {
             assert_eq!((disc.v, disc.e), (k.disc, ed), "Δ, {at}");
             cases += 1;
             cancelled += usize::from(k.mc > 256.0 * cq.abs() && m > 0.0);
+            eps_used += usize::from(eps != 0.0);
         }
-        assert!(cases >= 1000 && cancelled >= 64, "{cases} {cancelled}");
+        assert!(
+            cases >= 1000 && cancelled >= 64 && psi_used >= 16 && eps_used >= 16,
+            "{cases} {cancelled} {psi_used} {eps_used}"
+        );
     }
 
     /// The words stage ([`crate::sphere::words`]) alone, on every sphere
@@ -1301,6 +1321,113 @@ mod tests {
             near_zero += usize::from(matches!(want, SphereHit::Two(t, _) if t.abs() < 1e-5));
         }
         assert!(near_zero >= 32, "{near_zero}");
+    }
+
+    /// [`tracked_exact`](super::tracked_exact) holds exactly where every
+    /// operation of `a`, `b`, `c` and `Δ` gives its exact result, each
+    /// checked in [`Dyadic`](crate::exact::Dyadic) arithmetic: on seeded
+    /// random lines and spheres of dyadic values over a few binades, with
+    /// at most 1 to 24 significant bits a line, so that each operation is
+    /// exact on some and rounds on others, and on lines built so that one
+    /// operation rounds where a similar one would not.
+    #[test]
+    fn tracked_exact_holds_exactly_where_no_operation_rounds() {
+        use super::{dots, tracked_exact};
+        use crate::exact::Dyadic;
+        use rand::{Rng, SeedableRng, rngs::SmallRng};
+        let mut rng = SmallRng::seed_from_u64(0x7ac4);
+        let value = |rng: &mut SmallRng, most: i32| {
+            let bits = rng.random_range(1..=most);
+            let m = rng.random_range(1u32 << (bits - 1)..1 << bits) as f32;
+            let x = m * 2f32.powi(rng.random_range(-4..4) - bits);
+            if rng.random() { -x } else { x }
+        };
+        let dy = Dyadic::from_f64;
+        let add = |x: f64, y: f64, z: f64| &dy(x) + &dy(y) == dy(z);
+        let mul = |x: f64, y: f64, z: f64| &dy(x) * &dy(y) == dy(z);
+        // Lines built so that one operation's exactness differs from that
+        // of its neighbours: `1 + 2⁻⁵³` in one `oᵢ − Cᵢ` (where `1 −
+        // 2⁻⁵³` is exact); `fₓ = 2²⁶ + 1`, more than 26 bits but exact
+        // products, and `2²⁷ + 1`, whose square rounds though its product
+        // with `dₓ = 0` does not; `a = 1 + 1 + dz²` rounding only in the
+        // second sum, and `f·f` the same.
+        let p = |k: i32| 2f64.powi(k);
+        let dz = f64::from(p(-20) as f32 * (1.0 + f32::EPSILON));
+        let mut lines = vec![
+            ([1.0, 0.0, -5.0], [0.0, 0.0, 1.0], [-p(-53), 0.0, 0.0], 1.0),
+            ([0.0, 1.0, -5.0], [0.0, 0.0, 1.0], [0.0, -p(-53), 0.0], 1.0),
+            ([-5.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 0.0, -p(-53)], 1.0),
+            ([p(26), 0.0, 0.0], [-1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], p(26)),
+            ([p(27), 0.0, 0.0], [0.0, 0.0, 1.0], [-1.0, 0.0, 0.0], p(27)),
+            ([0.0; 3], [1.0, 1.0, dz], [0.0; 3], 1.0),
+            ([1.0, 1.0, dz], [1.0, 0.0, 0.0], [0.0; 3], 1.0),
+        ];
+        let built = lines.len();
+        for _ in 0..20_000 {
+            let most = rng.random_range(1..=24);
+            let mut v = || f64::from(value(&mut rng, most));
+            lines.push(([v(), v(), v()], [v(), v(), v()], [v(), v(), v()], v()));
+        }
+        let (mut exact, mut rounded) = (0, 0);
+        for (i, (o, d, c, r)) in lines.into_iter().enumerate() {
+            let x = dots(o, d, c, r);
+            let (f, sq) = (x.f, d.map(|x| x * x));
+            let fd = [0, 1, 2].map(|i| f[i] * d[i]);
+            let f2 = f.map(|x| x * x);
+            let cq = x.ff - x.rr;
+            let (bb, ac) = (x.b * x.b, x.a * cq);
+            let every = add(sq[0], sq[1], sq[0] + sq[1])
+                && add(sq[0] + sq[1], sq[2], x.a)
+                && (0..3).all(|i| {
+                    add(o[i], -c[i], f[i]) && mul(f[i], d[i], fd[i]) && mul(f[i], f[i], f2[i])
+                })
+                && add(fd[0], fd[1], fd[0] + fd[1])
+                && add(fd[0] + fd[1], fd[2], x.b)
+                && add(f2[0], f2[1], f2[0] + f2[1])
+                && add(f2[0] + f2[1], f2[2], x.ff)
+                && add(x.ff, -x.rr, cq)
+                && mul(x.b, x.b, bb)
+                && mul(x.a, cq, ac)
+                && add(bb, -ac, bb - ac);
+            assert_eq!(tracked_exact(o, d, c, &x), every, "{o:?} {d:?} {c:?} {r}");
+            if i < built {
+                assert_eq!(every, i == 3, "line {i}");
+            }
+            (exact, rounded) = (exact + usize::from(every), rounded + usize::from(!every));
+        }
+        assert!(exact >= 1000 && rounded >= 1000, "{exact} {rounded}");
+    }
+
+    /// The double-word stage's `add_dd_prod` adds what
+    /// [`Acc::add_dd_prod`](crate::num::dd::Acc::add_dd_prod) adds, the
+    /// same words (zero and exact products skipped), and returns the bound
+    /// that one keeps, `2(|x.hi|E_y + E_x(|y.hi| + E_y))`, on words with
+    /// and without errors, zeros among them.
+    #[test]
+    fn add_dd_prod_adds_the_accumulators_words_and_bound() {
+        use super::add_dd_prod;
+        use crate::num::dd::{Acc, Dd, Dekker};
+        let dd = |hi: f64, lo: f64, err: f64| Dd { hi, lo, err };
+        let words = [
+            dd(1.5, 2f64.powi(-60), 2f64.powi(-110)),
+            dd(-3.0 / 7.0, 2f64.powi(-57) / 3.0, 0.0),
+            dd(0.0, 0.0, 2f64.powi(-200)),
+            dd(1e10 / 3.0, -1e-7 / 3.0, 1e-20),
+            dd(-0.1, 0.0, 0.0),
+        ];
+        for x in words {
+            for y in words {
+                let mut acc = Acc::new();
+                acc.add_dd_prod(x, y);
+                let mut ours = Acc::new();
+                let extra = add_dd_prod::<Dekker>(&mut ours, x, y);
+                let want = 2.0 * (x.hi.abs() * y.err + x.err * (y.hi.abs() + y.err));
+                assert_eq!(extra, want, "{x:?} {y:?}");
+                let (a, b) = (acc.finish(), ours.finish());
+                assert_eq!((a.hi, a.lo), (b.hi, b.lo), "{x:?} {y:?}");
+                assert!(b.err <= a.err, "{x:?} {y:?}");
+            }
+        }
     }
 
     /// The grid stage takes spans that sum to its limit, 23, and no more:
