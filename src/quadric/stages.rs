@@ -531,9 +531,46 @@ pub(crate) fn sorted_from(
     alpha: f64,
     beta: f64,
     disc: f64,
-    (ea, eb, ed): (f64, f64, f64),
+    bounds: (f64, f64, f64),
     shrink: f64,
 ) -> Option<(f64, f64)> {
+    let SortedTerms {
+        t0,
+        t1,
+        r,
+        a,
+        apart,
+    } = sorted_terms(alpha, beta, disc, bounds, shrink);
+    let w = r + 2f64.powi(-51);
+    // `certify`, both roots at once, every end finite (Range above).
+    let (a0, a1) = (a.copysign(t0), a.copysign(t1));
+    let same = |lo: f64, hi: f64| (lo as f32).to_bits() == (hi as f32).to_bits();
+    let ok = same(t0 * (1.0 - w) - a0, t0 * (1.0 + w) + a0)
+        & same(t1 * (1.0 - w) - a1, t1 * (1.0 + w) + a1);
+    (apart & ok).then_some((t0, t1))
+}
+
+/// What [`sorted_from`] decides from: both roots, their one bound `|t|·r
+/// + a`, and whether `Δ̂/β̂²` lies outside `[(15/17)², (17/15)²]`, so that
+/// `t₁` is the form to take.
+#[derive(Clone, Copy, Debug)]
+struct SortedTerms {
+    t0: f64,
+    t1: f64,
+    r: f64,
+    a: f64,
+    apart: bool,
+}
+
+/// [`sorted_from`]'s roots and bound, as its derivation gives them.
+#[inline(always)]
+fn sorted_terms(
+    alpha: f64,
+    beta: f64,
+    disc: f64,
+    (ea, eb, ed): (f64, f64, f64),
+    shrink: f64,
+) -> SortedTerms {
     const SIGN: u64 = 1 << 63;
     let c = |x: f64| x * U * shrink;
     // Both divisions and the square root start together.
@@ -544,19 +581,17 @@ pub(crate) fn sorted_from(
     let x = ea * ia.abs() * SLACK;
     let g = (1.0 + x + x) * SLACK;
     let r = if x < 0.25 { x * g + c(20.0) } else { 1.0 };
-    let w = r + 2f64.powi(-51);
     let hg = 0.5 * ia.abs() * g * SLACK;
     let (p, q) = (eb * hg, (ed * id * SLACK + c(2.0)) * hg);
     let h = f64::from_bits((0.5 * ia).to_bits() ^ (beta.to_bits() & SIGN) ^ SIGN);
     let ab = beta.abs();
-    let (t0, t1) = ((ab + s) * h, (ab - s) * h);
-    let a = p + s * q;
-    // `certify`, both roots at once, every end finite (Range above).
-    let (a0, a1) = (a.copysign(t0), a.copysign(t1));
-    let same = |lo: f64, hi: f64| (lo as f32).to_bits() == (hi as f32).to_bits();
-    let ok = same(t0 * (1.0 - w) - a0, t0 * (1.0 + w) + a0)
-        & same(t1 * (1.0 - w) - a1, t1 * (1.0 + w) + a1);
-    (apart & ok).then_some((t0, t1))
+    SortedTerms {
+        t0: (ab + s) * h,
+        t1: (ab - s) * h,
+        r,
+        a: p + s * q,
+        apart,
+    }
 }
 
 /// The terms of α, β and γ, each exactly as two words ([`Pair`]): `k·x`
@@ -2332,5 +2367,239 @@ mod tests {
             }
         }
         assert!(bounded > 0);
+    }
+
+    /// The filter's bounds, recomputed from the [module's](self)
+    /// derivation: `E_α = 12u m_α`, `E_β = 24u m_β`, `E_γ = 20u m_γ`, `E_Δ
+    /// = u(100 m_β² + 300 m_α m_γ)`, `u` scaled by `shrink`, and the
+    /// classes they certify; then [`roots`]' quotients and their bounds
+    /// ([`quotient_bound`] with `E_q`, `E_s` as derived), and
+    /// [`sorted_terms`]' `r`, `a` and form test. On one lane
+    /// ([`classes`], [`classes_paired`]) and four, with `shrink` 1 and 1/4,
+    /// over lines whose directions run from `2⁻²⁰` to `2²⁰` long, lines
+    /// from just off a sphere (where `Δ̂ ≈ β̂²`, so the form test fails) and
+    /// lines with every class: a slip in a term, a factor or a scale
+    /// shows.
+    #[test]
+    fn the_filter_bounds_are_the_derivations() {
+        use crate::num::real::F64x4;
+        let close = |got: f64, want: f64, what: &str| {
+            let ok = got == want || ((got - want) / want).abs() < 1e-14;
+            assert!(ok, "{what}: {got:e}, not {want:e}");
+        };
+        let quadrics: [[f64; 10]; 4] = [
+            [1.0, -1.0, 1.0, 0.1, 0.0, 0.05, 0.0, 0.2, 0.0, -0.5],
+            [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -4.0],
+            [2.0, 0.5, 1.0, 0.25, -0.5, 0.125, 1.0, -2.0, 0.5, -30.0],
+            [-1.0, 3.0, 0.5, 0.0, 1.5, 0.0, -0.25, 0.0, 2.0, 7.0],
+        ];
+        let f32s = |v: [f64; 3]| v.map(|x| x as f32 as f64);
+        let mut lines = Vec::new();
+        for e in (-20..=20).step_by(5) {
+            let l = 2f64.powi(e);
+            for k in quadrics {
+                lines.push((k, [0.3, 0.2, -5.0], f32s([-0.05 * l, 0.02 * l, l])));
+                lines.push((k, [0.3, 0.2, -5.0], f32s([0.7 * l, -0.4 * l, 0.1 * l])));
+            }
+        }
+        // From just off the sphere of radius 2: γ̂ ≈ 0, Δ̂ ≈ β̂².
+        let sphere = quadrics[1];
+        for z in [2.0000002f32, 2.0001, 2.01, 2.3] {
+            lines.push((sphere, [0.0, 0.0, -f64::from(z)], [0.0, 0.1, 1.0]));
+        }
+        // α = 0: the paraboloid z = x² + y² along its axis (linear); the
+        // cylinder along its axis (α = β = 0, γ = −1: none); the plane
+        // z = 0 along a line in it (every t).
+        let bowl = [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0];
+        let cyl = [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+        let plane = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0];
+        lines.push((bowl, [0.0, 0.0, -2.0], [0.0, 0.0, 1.0]));
+        lines.push((cyl, [0.0; 3], [0.0, 0.0, 1.0]));
+        lines.push((plane, [0.0; 3], [1.0, 0.0, 0.0]));
+        // x² − y² + z² = 0.5 with α = 1 − 1 + 2⁻⁴⁰: no certain quadratic.
+        let cancelling = [1.0, -1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -0.5];
+        lines.push((cancelling, [0.0, 0.0, -3.0], [1.0, 1.0, 2f64.powi(-20)]));
+
+        let mut seen = [0usize; 7];
+        for shrink in [1.0, 0.25] {
+            let u = U * shrink;
+            for &(k, o, d) in &lines {
+                let at = format!("{k:?}, {o:?}, {d:?}, shrink {shrink}");
+                let (at3, bt, gt) = crate::quadric::terms64(&k, &o, &d);
+                let m = |t: &[f64]| t.iter().map(|x| x.abs()).sum::<f64>();
+                let (ma, mb, mg) = (m(&at3), m(&bt), m(&gt));
+                let w4 = |v: [f64; 3]| v.map(F64x4::splat);
+                let four = classes(&k.map(F64x4::splat), w4(o), w4(d), shrink);
+                let lane = |x: F64x4| x.to_array()[0];
+                let ones = [
+                    classes::<f64>(&k, o, d, shrink),
+                    classes_paired(&k, o, d, shrink),
+                ];
+                for (n, c) in ones.iter().enumerate() {
+                    let at = format!("{at}, one lane {n}");
+                    close(c.ma, ma, &format!("m_α, {at}"));
+                    close(c.mb, mb, &format!("m_β, {at}"));
+                    close(c.mg, mg, &format!("m_γ, {at}"));
+                    close(c.ea, 12.0 * u * ma, &format!("E_α, {at}"));
+                    close(c.eb, 24.0 * u * mb, &format!("E_β, {at}"));
+                    close(c.eg, 20.0 * u * mg, &format!("E_γ, {at}"));
+                    close(
+                        c.ed,
+                        u * (100.0 * mb * mb + 300.0 * ma * mg),
+                        &format!("E_Δ, {at}"),
+                    );
+                    let disc = c.beta * c.beta - 4.0 * c.alpha * c.gamma;
+                    assert_eq!(c.disc.to_bits(), disc.to_bits(), "Δ̂, {at}");
+                    let quad = c.alpha.abs() * 2f64.powi(-24) > c.ea;
+                    assert_eq!(c.quad, quad, "quad, {at}");
+                    assert_eq!(c.two, quad && disc > c.ed, "two, {at}");
+                    let lin = ma == 0.0;
+                    assert_eq!(c.linear(), lin && c.beta.abs() > c.eb, "linear, {at}");
+                    let constant = lin && mb == 0.0;
+                    let none = (quad && -c.ed > disc) || (constant && c.gamma.abs() > c.eg);
+                    assert_eq!(c.none(), none, "none, {at}");
+                    assert_eq!(c.all(), constant && mg == 0.0, "all, {at}");
+                    seen[0] += usize::from(c.two);
+                    seen[1] += usize::from(c.linear());
+                    seen[2] += usize::from(c.none());
+                    seen[3] += usize::from(c.all());
+                }
+                // Four lanes, the same sums in the same order as one.
+                let c = &ones[0];
+                let fields = [
+                    (four.alpha, c.alpha),
+                    (four.beta, c.beta),
+                    (four.gamma, c.gamma),
+                    (four.disc, c.disc),
+                    (four.ea, c.ea),
+                    (four.eb, c.eb),
+                    (four.eg, c.eg),
+                    (four.ed, c.ed),
+                ];
+                for (i, (x, y)) in fields.into_iter().enumerate() {
+                    assert_eq!(lane(x).to_bits(), y.to_bits(), "field {i}, {at}");
+                }
+                assert_eq!(four.two.lanes()[0], c.two, "two, four lanes, {at}");
+
+                // The roots and their bounds, where the class is two or
+                // linear (elsewhere the roots are not read).
+                if !(c.two || c.linear()) {
+                    continue;
+                }
+                let (r1, r4) = (roots(c, shrink), roots(&four, shrink));
+                let lin = c.linear();
+                let alpha = if lin { 1.0 } else { c.alpha };
+                let s = c.disc.sqrt();
+                let q = -(c.beta + s.copysign(c.beta)) * 0.5;
+                let es = c.ed / s * SLACK + 2.0 * u * s;
+                let eq = if lin {
+                    c.eb
+                } else {
+                    (c.eb + es) * 0.5 + 2.0 * u * q.abs()
+                };
+                let (ra, aa) = quotient_bound(c.ea, eq, 1.0 / alpha, 20.0 * u);
+                let (rq, aq) = quotient_bound(eq, c.eg, 1.0 / q, 20.0 * u);
+                let p = (q * alpha * s).abs();
+                let in_range = p > 2f64.powi(-1000) && p < 2f64.powi(1000);
+                let got = [
+                    (r1.t0, r1.r0, r1.a0, r1.t1, r1.r1, r1.a1, true),
+                    (
+                        lane(r4.t0),
+                        lane(r4.r0),
+                        lane(r4.a0),
+                        lane(r4.t1),
+                        lane(r4.r1),
+                        lane(r4.a1),
+                        in_range,
+                    ),
+                ];
+                for (t0, r0, a0, t1, rr1, a1, in_range) in got {
+                    let inf = |r: f64| if in_range { r } else { f64::INFINITY };
+                    if !lin {
+                        close(t0, q / alpha, &format!("t0, {at}"));
+                        close(r0, inf(ra), &format!("r0, {at}"));
+                        close(a0, aa, &format!("a0, {at}"));
+                    }
+                    close(t1, c.gamma / q, &format!("t1, {at}"));
+                    close(rr1, inf(rq), &format!("r1, {at}"));
+                    close(a1, aq, &format!("a1, {at}"));
+                }
+                assert_eq!(r1.linear, lin, "{at}");
+                if lin {
+                    continue;
+                }
+
+                // The scalar reference's first form, `(−β̂ ∓ ŝ)/2α̂`.
+                let t = sorted_terms(c.alpha, c.beta, c.disc, (c.ea, c.eb, c.ed), shrink);
+                let x = c.ea / c.alpha.abs() * SLACK;
+                let g = (1.0 + 2.0 * x) * SLACK;
+                close(t.r, x * g + 20.0 * u, &format!("r, {at}"));
+                let h = 0.5 / c.alpha.abs() * g * SLACK;
+                close(
+                    t.a,
+                    h * (c.eb + s * (c.ed / c.disc * SLACK + 2.0 * u)),
+                    &format!("a, {at}"),
+                );
+                let near = -c.beta.signum() * 0.5 / c.alpha;
+                close(t.t0, (c.beta.abs() + s) * near, &format!("t₀, {at}"));
+                close(t.t1, (c.beta.abs() - s) * near, &format!("t₁, {at}"));
+                let ratio = c.disc / (c.beta * c.beta);
+                let apart = !(ratio > 225.0 / 289.0 && ratio < 289.0 / 225.0);
+                assert_eq!(t.apart, apart, "apart, {at}");
+                let ok = certify(t.t0, t.r, t.a) && certify(t.t1, t.r, t.a);
+                let want = (apart && ok).then_some((t.t0, t.t1));
+                assert_eq!(sorted(c, shrink), want, "sorted, {at}");
+                seen[4] += usize::from(apart && ok);
+                seen[5] += usize::from(!apart);
+            }
+        }
+        // Past `E_α/|α̂| = 1/4` the form certifies nothing (r = 1); below,
+        // `r = x(1 + 2x) + 20u` widened.
+        let x = 0.2 * SLACK;
+        for (ea, want) in [(0.3, 1.0), (0.2, x * (1.0 + 2.0 * x) * SLACK + 20.0 * U)] {
+            let t = sorted_terms(1.0, -3.0, 1.0, (ea, 0.0, 0.0), 1.0);
+            close(t.r, want, &format!("r at E_α {ea}"));
+            seen[6] += 1;
+        }
+        assert!(
+            seen[0] > 100 && seen[1] > 0 && seen[2] > 0 && seen[3] > 0,
+            "{seen:?}"
+        );
+        assert!(seen[4] > 50 && seen[5] >= 4, "{seen:?}");
+    }
+
+    /// [`sorted_from`]'s certificate is [`certify`]'s on both roots, to
+    /// the bit: roots built exact (`α̂ = 1`, `β̂ = −2B`, `Δ̂ = ŝ²`) at
+    /// `j·2⁻⁵²` from the midpoint `1 + 2⁻²⁴`, `j` from −40 to 40, with no
+    /// error in α̂, β̂ or Δ̂, so that the enclosure is the roundings' alone
+    /// (`20u + 2⁻⁵¹` relative): the lines on either side of its edge,
+    /// where a sign or a term of the certificate moves the answer.
+    #[test]
+    fn the_first_forms_certificate_is_certify() {
+        let mid = 1.0 + 2f64.powi(-24);
+        let s = 2f64.powi(-10);
+        let (mut certified, mut refused) = (0, 0);
+        for near in [true, false] {
+            for j in -40..=40 {
+                let t = mid + f64::from(j) * 2f64.powi(-52);
+                // t₀ = B + ŝ/2 (near) or t₁ = B − ŝ/2, exactly.
+                let b = if near { t - s / 2.0 } else { t + s / 2.0 };
+                let got = sorted_from(1.0, -2.0 * b, s * s, (0.0, 0.0, 0.0), 1.0);
+                let want = if near {
+                    (t, b - s / 2.0)
+                } else {
+                    (b + s / 2.0, t)
+                };
+                let w = sorted_terms(1.0, -2.0 * b, s * s, (0.0, 0.0, 0.0), 1.0);
+                assert_eq!((w.t0, w.t1), want, "j {j}");
+                let ok = w.apart && certify(w.t0, w.r, w.a) && certify(w.t1, w.r, w.a);
+                assert_eq!(got, ok.then_some(want), "j {j}, near {near}");
+                certified += usize::from(ok);
+                refused += usize::from(!ok);
+            }
+        }
+        // Both sides of the edge, on both roots: |j| up to about 12 is
+        // refused (the enclosure reaches the midpoint), the rest certified.
+        assert!(certified > 100 && refused > 30, "{certified} {refused}");
     }
 }
