@@ -2570,36 +2570,52 @@ mod tests {
 
     /// [`sorted_from`]'s certificate is [`certify`]'s on both roots, to
     /// the bit: roots built exact (`α̂ = 1`, `β̂ = −2B`, `Δ̂ = ŝ²`) at
-    /// `j·2⁻⁵²` from the midpoint `1 + 2⁻²⁴`, `j` from −40 to 40, with no
-    /// error in α̂, β̂ or Δ̂, so that the enclosure is the roundings' alone
-    /// (`20u + 2⁻⁵¹` relative): the lines on either side of its edge,
-    /// where a sign or a term of the certificate moves the answer.
+    /// `j·h` from the midpoint `1 + 2⁻²⁴`, `j` from −40 to 40, on either
+    /// side of the enclosure's edge, where a sign or a term of the
+    /// certificate moves the answer. First with no error in α̂, β̂ or Δ̂,
+    /// so that the enclosure is the roundings' alone (`20u + 2⁻⁵¹`
+    /// relative, `h = 2⁻⁵²`), then with `E_α`, `E_β` and `E_Δ` in turn
+    /// leading it (`h = 2⁻⁴⁸`).
     #[test]
     fn the_first_forms_certificate_is_certify() {
         let mid = 1.0 + 2f64.powi(-24);
-        let s = 2f64.powi(-10);
-        let (mut certified, mut refused) = (0, 0);
-        for near in [true, false] {
-            for j in -40..=40 {
-                let t = mid + f64::from(j) * 2f64.powi(-52);
-                // t₀ = B + ŝ/2 (near) or t₁ = B − ŝ/2, exactly.
-                let b = if near { t - s / 2.0 } else { t + s / 2.0 };
-                let got = sorted_from(1.0, -2.0 * b, s * s, (0.0, 0.0, 0.0), 1.0);
-                let want = if near {
-                    (t, b - s / 2.0)
-                } else {
-                    (b + s / 2.0, t)
-                };
-                let w = sorted_terms(1.0, -2.0 * b, s * s, (0.0, 0.0, 0.0), 1.0);
-                assert_eq!((w.t0, w.t1), want, "j {j}");
-                let ok = w.apart && certify(w.t0, w.r, w.a) && certify(w.t1, w.r, w.a);
-                assert_eq!(got, ok.then_some(want), "j {j}, near {near}");
-                certified += usize::from(ok);
-                refused += usize::from(!ok);
+        // The other root, `t ± ŝ`, an f32 value (1 ± 2⁻¹⁰ ± … ± 2⁻²³, or
+        // 1 − 2⁻¹⁰): certified throughout.
+        let s = 2f64.powi(-10) + 2f64.powi(-24);
+        let p = |e: i32| 2f64.powi(e);
+        let scans = [
+            ((0.0, 0.0, 0.0), p(-52)),
+            ((p(-45), 0.0, 0.0), p(-48)),
+            ((0.0, p(-44), 0.0), p(-48)),
+            ((0.0, 0.0, p(-54)), p(-48)),
+        ];
+        for (bounds, step) in scans {
+            let (mut certified, mut refused) = (0, 0);
+            for near in [true, false] {
+                for j in -40..=40 {
+                    let t = mid + f64::from(j) * step;
+                    // t₀ = B + ŝ/2 (near) or t₁ = B − ŝ/2, exactly.
+                    let b = if near { t - s / 2.0 } else { t + s / 2.0 };
+                    let got = sorted_from(1.0, -2.0 * b, s * s, bounds, 1.0);
+                    let want = if near {
+                        (t, b - s / 2.0)
+                    } else {
+                        (b + s / 2.0, t)
+                    };
+                    let w = sorted_terms(1.0, -2.0 * b, s * s, bounds, 1.0);
+                    assert_eq!((w.t0, w.t1), want, "j {j}");
+                    let ok = w.apart && certify(w.t0, w.r, w.a) && certify(w.t1, w.r, w.a);
+                    assert_eq!(got, ok.then_some(want), "j {j}, near {near}, {bounds:?}");
+                    certified += usize::from(ok);
+                    refused += usize::from(!ok);
+                }
             }
+            // Both sides of the edge, on both roots: |j| up to about 12
+            // (8 with a bound leading) is refused, the rest certified.
+            assert!(
+                certified > 100 && refused > 30,
+                "{certified} {refused}, {bounds:?}"
+            );
         }
-        // Both sides of the edge, on both roots: |j| up to about 12 is
-        // refused (the enclosure reaches the midpoint), the rest certified.
-        assert!(certified > 100 && refused > 30, "{certified} {refused}");
     }
 }
