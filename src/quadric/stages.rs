@@ -2419,8 +2419,24 @@ mod tests {
         // x² − y² + z² = 0.5 with α = 1 − 1 + 2⁻⁴⁰: no certain quadratic.
         let cancelling = [1.0, -1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -0.5];
         lines.push((cancelling, [0.0, 0.0, -3.0], [1.0, 1.0, 2f64.powi(-20)]));
+        // From a point of the sphere, γ̂ = +0, both ways: the root γ̂/q̂ is
+        // +0 whatever q̂'s sign.
+        for z in [1.0, -1.0] {
+            lines.push((sphere, [0.0, 0.0, -2.0], [0.0, 0.0, z]));
+        }
+        // A hyperboloid with every input scaled far from 1: `q̂α̂ŝ` of
+        // about `2¹⁰⁴⁰` and `2⁻¹⁰⁴⁰`, out of the four lanes' range.
+        for (e, f) in [(120, 100), (-120, -100)] {
+            let (k, l) = (2f64.powi(e), 2f64.powi(f));
+            let hyper = [k, k, -k, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+            lines.push((
+                hyper,
+                [0.3 * l, 0.2 * l, -5.0 * l].map(|x| x as f32 as f64),
+                [0.0, 0.0, k],
+            ));
+        }
 
-        let mut seen = [0usize; 7];
+        let mut seen = [0usize; 9];
         for shrink in [1.0, 0.25] {
             let u = U * shrink;
             for &(k, o, d) in &lines {
@@ -2514,14 +2530,22 @@ mod tests {
                     ),
                 ];
                 for (t0, r0, a0, t1, rr1, a1, in_range) in got {
-                    let inf = |r: f64| if in_range { r } else { f64::INFINITY };
+                    if !in_range {
+                        assert!(r0 == f64::INFINITY && rr1 == r0, "range, {at}");
+                        seen[7] += 1;
+                        continue;
+                    }
+                    if c.gamma == 0.0 {
+                        assert_eq!(t1.to_bits(), 0, "t1 = +0, {at}");
+                        seen[8] += 1;
+                    }
                     if !lin {
                         close(t0, q / alpha, &format!("t0, {at}"));
-                        close(r0, inf(ra), &format!("r0, {at}"));
+                        close(r0, ra, &format!("r0, {at}"));
                         close(a0, aa, &format!("a0, {at}"));
                     }
                     close(t1, c.gamma / q, &format!("t1, {at}"));
-                    close(rr1, inf(rq), &format!("r1, {at}"));
+                    close(rr1, rq, &format!("r1, {at}"));
                     close(a1, aq, &format!("a1, {at}"));
                 }
                 assert_eq!(r1.linear, lin, "{at}");
@@ -2566,6 +2590,9 @@ mod tests {
             "{seen:?}"
         );
         assert!(seen[4] > 50 && seen[5] >= 4, "{seen:?}");
+        // Out of range on four lanes: two lines at two shrinks; +0 from
+        // γ̂ = +0: two lines, two shrinks, one lane and four.
+        assert!(seen[7] == 4 && seen[8] == 8, "{seen:?}");
     }
 
     /// [`sorted_from`]'s certificate is [`certify`]'s on both roots, to
