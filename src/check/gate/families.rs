@@ -18,12 +18,12 @@
 //!   the surface (every `t`) in small integers;
 //! * `sphere/random/tangent`: exact tangents in small integers, which a
 //!   kernel that takes `b² − ac = 0` for a miss gets wrong;
-//! * `plane/random/grazing`: `|d·n|` from `2⁻⁴⁰` to `2⁻²⁰` of `|d||n|`, a
-//!   hit far away; `plane/random/short-normal`: a normal `2⁻⁴⁰` to `2⁻²⁰`
+//! * `plane/random/grazing`: `|d·n|` from about `2⁻³⁵` to `2⁻²⁰` of
+//!   `|d||n|`, a hit far away; `plane/random/short-normal`: a normal `2⁻⁴⁰` to `2⁻²⁰`
 //!   long met at an angle, which an absolute `|d·n| < 1e-6` parallel test
 //!   drops;
-//! * `sphere/random/far`, `sphere/random/far-graze`: `|f|/R` from 10⁶ to
-//!   10¹² at distances up to 10¹² (radii down to 10⁻⁹), through the
+//! * `sphere/random/far`, `sphere/random/far-graze`: `|f|/R` from about 10⁵
+//!   to 10¹² at distances up to 10¹² (radii down to 10⁻⁹), through the
 //!   centre or off it, and rays grazing the silhouette, where even the
 //!   textbook `b² − ac` in f64 loses the class;
 //!   `quadric/random/far-sphere` is the first of them as a quadric
@@ -353,8 +353,10 @@ fn quadric_line_on_surface(rng: &mut SmallRng) -> Option<Case> {
         .then_some(Case::Quadric(Ray::new(o, d), Quadric::new(k)))
 }
 
-/// A ray nearly in the plane: `|d·n|` is `2⁻⁴⁰` to `2⁻²⁰` of `|d||n|`, so
-/// the hit is far but real.
+/// A ray nearly in the plane, so the hit is far but real: a unit vector
+/// along the plane, rounded to f32, plus `2⁻⁴⁰` to `2⁻²⁰` of the unit
+/// normal. Below about `2⁻²⁴` the first's rounding sets `|d·n|`, which
+/// ends between about `2⁻³⁵` and `2⁻²⁰` of `|d||n|`, mostly above `2⁻²⁸`.
 fn plane_grazing(rng: &mut SmallRng) -> Option<Case> {
     let n = v3(rng, 1.0).normalize_or_zero();
     let along = n.cross(v3(rng, 1.0)).normalize_or_zero();

@@ -699,18 +699,60 @@ fn shrink_keeps_a_proper_case_proper() {
     assert!(!proper(&shrink(&flat, &mut |_| true)));
 }
 
-/// Every case of `camera/invalid` is one the oracle refuses.
+/// Every case of `camera/invalid` is one the oracle refuses, and every
+/// slip its doc names is there: an up vector parallel to the view
+/// direction, longer, shorter, reversed (twice: shorter and tiny) and
+/// tiny; a field of view above π (twice), of exactly π (as an f32, above the
+/// real π), 0, negative and NaN.
 #[test]
 fn the_invalid_cameras_are_refused_by_the_oracle() {
     let cases = invalid_cameras();
-    assert!(cases.len() >= 9);
+    let mut slips = Vec::new();
     for (_, c) in &cases {
         let Case::Camera(p, px) = c else {
             panic!("{c:?}")
         };
         assert!(crate::camera::exact::ray(p, px[0], px[1]).is_err(), "{p:?}");
         assert!(p.build().is_err(), "{p:?}");
+        let (up, dir, a) = (p.up.as_dvec3(), p.dir.as_dvec3(), p.angle);
+        let k = up.dot(dir) / dir.length_squared();
+        if up.cross(dir) != glam::DVec3::ZERO {
+            // A valid up vector: the angle is the slip.
+            slips.push(match a {
+                _ if a.is_nan() => "angle NaN",
+                _ if a == std::f32::consts::PI => "angle π",
+                _ if a > std::f32::consts::PI => "angle above π",
+                _ if a == 0.0 => "angle 0",
+                _ if a < 0.0 => "angle negative",
+                _ => panic!("{p:?} is a valid camera"),
+            });
+            continue;
+        }
+        if k < 0.0 {
+            slips.push("up reversed");
+        }
+        slips.push(match k.abs() {
+            _ if up.length() < 1e-20 => "up tiny",
+            x if x > 1.0 => "up longer",
+            x if x < 1.0 => "up shorter",
+            _ => panic!("{p:?}: up is ±dir"),
+        });
     }
+    let all = [
+        "angle 0",
+        "angle NaN",
+        "angle above π",
+        "angle above π",
+        "angle negative",
+        "angle π",
+        "up longer",
+        "up reversed",
+        "up reversed",
+        "up shorter",
+        "up tiny",
+    ];
+    slips.sort();
+    assert_eq!(slips, all);
 }
 
 /// `Gate::run` asks a batch first, then one case at a time while it
@@ -884,5 +926,224 @@ fn an_inconsistent_answer_expects_every_lane_alike() {
             );
         }
         Verdict::Pass => panic!("an inconsistent answer passed"),
+    }
+}
+
+/// Every generated family keeps what its doc promises, case by case
+/// against the exact oracle, and fills its `n` cases, on two seeds: a
+/// generator that drifts (a root out of its range, an origin off the
+/// surface, a tangent that crosses, a camera that builds) fails here by
+/// name, not only through the wrong kernels it stops catching.
+#[test]
+fn every_generated_family_keeps_its_promise() {
+    let n = 24;
+    let default = Gate::new(Declared::faithful(Semantics::WholeLine)).seed;
+    for seed in [default, 7] {
+        let mut seen = std::collections::BTreeMap::<String, usize>::new();
+        let mut spread =
+            std::collections::BTreeMap::<String, [std::collections::BTreeSet<u32>; 6]>::new();
+        for kind in ["sphere", "plane", "quadric", "camera"] {
+            for (family, case) in random_cases(kind, seed, n) {
+                if let Err(why) = promise(&family, &case) {
+                    panic!(
+                        "{family}, seed {seed}: {why}: {}",
+                        eval_line(&case, &family)
+                    );
+                }
+                *seen.entry(family.clone()).or_default() += 1;
+                let (o, d) = match &case {
+                    Case::Sphere(r, _) | Case::Plane(r, _) | Case::Quadric(r, _) => {
+                        (r.origin, r.dir)
+                    }
+                    Case::Camera(p, _) => (p.position, p.dir),
+                };
+                let values = spread.entry(family).or_default();
+                for (i, x) in o.to_array().into_iter().chain(d.to_array()).enumerate() {
+                    values[i].insert(x.to_bits());
+                }
+            }
+        }
+        // Every component of the origin and the direction takes three
+        // values or more, of both signs: no draw is stuck on one value.
+        for (family, values) in &spread {
+            let stuck = values.iter().position(|v| {
+                let x = v.iter().map(|&b| f32::from_bits(b));
+                v.len() < 3 || !x.clone().any(|x| x < 0.0) || !x.clone().any(|x| x > 0.0)
+            });
+            assert!(
+                stuck.is_none(),
+                "{family}, seed {seed}: component {stuck:?} is stuck"
+            );
+        }
+        // A random camera is kept only if it builds.
+        let any = seen.remove("camera/random/any").unwrap_or(0);
+        assert!(
+            any >= n / 2 && any <= n,
+            "seed {seed}: {any} random cameras"
+        );
+        let short: Vec<_> = seen.iter().filter(|&(_, &c)| c != n).collect();
+        assert!(short.is_empty(), "seed {seed}: {short:?}");
+        assert_eq!(seen.len(), 21, "seed {seed}: {seen:?}");
+        // The grazing spheres fall on both sides of the silhouette.
+        let graze = random_cases("sphere", seed, n)
+            .into_iter()
+            .filter(|(f, _)| f == "sphere/random/far-graze");
+        let hits = graze
+            .filter(|(_, c)| matches!(c, Case::Sphere(r, s) if sphere::exact::intersect(r, s) != Ok(sphere::SphereHit::None)))
+            .count();
+        assert!(hits > 0 && hits < n, "seed {seed}: {hits} of {n} hit");
+    }
+}
+
+/// What `family` promises of `case`, checked against the exact oracle.
+fn promise(family: &str, case: &Case) -> Result<(), String> {
+    let ints = |v: &[f32]| v.iter().all(|x| x.fract() == 0.0 && x.abs() <= 16.0);
+    let vecs = |v: &[Vec3]| v.iter().flat_map(|x| x.to_array()).collect::<Vec<f32>>();
+    let check = |ok: bool, why: &str| if ok { Ok(()) } else { Err(why.to_string()) };
+    let tiny = |t: f32| t > 0.0 && t <= f32::EPSILON;
+    let first_positive = |roots: &[f32]| roots.iter().copied().find(|&t| t > 0.0);
+    let p2 = |e: i32| 2f64.powi(e);
+    use crate::hit::Intersection;
+    use plane::PlaneHit;
+    use quadric::QuadricHit;
+    use sphere::SphereHit;
+    match case {
+        Case::Sphere(ray, s) => {
+            let exact = sphere::exact::intersect(ray, s).map_err(|e| format!("{e:?}"))?;
+            let (o, d, c, r) = (
+                ray.origin.as_dvec3(),
+                ray.dir.as_dvec3(),
+                s.center.as_dvec3(),
+                f64::from(s.radius),
+            );
+            let f = o - c;
+            let off_line = f.cross(d).length() / d.length();
+            match family {
+                "sphere/random/aimed" => {
+                    let aim = (o + d - c).abs().max_element();
+                    check(
+                        (0.1..5.0).contains(&r) && aim <= r + 2e-5,
+                        "not aimed at the sphere's box",
+                    )
+                }
+                "sphere/random/inside" => check(
+                    matches!(exact, SphereHit::Two(t0, t1) if t0 < 0.0 && t1 > 0.0)
+                        && f.abs().max_element() <= r / 2.0,
+                    "the origin is not well inside",
+                ),
+                "sphere/random/small-root" => check(
+                    first_positive(exact.roots().as_slice()).is_some_and(tiny) && r >= p2(-40),
+                    "no nearest root in (0, 2⁻²³]",
+                ),
+                "sphere/random/on-surface" => check(
+                    ints(&vecs(&[ray.origin, ray.dir, s.center]))
+                        && exact.roots().as_slice().contains(&0.0),
+                    "the origin is not on the sphere in small integers",
+                ),
+                "sphere/random/tangent" => check(
+                    ints(&vecs(&[ray.origin, ray.dir, s.center]))
+                        && matches!(exact, SphereHit::Tangent(t) if [-1.0, 0.0, 1.0].contains(&t)),
+                    "not a tangent at −1, 0 or 1 in small integers",
+                ),
+                "sphere/random/far" => check(
+                    matches!(exact, SphereHit::Two(t0, _) if t0 > 0.0)
+                        && r >= p2(-30)
+                        && (p2(2)..=p2(40)).contains(&f.length())
+                        && f.length() / r >= p2(17),
+                    "not a far sphere ahead",
+                ),
+                "sphere/random/far-graze" => {
+                    let rel = (r / off_line - 1.0).abs();
+                    check(
+                        r >= p2(-30)
+                            && (p2(-24)..=p2(-8) + p2(-24)).contains(&rel)
+                            && (p2(0)..=p2(40)).contains(&f.length()),
+                        "the radius is not within 2⁻²³ to 2⁻⁸ of the distance to the line",
+                    )
+                }
+                _ => Err("no such sphere family".into()),
+            }
+        }
+        Case::Plane(ray, p) => {
+            let exact = plane::exact::intersect(ray, p).map_err(|e| format!("{e:?}"))?;
+            let (d, nv) = (ray.dir.as_dvec3(), p.normal.as_dvec3());
+            let cos = d.dot(nv).abs() / (d.length() * nv.length());
+            let all = vecs(&[ray.origin, ray.dir, p.point, p.normal]);
+            match family {
+                "plane/random/any" => check(all.iter().all(|x| x.abs() <= 20.0), "out of range"),
+                "plane/random/small-root" => check(
+                    matches!(exact, PlaneHit::Hit(t) if t > 1e-30 && t <= 1e-4),
+                    "no root in (1e-30, 1e-4]",
+                ),
+                "plane/random/on-plane" => check(
+                    ints(&all) && exact == PlaneHit::Hit(0.0),
+                    "the origin is not on the plane",
+                ),
+                "plane/random/in-plane" => check(
+                    ints(&all) && exact == PlaneHit::InPlane,
+                    "the line is not in the plane",
+                ),
+                "plane/random/grazing" => check(
+                    matches!(exact, PlaneHit::Hit(_))
+                        && (p2(-40)..=p2(-20) + p2(-23)).contains(&cos),
+                    "not a graze: |d·n| is not 2⁻⁴⁰ to 2⁻²⁰ of |d||n|",
+                ),
+                "plane/random/short-normal" => check(
+                    matches!(exact, PlaneHit::Hit(_))
+                        && (p2(-40) * 0.999..=p2(-20) * 1.001).contains(&nv.length())
+                        && cos > 0.199,
+                    "the normal is not short, or is met at a graze",
+                ),
+                _ => Err("no such plane family".into()),
+            }
+        }
+        Case::Quadric(ray, q) => {
+            let exact = quadric::exact::intersect(ray, q).map_err(|e| format!("{e:?}"))?;
+            let mut all = vecs(&[ray.origin, ray.dir]);
+            all.extend(q.coeffs);
+            match family {
+                "quadric/random/any" => {
+                    check(q.coeffs.iter().all(|x| x.abs() <= 2.0), "out of range")
+                }
+                "quadric/random/small-root" => check(
+                    first_positive(exact.roots().as_slice()).is_some_and(tiny),
+                    "no nearest root in (0, 2⁻²³]",
+                ),
+                "quadric/random/on-surface" => check(
+                    ints(&all)
+                        && (exact == QuadricHit::All || exact.roots().as_slice().contains(&0.0)),
+                    "the origin is not on the surface in small integers",
+                ),
+                "quadric/random/line-on-surface" => check(
+                    ints(&all) && exact == QuadricHit::All,
+                    "the line is not on the surface",
+                ),
+                "quadric/random/far-sphere" => check(
+                    q.coeffs[..9] == [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+                        && q.coeffs[9] < 0.0
+                        && matches!(exact, QuadricHit::Two(t0, _) if t0 > 0.0),
+                    "not a sphere ahead",
+                ),
+                _ => Err("no such quadric family".into()),
+            }
+        }
+        Case::Camera(p, px) => {
+            let builds = p.build().is_ok();
+            let in_image = px[0] < p.res[0] && px[1] < p.res[1];
+            let ok = match family {
+                "camera/random/any" => builds,
+                "camera/random/narrow" => {
+                    builds && (p2(-20) as f32..p2(-3) as f32).contains(&p.angle)
+                }
+                "camera/random/parallel-up" => {
+                    !builds && p.up != Vec3::ZERO && p.up.cross(p.dir) == Vec3::ZERO
+                }
+                "camera/random/bad-angle" => {
+                    !(builds || p.angle > 0.0 && p.angle < std::f32::consts::PI)
+                }
+                _ => return Err("no such camera family".into()),
+            };
+            check(ok && in_image, "not the family's camera")
+        }
     }
 }
