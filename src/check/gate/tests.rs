@@ -941,30 +941,44 @@ fn every_generated_family_keeps_its_promise() {
     for seed in [default, 7] {
         let mut seen = std::collections::BTreeMap::<String, usize>::new();
         let mut spread =
-            std::collections::BTreeMap::<String, [std::collections::BTreeSet<u32>; 6]>::new();
+            std::collections::BTreeMap::<String, Vec<std::collections::BTreeSet<u32>>>::new();
+        let mut kinds =
+            std::collections::BTreeMap::<String, std::collections::BTreeSet<&str>>::new();
         for kind in ["sphere", "plane", "quadric", "camera"] {
             for (family, case) in random_cases(kind, seed, n) {
-                if let Err(why) = promise(&family, &case) {
-                    panic!(
+                match promise(&family, &case) {
+                    Ok(kind) => kinds.entry(family.clone()).or_default().insert(kind),
+                    Err(why) => panic!(
                         "{family}, seed {seed}: {why}: {}",
                         eval_line(&case, &family)
-                    );
-                }
-                *seen.entry(family.clone()).or_default() += 1;
-                let (o, d) = match &case {
-                    Case::Sphere(r, _) | Case::Plane(r, _) | Case::Quadric(r, _) => {
-                        (r.origin, r.dir)
-                    }
-                    Case::Camera(p, _) => (p.position, p.dir),
+                    ),
                 };
+                *seen.entry(family.clone()).or_default() += 1;
+                let (o, d, k) = match &case {
+                    Case::Sphere(r, _) | Case::Plane(r, _) => (r.origin, r.dir, &[][..]),
+                    // The far sphere's coefficients are fixed but for J.
+                    Case::Quadric(r, _) if family.ends_with("far-sphere") => {
+                        (r.origin, r.dir, &[][..])
+                    }
+                    Case::Quadric(r, q) => (r.origin, r.dir, &q.coeffs[..]),
+                    Case::Camera(p, _) => (p.position, p.dir, &[][..]),
+                };
+                assert_ne!(d, Vec3::ZERO, "{family}, seed {seed}: no direction");
+                let x = o
+                    .to_array()
+                    .into_iter()
+                    .chain(d.to_array())
+                    .chain(k.iter().copied());
                 let values = spread.entry(family).or_default();
-                for (i, x) in o.to_array().into_iter().chain(d.to_array()).enumerate() {
+                for (i, x) in x.enumerate() {
+                    values.resize_with(values.len().max(i + 1), Default::default);
                     values[i].insert(x.to_bits());
                 }
             }
         }
-        // Every component of the origin and the direction takes three
-        // values or more, of both signs: no draw is stuck on one value.
+        // Every component of the origin and the direction (and a
+        // quadric's coefficients) takes three values or more, of both
+        // signs: no draw is stuck on one value.
         for (family, values) in &spread {
             let stuck = values.iter().position(|v| {
                 let x = v.iter().map(|&b| f32::from_bits(b));
@@ -984,22 +998,55 @@ fn every_generated_family_keeps_its_promise() {
         let short: Vec<_> = seen.iter().filter(|&(_, &c)| c != n).collect();
         assert!(short.is_empty(), "seed {seed}: {short:?}");
         assert_eq!(seen.len(), 21, "seed {seed}: {seen:?}");
-        // The grazing spheres fall on both sides of the silhouette.
-        let graze = random_cases("sphere", seed, n)
-            .into_iter()
-            .filter(|(f, _)| f == "sphere/random/far-graze");
-        let hits = graze
-            .filter(|(_, c)| matches!(c, Case::Sphere(r, s) if sphere::exact::intersect(r, s) != Ok(sphere::SphereHit::None)))
-            .count();
-        assert!(hits > 0 && hits < n, "seed {seed}: {hits} of {n} hit");
+        // The families drawn in kinds draw every kind.
+        for (family, all) in [
+            ("sphere/random/tangent", &["t = -1", "t = 0", "t = 1"][..]),
+            ("sphere/random/far-graze", &["hit", "miss"]),
+            ("plane/random/grazing", &["d·n < 0", "d·n > 0"]),
+            ("camera/random/parallel-up", &["up along", "up reversed"]),
+            (
+                "camera/random/bad-angle",
+                &["angle 0", "angle above π", "angle negative", "angle π"],
+            ),
+        ] {
+            let got: Vec<&str> = kinds[family].iter().copied().collect();
+            assert_eq!(got, all, "{family}, seed {seed}");
+        }
+        // The planes' small roots come both ways: everything at the scale
+        // of the root, and, for roots above 2⁻²⁰ only, the origin at the
+        // scale of 1 (below, the point's rounding would swamp the root).
+        let (mut at_root, mut at_one) = (0, 0);
+        for (f, c) in random_cases("plane", seed, 8 * n) {
+            let Case::Plane(ray, p) = c else { continue };
+            let Ok(plane::PlaneHit::Hit(t)) = plane::exact::intersect(&ray, &p) else {
+                continue;
+            };
+            if f == "plane/random/small-root" {
+                let o = ray.origin.abs().max_element();
+                if o <= 4.0 * t {
+                    at_root += 1;
+                } else {
+                    assert!(
+                        o > 1.0 / 64.0 && t > 2f32.powi(-21),
+                        "seed {seed}: {ray:?}, {t}"
+                    );
+                    at_one += 1;
+                }
+            }
+        }
+        assert!(
+            at_root > 0 && at_one > 0,
+            "seed {seed}: {at_root}, {at_one}"
+        );
     }
 }
 
-/// What `family` promises of `case`, checked against the exact oracle.
-fn promise(family: &str, case: &Case) -> Result<(), String> {
+/// What `family` promises of `case`, checked against the exact oracle,
+/// and, for a family drawn in kinds, the case's kind.
+fn promise(family: &str, case: &Case) -> Result<&'static str, String> {
     let ints = |v: &[f32]| v.iter().all(|x| x.fract() == 0.0 && x.abs() <= 16.0);
     let vecs = |v: &[Vec3]| v.iter().flat_map(|x| x.to_array()).collect::<Vec<f32>>();
-    let check = |ok: bool, why: &str| if ok { Ok(()) } else { Err(why.to_string()) };
+    let check = |ok: bool, why: &str| if ok { Ok("") } else { Err(why.to_string()) };
     let tiny = |t: f32| t > 0.0 && t <= f32::EPSILON;
     let first_positive = |roots: &[f32]| roots.iter().copied().find(|&t| t > 0.0);
     let p2 = |e: i32| 2f64.powi(e);
@@ -1044,7 +1091,12 @@ fn promise(family: &str, case: &Case) -> Result<(), String> {
                     ints(&vecs(&[ray.origin, ray.dir, s.center]))
                         && matches!(exact, SphereHit::Tangent(t) if [-1.0, 0.0, 1.0].contains(&t)),
                     "not a tangent at −1, 0 or 1 in small integers",
-                ),
+                )
+                .map(|_| match exact {
+                    SphereHit::Tangent(t) if t < 0.0 => "t = -1",
+                    SphereHit::Tangent(0.0) => "t = 0",
+                    _ => "t = 1",
+                }),
                 "sphere/random/far" => check(
                     matches!(exact, SphereHit::Two(t0, _) if t0 > 0.0)
                         && r >= p2(-30)
@@ -1060,6 +1112,13 @@ fn promise(family: &str, case: &Case) -> Result<(), String> {
                             && (p2(0)..=p2(40)).contains(&f.length()),
                         "the radius is not within 2⁻²³ to 2⁻⁸ of the distance to the line",
                     )
+                    .map(|_| {
+                        if exact == SphereHit::None {
+                            "miss"
+                        } else {
+                            "hit"
+                        }
+                    })
                 }
                 _ => Err("no such sphere family".into()),
             }
@@ -1087,7 +1146,14 @@ fn promise(family: &str, case: &Case) -> Result<(), String> {
                     matches!(exact, PlaneHit::Hit(_))
                         && (p2(-40)..=p2(-20) + p2(-23)).contains(&cos),
                     "not a graze: |d·n| is not 2⁻⁴⁰ to 2⁻²⁰ of |d||n|",
-                ),
+                )
+                .map(|_| {
+                    if d.dot(nv) < 0.0 {
+                        "d·n < 0"
+                    } else {
+                        "d·n > 0"
+                    }
+                }),
                 "plane/random/short-normal" => check(
                     matches!(exact, PlaneHit::Hit(_))
                         && (p2(-40) * 0.999..=p2(-20) * 1.001).contains(&nv.length())
@@ -1130,20 +1196,31 @@ fn promise(family: &str, case: &Case) -> Result<(), String> {
         Case::Camera(p, px) => {
             let builds = p.build().is_ok();
             let in_image = px[0] < p.res[0] && px[1] < p.res[1];
-            let ok = match family {
-                "camera/random/any" => builds,
+            let pi = std::f32::consts::PI;
+            let (ok, kind) = match family {
+                "camera/random/any" => (builds, ""),
                 "camera/random/narrow" => {
-                    builds && (p2(-20) as f32..p2(-3) as f32).contains(&p.angle)
+                    let narrow = (p2(-20) as f32..p2(-3) as f32).contains(&p.angle);
+                    (builds && narrow, "")
                 }
                 "camera/random/parallel-up" => {
-                    !builds && p.up != Vec3::ZERO && p.up.cross(p.dir) == Vec3::ZERO
+                    let along = p.up.dot(p.dir) > 0.0;
+                    let ok = !builds && p.up != Vec3::ZERO && p.up.cross(p.dir) == Vec3::ZERO;
+                    (ok, if along { "up along" } else { "up reversed" })
                 }
                 "camera/random/bad-angle" => {
-                    !(builds || p.angle > 0.0 && p.angle < std::f32::consts::PI)
+                    let a = p.angle;
+                    let kind = match a {
+                        _ if a == pi => "angle π",
+                        _ if a > pi => "angle above π",
+                        _ if a == 0.0 => "angle 0",
+                        _ => "angle negative",
+                    };
+                    (!(builds || a > 0.0 && a < pi), kind)
                 }
                 _ => return Err("no such camera family".into()),
             };
-            check(ok && in_image, "not the family's camera")
+            check(ok && in_image, "not the family's camera").map(|_| kind)
         }
     }
 }
