@@ -383,6 +383,29 @@ mod tests {
         assert!(cancelled > 10, "{cancelled}");
     }
 
+    /// A float is one component, and 0 none; Compress merges two
+    /// components whose sum is exact, down to one; the debug form lists
+    /// the components, smallest first.
+    #[test]
+    fn single_floats_and_exact_sums_take_the_fewest_components() {
+        assert!(Expansion::from_f64(0.0).components().is_empty());
+        assert!(Expansion::from_f64(-0.0).components().is_empty());
+        for x in [1.0, -3.5, f64::MIN_POSITIVE, -1e300] {
+            assert_eq!(Expansion::from_f64(x).components(), &[x]);
+        }
+        let mut e = Expansion::ZERO;
+        e.push(1.0).unwrap();
+        e.push(2.0).unwrap();
+        assert_eq!(e.components(), &[1.0, 2.0]);
+        assert_eq!(e.compress().components(), &[3.0]);
+        // 1 + 2⁵³ is not an f64: the two stay.
+        let mut far = Expansion::ZERO;
+        far.push(1.0).unwrap();
+        far.push(2f64.powi(53)).unwrap();
+        assert_eq!(far.compress().components(), far.components());
+        assert_eq!(format!("{e:?}"), "[1.0, 2.0]");
+    }
+
     /// An expansion declines a component past [`CAP`] instead of losing
     /// it; a full one still takes a sum that needs no new component.
     #[test]

@@ -365,6 +365,23 @@ mod tests {
                 assert_eq!(got.to_bits(), want.to_bits(), "{want:e} from {guess:e}");
                 assert!(n <= 72, "{want:e} from {guess:e}: {n} comparisons");
             }
+            // The search itself, which the shortcut spares here, starts
+            // from the guess too: a few floats off costs a short gallop.
+            for off in [-3, 2, 5] {
+                let n = std::cell::Cell::new(0);
+                let cmp = |m: f64| {
+                    n.set(n.get() + 1);
+                    p.cmp(&(&Dyadic::from_f64(m) * &q))
+                };
+                let near = float_of((key_of(want) + off).clamp(-MAX_KEY, MAX_KEY));
+                let got = search(&cmp, f64::from(near));
+                assert_eq!(got.to_bits(), want.to_bits(), "{want:e} from {near:e}");
+                assert!(
+                    n.get() <= 14,
+                    "{want:e} from {near:e}: {} comparisons",
+                    n.get()
+                );
+            }
         }
     }
 
