@@ -23,7 +23,7 @@
 //! TwoSum, every error into the low word by plain additions, and the sum
 //! of those errors' magnitudes `m` for the grid test. Lanes 1 and 2 are
 //! then joined by one more TwoSum. Every value entering a low word is a
-//! multiple of the data's [`grid`](super::stages::grid) `g` (products,
+//! multiple of the data's [`grid`](super::stages::grid()) `g` (products,
 //! their errors and TwoSum's errors of multiples of `g` are), and each
 //! low word's partial sums, lane 1's and 2's joined included, are sums of
 //! subsets of those values: where their magnitudes sum below `2⁵²g`
@@ -65,10 +65,10 @@ pub(crate) fn exact(k: &[f64; 10], o: [f64; 3], d: [f64; 3], g: f64) -> Option<[
 
 /// α, β and γ of the line `o + t d` on the quadric `k` in double words
 /// with their bounds, from the filter's magnitude sums `m`: the
-/// [module](self)'s sums, without the grid, as
-/// [`bounded_words`](super::stages::bounded_words) computes them one
-/// lane at a time (the same operations in the same order, so the same
-/// words), with its bound.
+/// [module](self)'s sums, without the grid, as the scalar
+/// `bounded_words` of the later stages computes them one lane at a time
+/// (the same operations in the same order, so the same words), with its
+/// bound.
 ///
 /// Under the same conditions as [`exact`].
 #[inline(always)]
