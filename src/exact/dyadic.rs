@@ -885,7 +885,6 @@ pub(crate) mod tests {
 
     /// The dyadic products `f` forms: 0 where the oracle decides on
     /// expansions alone.
-    #[cfg(feature = "plane")]
     pub(crate) fn products_during<R>(f: impl FnOnce() -> R) -> (R, usize) {
         let before = PRODUCTS.with(Cell::get);
         let r = f();

@@ -673,6 +673,87 @@ mod tests {
         assert!(told > 4 * declined && declined > 1_000, "{told} {declined}");
     }
 
+    /// The filter's bounds are the derivation's: each of `p(m)`, `Σxᵢkᵢ`
+    /// and `β² − 4αγ` is told where its `f64` value lies beyond `FILTER`
+    /// times its magnitudes (formed as the module says) plus `TINY`, and
+    /// declined within, at a tenth either side; a value below `TINY` is
+    /// never told. The magnitudes and the points are spread (`|m|` up to
+    /// `2²⁰`, magnitudes from `2⁻¹⁰` to `2¹⁰`), so that a slip in how they
+    /// combine moves the bound by far more than a tenth.
+    #[test]
+    fn the_filters_bounds_are_the_derivations() {
+        let n = |v: f64, mag: f64| Near { v, mag };
+        // Each case with its value set to `scale` times the derived bound.
+        let at = |scale: f64, m: f64, mags: [f64; 3]| {
+            let [ma, mb, mc] = mags;
+            let horner = (ma * m.abs() + mb) * m.abs() + mc;
+            let sum = ma * (2.0 * m).abs() + mb;
+            let disc = mb * mb + 4.0 * ma * mc;
+            let v = |mag: f64| scale * (FILTER * mag + TINY);
+            // p(m) = v: all of it in γ; 2αm + β = v: all of it in β; the
+            // discriminant −4α̂γ̂ = v with β̂ = 0, α̂ = ½.
+            let p = Near::horner(&[n(0.0, ma), n(0.0, mb), n(v(horner), mc)], m);
+            let side = Near::sum([(n(0.0, ma), 2.0 * m), (n(v(sum), mb), 1.0)]);
+            let d = Near::discriminant(&[n(0.5, ma), n(0.0, mb), n(-v(disc) / 2.0, mc)]);
+            [p, side, d.0]
+        };
+        let mags = [
+            [1.0, 0.0, 0.0],
+            [2f64.powi(10), 1.0, 2f64.powi(-10)],
+            [1.0, 2f64.powi(10), 3.0],
+        ];
+        for m in [1.0, -3.0, 2f64.powi(20), -2f64.powi(-7)] {
+            for mags in mags {
+                let what = format!("m = {m}, magnitudes {mags:?}");
+                assert_eq!(at(1.1, m, mags), [Some(Ordering::Greater); 3], "{what}");
+                assert_eq!(at(0.9, m, mags), [None; 3], "{what}");
+                assert_eq!(at(-1.1, m, mags), [Some(Ordering::Less); 3], "{what}");
+            }
+        }
+        // Nothing below TINY = 2⁻⁹⁰⁰, however small the magnitudes.
+        let tiny = |v: f64| Near::sum([(n(v, 0.0), 1.0)]);
+        assert_eq!(tiny(2f64.powi(-901)), None);
+        assert_eq!(tiny(-(2f64.powi(-901))), None);
+        assert_eq!(tiny(2f64.powi(-899)), Some(Ordering::Greater));
+        // The discriminant's value comes back with its sign, β̂² in it.
+        let (sign, v) = Near::discriminant(&[n(1.0, 1.0), n(3.0, 3.0), n(2.0, 2.0)]);
+        assert_eq!((sign, v), (Some(Ordering::Greater), 1.0));
+    }
+
+    /// Where every coefficient is short once compressed, the solve is
+    /// decided on expansions alone: no dyadic product, over random
+    /// quadratics at every scale, tangents and double roots among them;
+    /// and the comparisons the filter cannot tell, at roots near a
+    /// midpoint and at exact double roots, are among them.
+    #[test]
+    fn short_expansions_decide_without_dyadics() {
+        use crate::exact::dyadic::tests::products_during;
+        let mut r = SmallRng::seed_from_u64(14);
+        let (mut short, mut long) = (0, 0);
+        for _ in 0..3_000 {
+            let q = random_quadratic(&mut r);
+            let e = [&q.alpha, &q.beta, &q.gamma].map(Dyadic::expansion);
+            let [Some(a), Some(b), Some(c)] = e else {
+                continue;
+            };
+            if [a, b, c]
+                .iter()
+                .any(|x| x.compress().components().len() > SHORT)
+            {
+                continue;
+            }
+            long += usize::from([a, b, c].iter().any(|x| x.components().len() > SHORT));
+            short += 1;
+            let (got, n) = products_during(|| q.solve());
+            assert_eq!(n, 0, "{q:?}: {got:?} formed {n} dyadic products");
+        }
+        // Most are short, and some only once compressed.
+        assert!(
+            short > 2_000 && long > 50,
+            "{short} short, {long} long before compression"
+        );
+    }
+
     /// Solving on `i128` mantissas gives bit for bit what solving on big
     /// integers alone gives, at every scale.
     #[test]
@@ -714,9 +795,11 @@ mod tests {
     /// each root, and the search then settles in a few comparisons where
     /// a guess of 0 (or a wrong sign) needs 60 or more. Over these
     /// quadratics (two roots, a double root, a linear one, roots far
-    /// apart) each root costs at most 12.
+    /// apart) each root costs at most 12, on the expansions and on the
+    /// dyadics alone (`solve_dyadic`'s guesses are its own).
     #[test]
     fn good_guesses_make_the_search_short() {
+        use crate::exact::dyadic::tests::big_only;
         use crate::exact::round::comparisons;
         let q = |a: f32, b: f32, c: f32| Quadratic::new(dy(a), dy(b), dy(c));
         let cases = [
@@ -729,11 +812,32 @@ mod tests {
             (q(0.0, 5.0, 2.0), 1),
         ];
         for (quad, roots) in cases {
-            let mut out = ExactQuadratic::None;
-            let n = comparisons::during(|| out = quad.solve());
-            assert_eq!(out.roots().len(), roots, "{out:?}");
-            assert!(n <= 12 * roots, "{out:?}: {n} comparisons");
+            for dyadic in [false, true] {
+                let mut out = ExactQuadratic::None;
+                let solve = || out = quad.solve();
+                let n = if dyadic {
+                    big_only(|| comparisons::during(solve))
+                } else {
+                    comparisons::during(solve)
+                };
+                assert_eq!(out.roots().len(), roots, "{out:?}");
+                assert!(n <= 12 * roots, "{out:?}, dyadic {dyadic}: {n} comparisons");
+            }
         }
+    }
+
+    /// The debug form names the three coefficients, as normalised, and
+    /// not the expansions kept beside them.
+    #[test]
+    fn the_debug_form_shows_the_normalised_coefficients() {
+        let q = Quadratic::new(dy(-2.0), dy(3.0), dy(0.5));
+        let want = format!(
+            "Quadratic {{ alpha: {:?}, beta: {:?}, gamma: {:?} }}",
+            dy(2.0),
+            dy(-3.0),
+            dy(-0.5)
+        );
+        assert_eq!(format!("{q:?}"), want);
     }
 
     #[test]

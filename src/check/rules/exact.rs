@@ -617,7 +617,7 @@ fn alpha_terms(ray: &Ray, q: &Quadric) -> f64 {
         + (k[5] * dd[1] * dd[2]).abs()
 }
 
-#[cfg(test)]
+#[cfg(all(test, any(feature = "plane", feature = "sphere", feature = "quadric")))]
 mod tests {
     use super::*;
     #[cfg(feature = "quadric")]
