@@ -19,9 +19,9 @@
 //! * `sphere/random/tangent`: exact tangents in small integers, which a
 //!   kernel that takes `b² − ac = 0` for a miss gets wrong;
 //! * `plane/random/grazing`: `|d·n|` from about `2⁻³⁵` to `2⁻²⁰` of
-//!   `|d||n|`, a hit far away; `plane/random/short-normal`: a normal `2⁻⁴⁰` to `2⁻²⁰`
-//!   long met at an angle, which an absolute `|d·n| < 1e-6` parallel test
-//!   drops;
+//!   `|d||n|`, a hit far away; `plane/random/short-normal`: a normal
+//!   `2⁻⁴⁰` to `2⁻²⁰` long met at an angle, which an absolute `|d·n| <
+//!   1e-6` parallel test drops;
 //! * `sphere/random/far`, `sphere/random/far-graze`: `|f|/R` from about 10⁵
 //!   to 10¹² at distances up to 10¹² (radii down to 10⁻⁹), through the
 //!   centre or off it, and rays grazing the silhouette, where even the
