@@ -605,6 +605,90 @@ mod tests {
         assert!(decided * 10 > all * 6, "{decided} of {all}");
     }
 
+    /// An axis-aligned camera, whose basis has zero components, keeps its
+    /// `f64` enclosures (a zero end is 0, whatever its exponent), and they
+    /// decide its components at the corners.
+    #[test]
+    fn zero_components_keep_the_f64_enclosures() {
+        let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [4, 4]);
+        let e = Exact::new(&p);
+        let u = unit64(&e).expect("f64 enclosures for an axis-aligned camera");
+        let (nx, ny) = (numerator(0, 4), numerator(3, 4));
+        for i in 0..3 {
+            assert!(e.component64(&u, i, nx, ny).is_some(), "component {i}");
+        }
+    }
+
+    /// Where flush-to-zero is on, no `f64` enclosure is formed: their
+    /// outward rounding assumes subnormals. Without it, the same camera
+    /// has them.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn no_f64_enclosures_where_subnormals_flush() {
+        let p = CameraParams::new(Vec3::ZERO, -Vec3::Z, Vec3::Y, 1.0, [4, 4]);
+        let formed = move || unit64(&Exact::new(&p)).is_some();
+        assert!(!crate::num::certify::in_environment(true, false, formed));
+        assert!(crate::num::certify::in_environment(false, false, formed));
+    }
+
+    /// The components that the enclosures given do not decide are kept
+    /// per camera and each found again by its own key: from enclosures of
+    /// 2 bits, which decide none, every component of several pixels goes
+    /// through the kept ones, asked for twice in turn, and is the one a
+    /// fresh camera gives.
+    #[test]
+    fn kept_components_are_found_by_their_own_pixel() {
+        let p = CameraParams::new(Vec3::ZERO, Vec3::new(0.3, -1.0, 0.7), Vec3::Y, 0.9, [8, 8]);
+        let (e, fresh) = (Exact::new(&p), Exact::new(&p));
+        let coarse = e.approx(2);
+        let pixels = [(0, 0), (3, 5), (7, 7), (5, 2)];
+        for _ in 0..2 {
+            for (px, py) in pixels {
+                let (nx, ny) = (numerator(px, 8), numerator(py, 8));
+                for i in 0..3 {
+                    let want = fresh.round_component(&fresh.approx(FIRST_BITS), i, nx, ny);
+                    let got = e.round_component(&coarse, i, nx, ny);
+                    assert_eq!(got.to_bits(), want.to_bits(), "({px}, {py}) component {i}");
+                }
+            }
+        }
+        assert!(e.hard.borrow().len() >= 6, "{} kept", e.hard.borrow().len());
+    }
+
+    /// An `f64` enclosure decides only where both ends are on one side of
+    /// 0 and round to one `f32`: not where an end is 0, nor where an end is
+    /// NaN or the ends are inverted; a point decides.
+    #[test]
+    fn an_f64_enclosure_decides_only_off_zero() {
+        let iv = |lo: f64, hi: f64| Iv64 { lo, hi }.decide();
+        assert_eq!(iv(1.0, 1.0), Some(1.0));
+        assert_eq!(iv(-3.0, -3.0), Some(-3.0));
+        assert_eq!(iv(1.0, 1.0 + 2f64.powi(-40)), Some(1.0));
+        assert_eq!(iv(0.0, 1e-50), None);
+        assert_eq!(iv(-1e-50, 0.0), None);
+        assert_eq!(iv(-1e-50, 1e-50), None);
+        assert_eq!(iv(0.0, 0.0), None);
+        assert_eq!(iv(-0.0, -0.0), None);
+        assert_eq!(iv(f64::NAN, f64::NAN), None);
+        assert_eq!(iv(2.0, 1.0), None);
+        assert_eq!(iv(1.0, 1.0 + 2f64.powi(-20)), None);
+    }
+
+    /// The enclosures are taken at the precision asked for plus 8 guard
+    /// bits, and each refinement asks for twice the last, so that Ziv's
+    /// loop grows geometrically from a first precision just above what
+    /// most components need.
+    #[test]
+    fn the_enclosures_precision_doubles_from_the_first() {
+        let p = CameraParams::new(Vec3::ZERO, Vec3::new(0.3, -1.0, 0.7), Vec3::Y, 0.9, [8, 8]);
+        let e = Exact::new(&p);
+        let a = e.approx(FIRST_BITS);
+        assert_eq!(a.p, FIRST_BITS + 8);
+        let b = e.refine(&a);
+        assert_eq!(b.p, 2 * a.p + 8);
+        assert_eq!(e.refine(&b).p, 2 * b.p + 8);
+    }
+
     #[test]
     fn b_is_zero_at_the_centre_and_where_the_terms_cancel() {
         // dir = −z, up = y: X = (1, 0, 0), Y = (0, −1, 0).
