@@ -15,17 +15,22 @@ use crate::Ray;
 use crate::camera::Camera;
 use crate::ray4::Ray4;
 use glam::Vec3;
-use wide::{f32x4, i32x4};
+use wide::f32x4;
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
+use wide::i32x4;
 
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 /// Four lanes in order 1, 0, 2, 3.
 fn swap01<T: Copy>(a: [T; 4]) -> [T; 4] {
     [a[1], a[0], a[2], a[3]]
 }
 
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn swap_f(v: f32x4) -> f32x4 {
     f32x4::from(swap01(v.to_array()))
 }
 
+#[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 fn swap_i(v: i32x4) -> i32x4 {
     i32x4::from(swap01(v.to_array()))
 }

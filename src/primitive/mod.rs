@@ -286,6 +286,7 @@ pub(crate) fn padded<const N: usize>(v: &[f32]) -> [f32; N] {
 
 #[cfg(test)]
 mod tests {
+    #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
     use super::*;
     #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
     use crate::hit::{Class, same_bits};
