@@ -30,6 +30,15 @@ for target in $(cargo fuzz list); do
   dir=$(sed -n 's/.*--target-dir \([^ ]*\).*/\1/p' <<<"$flags")
   (cd fuzz && cargo fuzz build -O -a "${args[@]}" $flags "$target")
   cp "fuzz/${dir:-target}/$triple/release/$target" "$OUT/$target"
+  # The libFuzzer options, as ClusterFuzz reads them: $OUT/TARGET.options.
+  options=$(fuzz/kernel-targets --options "$target")
+  if [ -n "$options" ]; then
+    printf '[libfuzzer]\n' >"$OUT/$target.options"
+    for o in $options; do
+      o=${o#-}
+      printf '%s = %s\n' "${o%%=*}" "${o#*=}" >>"$OUT/$target.options"
+    done
+  fi
   if [ -d "fuzz/corpus/$target" ]; then
     (cd "fuzz/corpus/$target" && python3 -m zipfile -c "$OUT/${target}_seed_corpus.zip" .)
     test -s "$OUT/${target}_seed_corpus.zip"
