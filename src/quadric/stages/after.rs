@@ -1506,4 +1506,189 @@ mod tests {
         }
         assert!(bounded > 0);
     }
+
+    /// The tracked stage decides the exact zeros it is for, as the oracle
+    /// does: a double root at a cone's apex, a line on a cylinder, a root
+    /// exactly 0 from a sphere's surface, a linear root (α = 0), and a
+    /// miss whose `Δ` is exactly negative.
+    #[test]
+    fn tracked_decides_the_exact_zeros() {
+        let sphere = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+        let cases = [
+            (
+                [1.0, 1.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+                [-1.0, 0.0, -2.0],
+                [1.0, 0.0, 2.0],
+                QuadricHit::One(1.0),
+            ),
+            (
+                [1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0],
+                [1.0, 0.0, 0.0],
+                [0.0, 0.0, 1.0],
+                QuadricHit::All,
+            ),
+            (
+                sphere,
+                [1.0, 0.0, 0.0],
+                [1.0, 0.0, 0.0],
+                QuadricHit::Two(-2.0, 0.0),
+            ),
+            (
+                [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -2.0],
+                [0.0, 0.0, 0.0],
+                [0.0, 1.0, 0.0],
+                QuadricHit::One(2.0),
+            ),
+            (sphere, [0.0, 2.0, 0.0], [1.0, 0.0, 0.0], QuadricHit::None),
+        ];
+        for (k, o, d, want) in cases {
+            assert_eq!(tracked(&k, o, d), Some(want), "{k:?} {o:?} {d:?}");
+            let r = Ray::new(
+                Vec3::from_array(o.map(|x| x as f32)),
+                Vec3::from_array(d.map(|x| x as f32)),
+            );
+            assert_eq!(
+                exact::intersect(&r, &Quadric::new(k.map(|x| x as f32))),
+                Ok(want)
+            );
+        }
+    }
+
+    /// Exact terms whose plain sums would round, magnitudes `2⁵⁴` next to
+    /// 1 on the grid 1, are summed on the grid instead: α = `−2⁵⁴ + 1 +
+    /// 2⁵⁴` = 1 and β likewise with α = 0, each with γ = −1 and γ = 0;
+    /// summed plainly, each is 0, and the class changes. The reference,
+    /// whose later stages start from the filter's sums where they are
+    /// provably exact, answers the same.
+    #[test]
+    fn tracked_sums_terms_that_would_round_on_the_grid() {
+        let big = 2f64.powi(54);
+        let cases = [
+            (
+                [-big, 1.0, 0.0, big, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0],
+                [1.0, 1.0, 0.0],
+                QuadricHit::Two(-1.0, 1.0),
+            ),
+            (
+                [-big, 1.0, 0.0, big, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+                [1.0, 1.0, 0.0],
+                QuadricHit::One(0.0),
+            ),
+            (
+                [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, -big, big, -1.0],
+                [1.0, 1.0, 1.0],
+                QuadricHit::One(1.0),
+            ),
+            (
+                [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, -big, big, 0.0],
+                [1.0, 1.0, 1.0],
+                QuadricHit::One(0.0),
+            ),
+        ];
+        for (k, d, want) in cases {
+            let o = [0.0; 3];
+            assert!(grid(&k, o, d) <= 1.0, "{k:?}");
+            assert_eq!(tracked(&k, o, d), Some(want), "{k:?}");
+            let r = Ray::new(Vec3::ZERO, Vec3::from_array(d.map(|x| x as f32)));
+            let q = Quadric::new(k.map(|x| x as f32));
+            assert_eq!(exact::intersect(&r, &q), Ok(want));
+            // The reference's shortcut for exact filter sums
+            // (`later_head`) must not take these either.
+            let (got, stage) = crate::quadric::reference::intersect_staged(&r, &q);
+            assert_eq!(got, want, "{k:?}: {stage:?}");
+        }
+    }
+
+    /// Where the tracked stage hands the double-word stage its sums as
+    /// words with bounds (exact terms of spread exponents, which the grid
+    /// cannot prove), each bound is the unshrunk one times `shrink`.
+    #[test]
+    fn the_tracked_words_bounds_scale_with_shrink() {
+        let p = |e| 2f64.powi(e);
+        let k = [
+            p(60),
+            3.0 * p(-60),
+            5.0 * p(-20),
+            7.0,
+            3.0 * p(30),
+            p(-40),
+            p(60),
+            p(-60),
+            3.0,
+            -1.0,
+        ];
+        let (o, d) = ([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]);
+        let t = ExactTerms::new::<Dekker>(&k, o, d);
+        let words = |shrink| match tracked_in::<Dekker>(&t, shrink) {
+            (None, Sums::Words(w)) => w,
+            other => panic!("not words: {other:?}"),
+        };
+        let (one, quarter) = (words(1.0), words(0.25));
+        assert!(one.iter().any(|w| w.err > 0.0), "{one:?}");
+        for (a, b) in one.iter().zip(&quarter) {
+            assert_eq!((b.hi, b.lo, b.err), (a.hi, a.lo, a.err * 0.25));
+        }
+    }
+
+    /// `disc_near`'s and `single_word_disc`'s bounds are their
+    /// derivations' (`(e_b(2|b̂| + e_b) + |â|e_c + e_a(|ĉ| + e_c) + 3u(b̂² +
+    /// |âĉ|))·SLACK·shrink`, and `u(|d̂ₕ| + |d̂ₗ| + |Δ̂|)·SLACK`, the latter
+    /// bit for bit, as its low words are too small for a tolerance to
+    /// see), on values and bounds of either sign and many scales, at
+    /// `shrink` 1 and 1/4; and the single-word value is the sum of the
+    /// TwoProduct words' differences.
+    #[test]
+    fn the_discriminants_bounds_are_the_derivations() {
+        let mut r = SmallRng::seed_from_u64(0xd15c);
+        let mut x = |scale: i32| {
+            let v = r.random_range(-1.0..1.0) * 2f64.powi(r.random_range(-scale..=scale));
+            Approx {
+                v,
+                e: v.abs() * 2f64.powi(r.random_range(-50..-10)),
+            }
+        };
+        for _ in 0..2_000 {
+            let (a, b, c) = (x(30), x(30), x(30));
+            for shrink in [1.0, 0.25] {
+                let got = disc_near(a, b, c, shrink);
+                let (b2, ac) = (b.v * b.v, a.v * c.v);
+                let data =
+                    b.e * (2.0 * b.v.abs() + b.e) + a.v.abs() * c.e + a.e * (c.v.abs() + c.e);
+                let want = (data + 3.0 * U * (b2 + ac.abs())) * SLACK * shrink;
+                assert_eq!(got.v, b2 - ac);
+                assert!(
+                    ((got.e - want) / want).abs() < 1e-14,
+                    "{got:?}, not {want:e}"
+                );
+            }
+            let got = single_word_disc::<Dekker>(a.v, b.v, c.v);
+            let (h1, l1) = Dekker::two_prod(b.v, b.v);
+            let (h2, l2) = Dekker::two_prod(a.v, c.v);
+            let (dh, dl) = (h1 - h2, l1 - l2);
+            let want = U * (dh.abs() + dl.abs() + (dh + dl).abs()) * SLACK;
+            assert_eq!((got.v, got.e), (dh + dl, want));
+        }
+    }
+
+    /// The words stage goes first only where α̂ and γ̂ are nonzero and
+    /// `Δ̂/4 = (β̂/2)² − α̂γ̂` is above `2⁻²⁰(β̂/2)²`: with β̂ = 6, α̂ = 1,
+    /// γ̂ = 9(1 − 2⁻ʲ) just past, on and inside that threshold, and with
+    /// α̂ or γ̂ zero.
+    #[test]
+    fn the_words_stage_goes_first_only_clear_of_exact_zeros() {
+        let first = |a: f64, b: f64, c: f64| {
+            words_first(&Left {
+                alpha: (a, 1.0),
+                beta: (b, 1.0),
+                gamma: (c, 1.0),
+            })
+        };
+        let near = |j: i32| 9.0 * (1.0 - 2f64.powi(-j));
+        assert!(first(1.0, 6.0, near(19)));
+        assert!(!first(1.0, 6.0, near(20)));
+        assert!(!first(1.0, 6.0, near(21)));
+        assert!(first(1.0, 6.0, 1.0));
+        assert!(!first(0.0, 6.0, 1.0));
+        assert!(!first(1.0, 6.0, 0.0));
+    }
 }
