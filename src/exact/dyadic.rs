@@ -1196,4 +1196,37 @@ pub(crate) mod tests {
         assert_eq!((&b * &b).to_f64(), 2f64.powi(-298));
         assert!(a > b && -&a < b);
     }
+
+    /// A mantissa is kept in the narrowest form its odd part fits, the
+    /// trailing zeros moved into the exponent: an `i128`, 255 bits on the
+    /// stack (`Wide`, which the fixed-width paths read through
+    /// `wide_mant`), or a big integer; and the debug form shows it in
+    /// decimal in each.
+    #[test]
+    fn mantissas_take_the_narrowest_form_that_fits() {
+        let one = IBig::from(1u8);
+        let small = Dyadic::big(IBig::from(3u8) << 300, 0);
+        assert!(matches!(small.mant, Mant::Small(3)) && small.exp == 300);
+        assert_eq!(format!("{small:?}"), "Dyadic { mant: 3, exp: 300 }");
+        // 200 odd bits, 300 in all: wide.
+        let odd = (&one << 200) - &one;
+        let wide = Dyadic::big(&odd << 100, -7);
+        assert!(matches!(wide.mant, Mant::Wide(_)) && wide.exp == 93);
+        assert_eq!(
+            wide.wide_mant().map(super::wide::to_ibig),
+            Some(odd.clone())
+        );
+        assert_eq!(
+            format!("{wide:?}"),
+            format!("Dyadic {{ mant: {odd}, exp: 93 }}")
+        );
+        // 300 odd bits: big.
+        let odd = (&one << 300) - &one;
+        let big = Dyadic::big(odd.clone(), 5);
+        assert!(matches!(big.mant, Mant::Big(_)) && big.wide_mant().is_none());
+        assert_eq!(
+            format!("{big:?}"),
+            format!("Dyadic {{ mant: {odd}, exp: 5 }}")
+        );
+    }
 }
