@@ -1229,4 +1229,47 @@ pub(crate) mod tests {
             format!("Dyadic {{ mant: {odd}, exp: 5 }}")
         );
     }
+
+    /// `expansion` admits exactly the values its contract names: lowest
+    /// set bit at `2^LOW` or above, magnitude below `2^HIGH`, and one
+    /// component per nonzero 32-bit chunk of the mantissa.
+    #[test]
+    fn expansion_admits_the_stated_range() {
+        use super::expansion::{HIGH, LOW};
+        let admitted = |d: &Dyadic| {
+            let e = d.expansion()?;
+            assert_eq!(&Dyadic::from_expansion(&e), d);
+            Some(e.components().len())
+        };
+        assert_eq!(admitted(&Dyadic::ZERO), Some(0));
+        assert_eq!(admitted(&Dyadic::new(1, LOW)), Some(1));
+        assert_eq!(admitted(&Dyadic::new(-1, LOW - 1)), None);
+        assert_eq!(admitted(&Dyadic::new(0xffff_ffff, HIGH - 32)), Some(1));
+        assert_eq!(admitted(&Dyadic::new(-1, HIGH - 33)), Some(1));
+        assert_eq!(admitted(&Dyadic::new(1, HIGH)), None);
+        // A big mantissa keeps its trailing zeros, so its lowest set bit,
+        // not its exponent, is what must reach `2^LOW`.
+        let one = IBig::from(1u8);
+        let odd = (&one << 300) + &one;
+        let big = Dyadic::big(&odd << 20, LOW - 10);
+        assert!(matches!(big.mant, Mant::Big(_)));
+        assert_eq!(admitted(&big), Some(2));
+        assert_eq!(admitted(&Dyadic::big(&odd << 20, LOW - 21)), None);
+    }
+
+    /// Components too far apart for the fixed accumulator are summed one
+    /// by one, to the same value.
+    #[test]
+    fn from_expansion_sums_spans_wider_than_the_accumulator() {
+        let tiny = f64::from_bits(1);
+        let e = Expansion::from_f64(tiny)
+            .grow(-1e300)
+            .unwrap()
+            .grow(2.0)
+            .unwrap();
+        assert_eq!(e.components().len(), 3);
+        let want = &(&Dyadic::from_f64(tiny) + &Dyadic::from_f64(-1e300)) + &Dyadic::from_f64(2.0);
+        assert_eq!(Dyadic::from_expansion(&e), want);
+        assert_eq!(want.signum(), -1);
+    }
 }
