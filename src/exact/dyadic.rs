@@ -568,6 +568,8 @@ fn add_or_sub<const SUB: bool>(x: &Dyadic, y: &Dyadic) -> Dyadic {
     if let (Some(a), Some(b)) = (x.fixed(), y.fixed())
         && let Some(r) = add_fixed::<SUB>((a, x.exp), (b, y.exp))
     {
+        #[cfg(test)]
+        tests::count_sum(0);
         return r;
     }
     add_or_sub_wider::<SUB>(x, y)
@@ -580,6 +582,8 @@ fn add_or_sub_wider<const SUB: bool>(x: &Dyadic, y: &Dyadic) -> Dyadic {
     if let (Some(a), Some(b)) = (x.wide_mant(), y.wide_mant())
         && let Some(r) = add_wide((a, x.exp), (if SUB { -b } else { b }, y.exp))
     {
+        #[cfg(test)]
+        tests::count_sum(1);
         return r;
     }
     let (a, b) = (x.ibig(), y.ibig());
@@ -601,6 +605,8 @@ fn add_or_sub_wider<const SUB: bool>(x: &Dyadic, y: &Dyadic) -> Dyadic {
     } else {
         a.as_ref() + b.as_ref()
     };
+    #[cfg(test)]
+    tests::count_sum(2);
     Dyadic::big(m, e)
 }
 
@@ -882,6 +888,25 @@ pub(crate) mod tests {
 
     thread_local!(pub(crate) static BIG_ONLY: Cell<bool> = const { Cell::new(false) });
     thread_local!(pub(crate) static PRODUCTS: Cell<usize> = const { Cell::new(0) });
+    thread_local!(static SUMS: Cell<[usize; 3]> = const { Cell::new([0; 3]) });
+
+    /// Counts one sum or difference of two dyadics formed on `i128`
+    /// mantissas (`width` 0), 256-bit ones (1) or big integers (2).
+    pub(crate) fn count_sum(width: usize) {
+        SUMS.with(|n| {
+            let mut c = n.get();
+            c[width] += 1;
+            n.set(c);
+        });
+    }
+
+    /// The sums and differences of two dyadics that `f` forms, by width.
+    fn sums_during<R>(f: impl FnOnce() -> R) -> (R, [usize; 3]) {
+        let before = SUMS.with(Cell::get);
+        let r = f();
+        let after = SUMS.with(Cell::get);
+        (r, [0, 1, 2].map(|w| after[w] - before[w]))
+    }
 
     /// The dyadic products `f` forms: 0 where the oracle decides on
     /// expansions alone.
@@ -1271,5 +1296,69 @@ pub(crate) mod tests {
         let want = &(&Dyadic::from_f64(tiny) + &Dyadic::from_f64(-1e300)) + &Dyadic::from_f64(2.0);
         assert_eq!(Dyadic::from_expansion(&e), want);
         assert_eq!(want.signum(), -1);
+    }
+
+    /// A sum or difference takes the narrowest mantissa that holds the
+    /// aligned operands: `i128` where they fit, whichever operand carries
+    /// the larger exponent and even when one is zero far from the other,
+    /// then 256 bits, then big integers.
+    #[test]
+    fn sums_take_the_narrowest_mantissa_that_holds_them() {
+        let d = Dyadic::new;
+        let wide = &d(1, 3000) + &d(1, 3200);
+        assert!(matches!(wide.mant, Mant::Wide(_)));
+        let cases = [
+            (d(3, 0), d(5, 0), 0),
+            (d(3, 7), d(5, -9), 0),
+            (d(3, -9), d(5, 7), 0),
+            (Dyadic::ZERO, d(5, -3000), 0),
+            (d(5, -3000), Dyadic::ZERO, 0),
+            (d(1, 200), d(1, 0), 1),
+            (d(1, 0), d(1, 200), 1),
+            (wide.clone(), d(7, 3100), 1),
+            (d(7, 3100), wide.clone(), 1),
+            (Dyadic::ZERO, wide.clone(), 1),
+            (wide.clone(), Dyadic::ZERO, 1),
+            (d(1, 0), d(1, 600), 2),
+        ];
+        for (x, y, width) in cases {
+            let mut want = [0; 3];
+            want[width] = 1;
+            for sub in [false, true] {
+                let op = |x: &Dyadic, y: &Dyadic| if sub { x - y } else { x + y };
+                let (got, sums) = sums_during(|| op(&x, &y));
+                assert_eq!(sums, want, "{x:?} {y:?} sub {sub}");
+                assert_eq!(got, big_only(|| op(&x, &y)), "{x:?} {y:?} sub {sub}");
+            }
+        }
+    }
+
+    /// `sum` adds up to 64 terms spanning up to 2,040 bits on its stack
+    /// accumulator, forming no sum of two dyadics, and past either limit
+    /// adds them in turn, to the same value.
+    #[test]
+    fn sum_uses_the_accumulator_up_to_its_stated_limits() {
+        let d = Dyadic::new;
+        let spanning = |span: i32| {
+            let lo = -1100;
+            vec![d(1, lo), d(-3, lo + span / 2), d(-1, lo + span - 1)]
+        };
+        let many = |n: usize| vec![Dyadic::small(i128::MAX, 5); n];
+        for (terms, accumulated) in [
+            (spanning(2040), true),
+            (spanning(2041), false),
+            (spanning(2048), false),
+            (many(64), true),
+            (many(65), false),
+            (many(300), false),
+        ] {
+            let (got, sums) = sums_during(|| sum(&terms));
+            assert_eq!(sums == [0; 3], accumulated, "{} terms", terms.len());
+            assert_eq!(got, big_only(|| sum(&terms)), "{} terms", terms.len());
+        }
+        assert_eq!(
+            sum(&many(300)),
+            Dyadic::big(IBig::from(i128::MAX) * IBig::from(300u16), 5)
+        );
     }
 }
