@@ -445,7 +445,7 @@ fn decide_words<P: Product>(
         }
         // The filter's sorted roots first (no division waits on the
         // square root), from β = 2b and Δ = 4(b² − ac), scaled exactly.
-        let bounds = (a.e * shrink, 2.0 * bb.e * shrink, 4.0 * near.e * shrink);
+        let bounds = noted3((a.e * shrink, 2.0 * bb.e * shrink, 4.0 * near.e * shrink));
         if let Some((t0, t1)) = sorted_from(a.v, 2.0 * bb.v, 4.0 * near.v, bounds, shrink) {
             let (t0, t1) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
             return Some(Some(QuadricHit::Two(t0 as f32, t1 as f32)));
@@ -456,7 +456,7 @@ fn decide_words<P: Product>(
     }
     if exact {
         let disc = single_word_disc::<P>(alpha.hi, b.hi, gamma.hi);
-        if disc.v.abs() > disc.e * shrink {
+        if disc.v.abs() > noted(disc.e * shrink) {
             if disc.v < 0.0 {
                 return Some(Some(QuadricHit::None));
             }
@@ -568,7 +568,7 @@ fn tight_by<P: Product>(
     let bound = |exact: bool, e: f64| if exact { 0.0 } else { e };
     let (eb, eg) = (bound(xb, 24.0 * U * mb), bound(xg, 20.0 * U * mg));
     if xa && xb && alpha == 0.0 && beta == 0.0 {
-        return if gamma.abs() > eg * shrink {
+        return if gamma.abs() > noted(eg * shrink) {
             Some(QuadricHit::None)
         } else {
             (xg && gamma == 0.0).then_some(QuadricHit::All)
@@ -612,7 +612,7 @@ fn tight_by<P: Product>(
         Approx { v: gamma, e: eg },
     );
     let near = disc_near(a, b, c, 1.0);
-    if !(near.v.abs() > 2.0 * near.e * shrink) {
+    if !(near.v.abs() > noted(2.0 * near.e * shrink)) {
         return None;
     }
     if near.v < 0.0 {
@@ -1044,6 +1044,24 @@ where
     settle(later_by::<BuildProduct>(&k, o, d, left, shrink))
 }
 
+/// `b`, a bound a stage decides with, noted for the tests, which check
+/// it against its derivation: at `shrink` 1 a wrong factor or placement of
+/// `shrink` only widens such a bound, which no answer shows.
+#[inline(always)]
+fn noted(b: f64) -> f64 {
+    #[cfg(test)]
+    tests::note(&[b]);
+    b
+}
+
+/// [`noted`] for the three bounds [`sorted_from`] takes.
+#[inline(always)]
+fn noted3(b: (f64, f64, f64)) -> (f64, f64, f64) {
+    #[cfg(test)]
+    tests::note(&[b.0, b.1, b.2]);
+    b
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1052,6 +1070,26 @@ mod tests {
     use glam::Vec3;
     use rand::rngs::SmallRng;
     use rand::{Rng, SeedableRng};
+    use std::cell::RefCell;
+
+    thread_local!(static NOTED: RefCell<Option<Vec<f64>>> = const { RefCell::new(None) });
+
+    /// Records bounds that [`noted`] and [`noted3`] pass through, inside
+    /// [`noted_during`].
+    pub(super) fn note(b: &[f64]) {
+        NOTED.with(|n| {
+            if let Some(v) = n.borrow_mut().as_mut() {
+                v.extend_from_slice(b);
+            }
+        });
+    }
+
+    /// `f`'s result and the bounds noted while it ran, in order.
+    fn noted_during<R>(f: impl FnOnce() -> R) -> (R, Vec<f64>) {
+        NOTED.with(|n| n.replace(Some(Vec::new())));
+        let r = f();
+        (r, NOTED.with(|n| n.take()).unwrap_or_default())
+    }
 
     /// The cylinder of radius 1 around the axis (1, 1, 0), along that
     /// axis from origins of 24 bits: α = β = 0 from terms that cancel,
@@ -1690,5 +1728,97 @@ mod tests {
         assert!(first(1.0, 6.0, 1.0));
         assert!(!first(0.0, 6.0, 1.0));
         assert!(!first(1.0, 6.0, 0.0));
+    }
+
+    /// The words stage decides with its bounds as derived, each times
+    /// `shrink` once: the three it hands [`sorted_from`] (`E_α`, `2E_b`
+    /// and `4E_Δ` of the leading words, [`disc_near`]) where the words
+    /// are not exact, and `E_Δ` of [`single_word_disc`] where they are.
+    #[test]
+    fn the_words_decisions_bounds_are_the_derivations() {
+        let dd = |hi: f64, lo: f64, err: f64| Dd { hi, lo, err };
+        let mut r = SmallRng::seed_from_u64(0xb0d5);
+        let mut sorted = 0;
+        for i in 0..500 {
+            // Roots near 1 and 5 (α t² + β t + γ with β = −6α, γ = 5α),
+            // at many scales, with low words and errors at many depths.
+            let scale = 2f64.powi(r.random_range(-40..40));
+            let mut w = |v: f64| {
+                let (lo, err) = if i == 0 {
+                    (1e-17 * v, 1e-19 * v.abs())
+                } else {
+                    let depth = |r: &mut SmallRng| 2f64.powi(r.random_range(-70..-30));
+                    (v * depth(&mut r), v.abs() * depth(&mut r))
+                };
+                dd(v, lo, err)
+            };
+            let (alpha, beta, gamma) = (w(scale), w(-6.0 * scale), w(5.0 * scale));
+            let (a, bb) = (alpha.approx(), beta.scale(0.5).approx());
+            let near = disc_near(a, bb, gamma.approx(), 1.0);
+            for shrink in [1.0, 0.25] {
+                let (got, notes) =
+                    noted_during(|| decide_words::<Dekker>(false, (alpha, beta, gamma), shrink));
+                assert!(matches!(got, Some(Some(QuadricHit::Two(..)))), "{got:?}");
+                if !notes.is_empty() {
+                    let want = [a.e, 2.0 * bb.e, 4.0 * near.e].map(|e| e * shrink);
+                    assert_eq!(notes, want, "{alpha:?} {beta:?} {gamma:?} at {shrink}");
+                    sorted += 1;
+                }
+            }
+        }
+        assert!(sorted > 900, "{sorted} of 1000 took the sorted roots");
+
+        // Single exact words: Δ/4 = 9 − 5.
+        let exact = (dd(1.0, 0.0, 0.0), dd(-6.0, 0.0, 0.0), dd(5.0, 0.0, 0.0));
+        let e = single_word_disc::<Dekker>(1.0, -3.0, 5.0).e;
+        assert!(e > 0.0);
+        for shrink in [1.0, 0.25] {
+            let (got, notes) = noted_during(|| decide_words::<Dekker>(true, exact, shrink));
+            assert_eq!(got, Some(Some(QuadricHit::Two(1.0, 5.0))));
+            assert_eq!(notes, [e * shrink], "at {shrink}");
+        }
+    }
+
+    /// The tight stage decides with its bounds as derived, each times
+    /// `shrink` once: `E_γ = 20u·m_γ` where α̂ = β̂ = 0 exactly (a quadric
+    /// constant along the line), and `2E_Δ` of [`disc_near`] on α, β/2
+    /// and γ with `E_β = 24u·m_β`, where β and γ are clear of 0.
+    #[test]
+    fn the_tight_stages_bounds_are_the_derivations() {
+        let k = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+        let (o, d) = ([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]);
+        let p = |e| 2f64.powi(e);
+        let g = grids(&k, o, d);
+        // Constant along the line, γ̂ inexact: it decides nothing.
+        let constant = Left {
+            alpha: (0.0, 1.0),
+            beta: (0.0, 1.0),
+            gamma: (3.0, p(60)),
+        };
+        assert_eq!(constant.exact(g), [true, true, false]);
+        // α exact, β far from 0 but inexact, γ exact.
+        let line = Left {
+            alpha: (1.0, 1.0),
+            beta: (p(40), p(53)),
+            gamma: (3.0, 1.0),
+        };
+        assert_eq!(line.exact(g), [true, false, true]);
+        let eb = 24.0 * U * p(53);
+        let (a, b, c) = (
+            Approx { v: 1.0, e: 0.0 },
+            Approx {
+                v: p(39),
+                e: 0.5 * eb,
+            },
+            Approx { v: 3.0, e: 0.0 },
+        );
+        let near = disc_near(a, b, c, 1.0);
+        for shrink in [1.0, 0.25] {
+            let (got, notes) = noted_during(|| tight_by::<Dekker>(&k, o, d, &constant, shrink));
+            assert_eq!(got, None);
+            assert_eq!(notes, [20.0 * U * p(60) * shrink], "at {shrink}");
+            let (_, notes) = noted_during(|| tight_by::<Dekker>(&k, o, d, &line, shrink));
+            assert_eq!(notes, [2.0 * near.e * shrink], "at {shrink}");
+        }
     }
 }
