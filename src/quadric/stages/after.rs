@@ -1821,4 +1821,48 @@ mod tests {
             assert_eq!(notes, [2.0 * near.e * shrink], "at {shrink}");
         }
     }
+
+    /// Along a line where α̂ = β̂ = 0 exactly (the quadric constant on it),
+    /// the tight stage answers `All` only where γ̂ = 0 exactly: a γ̂ of 0
+    /// summed from rounded terms may be a tiny γ of either sign, which it
+    /// leaves undecided; a γ̂ clear of its bound misses.
+    #[test]
+    fn a_constant_quadric_holds_everywhere_only_where_gamma_is_exactly_zero() {
+        let k = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+        let (o, d) = ([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]);
+        let g = grids(&k, o, d);
+        let p = |e| 2f64.powi(e);
+        for (gamma, want) in [
+            ((0.0, 1.0), Some(QuadricHit::All)),
+            ((0.0, p(60)), None),
+            ((3.0, 1.0), Some(QuadricHit::None)),
+            ((p(60), p(60)), Some(QuadricHit::None)),
+        ] {
+            let left = Left {
+                alpha: (0.0, 1.0),
+                beta: (0.0, 1.0),
+                gamma,
+            };
+            assert_eq!(left.exact(g)[..2], [true, true]);
+            assert_eq!(tight_by::<Dekker>(&k, o, d, &left, 1.0), want, "{gamma:?}");
+        }
+    }
+
+    /// The tracked stage's two roots answer only where both certify:
+    /// with exact α = 1, β = −(2 + 2⁻²⁴) and γ = 1 + 2⁻²⁴, the roots are 1
+    /// and the midpoint 1 + 2⁻²⁴ between two `f32` values, computed
+    /// exactly, which no enclosure rounds; with γ = 1 + 2⁻²³ both are
+    /// `f32` values.
+    #[test]
+    fn tracked_roots_answer_only_where_both_roots_certify() {
+        let roots = |r1: f64| {
+            let mut x = Tracked::new();
+            let got = tracked_roots::<Dekker>(&mut x, 1.0, -(1.0 + r1), r1);
+            assert!(x.exact());
+            got
+        };
+        let (mid, next) = (1.0 + 2f64.powi(-24), 1.0 + 2f64.powi(-23));
+        assert_eq!(roots(mid), None);
+        assert_eq!(roots(next), Some(QuadricHit::Two(1.0, next as f32)));
+    }
 }
