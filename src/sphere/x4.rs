@@ -145,11 +145,16 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 }
 
 /// [`intersect`] over many packets: `out[i] = intersect(&rays[i], s)` for
-/// every `i` below the shorter length. The packets go through two at a
-/// time as eight lanes, which interleaves two independent chains of
-/// operations: one AVX-512 register where the CPU has it, else a
-/// [`Pair`](crate::num::real::Pair) of four-lane values. The
-/// floating-point environment is read once.
+/// every `i` below the shorter length, bit for bit. The packets go
+/// through two at a time as eight lanes (one AVX-512 register where the
+/// CPU has it, else a [`Pair`](crate::num::real::Pair) of four-lane
+/// values). A pair whose every lane may hit takes the roots at once. In
+/// any other, the lanes the classes certify as misses are written as
+/// such, and the rest are gathered, eight at a time from any packets,
+/// into dense pairs for the roots, so that rays in no order (where a
+/// pair is all misses about half the time, a coin toss for the branch
+/// predictor) take no branch on their classes. The floating-point
+/// environment is read once.
 ///
 /// ```
 /// use rayoracle::{Ray, ray4::Ray4, sphere::{Sphere, x4}};
@@ -179,24 +184,115 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
     let c2 = s.center.map(|x| W::twice(w(x)));
     let r2 = W::twice(w(s.radius));
     let len = rays.len().min(out.len());
-    let mut pairs = rays[..len].chunks_exact(2);
-    let mut outs = out[..len].chunks_exact_mut(2);
-    for (pk, o) in (&mut pairs).zip(&mut outs) {
+    // The lanes that may hit, as `4·packet + lane`, eight at a time.
+    let mut live = [0usize; 16];
+    let mut n = 0usize;
+    for i in 0..len / 2 {
+        let pk = &rays[2 * i..2 * i + 2];
         let (o2, d2) = (
             W::widen3(&pk[0].origin, &pk[1].origin),
             W::widen3(&pk[0].dir, &pk[1].dir),
         );
         let k = stages::classes(o2, d2, c2, r2, 1.0);
-        if W::all(k.miss) {
-            o.fill(SphereHit4::MISS);
+        let bits = !W::bits(k.miss) & 0xff;
+        if bits == 0xff {
+            let [x, y] = decide_sorted(stages::sorted(k, 1.0)).halves();
+            out[2 * i] = finish(x.packed(), true, env, &pk[0], s);
+            out[2 * i + 1] = finish(y.packed(), true, env, &pk[1], s);
             continue;
         }
-        let [x, y] = decide_sorted(stages::sorted(k, 1.0)).halves();
-        o[0] = finish(x.packed(), true, env, &pk[0], s);
-        o[1] = finish(y.packed(), true, env, &pk[1], s);
+        out[2 * i..2 * i + 2].fill(SphereHit4::MISS);
+        let at = &COMPRESS[bits as usize];
+        for (l, &j) in live[n & 7..][..8].iter_mut().zip(at) {
+            *l = 8 * i + usize::from(j);
+        }
+        n = (n & 7) + bits.count_ones() as usize;
+        if n >= 8 {
+            dense::<W>(&live[..8], rays, s, env, out);
+            live.copy_within(8..16, 0);
+            n -= 8;
+        }
     }
-    if let ([one], [o]) = (pairs.remainder(), outs.into_remainder()) {
-        *o = packet::<W::Half>(one, s, true, env);
+    if n > 0 {
+        let last = live[n - 1];
+        live[n..8].fill(last);
+        dense::<W>(&live[..8], rays, s, env, out);
+    }
+    if len % 2 == 1 {
+        out[len - 1] = packet::<W::Half>(&rays[len - 1], s, true, env);
+    }
+}
+
+/// Four lanes `live` of `rays`, and of `s`, as one packet.
+#[inline(always)]
+fn gather(live: &[usize], rays: &[Ray4], s: &Sphere4) -> (Ray4, Sphere4) {
+    let v = |j: usize| live[j];
+    let (p, l) = (
+        [v(0) >> 2, v(1) >> 2, v(2) >> 2, v(3) >> 2],
+        [v(0) & 3, v(1) & 3, v(2) & 3, v(3) & 3],
+    );
+    let pick = |x: [&f32x4; 4]| {
+        f32x4::from([
+            x[0].as_array()[l[0]],
+            x[1].as_array()[l[1]],
+            x[2].as_array()[l[2]],
+            x[3].as_array()[l[3]],
+        ])
+    };
+    let r = [&rays[p[0]], &rays[p[1]], &rays[p[2]], &rays[p[3]]];
+    let o = |k: usize| {
+        pick([
+            &r[0].origin[k],
+            &r[1].origin[k],
+            &r[2].origin[k],
+            &r[3].origin[k],
+        ])
+    };
+    let d = |k: usize| pick([&r[0].dir[k], &r[1].dir[k], &r[2].dir[k], &r[3].dir[k]]);
+    let c = |x: &f32x4| pick([x; 4]);
+    (
+        Ray4 {
+            origin: [o(0), o(1), o(2)],
+            dir: [d(0), d(1), d(2)],
+        },
+        Sphere4 {
+            center: [c(&s.center[0]), c(&s.center[1]), c(&s.center[2])],
+            radius: c(&s.radius),
+        },
+    )
+}
+
+/// The eight lanes `live` (each `4·packet + lane`) of `rays` gathered into
+/// two packets, with their spheres' lanes, decided as [`packets_in`]
+/// decides a pair, and each result written to its lane of `out`.
+#[inline(always)]
+fn dense<W: Real8>(
+    live: &[usize],
+    rays: &[Ray4],
+    s: &Sphere4,
+    env: impl Fn(bool) -> bool + Copy,
+    out: &mut [SphereHit4],
+) {
+    let ((r0, s0), (r1, s1)) = (gather(&live[..4], rays, s), gather(&live[4..], rays, s));
+    let (o2, d2) = (
+        W::widen3(&r0.origin, &r1.origin),
+        W::widen3(&r0.dir, &r1.dir),
+    );
+    let c2 = W::widen3(&s0.center, &s1.center);
+    let [r2, ..] = W::widen3(&[s0.radius; 3], &[s1.radius; 3]);
+    let k = stages::classes(o2, d2, c2, r2, 1.0);
+    let [x, y] = decide_sorted(stages::sorted(k, 1.0)).halves();
+    let h = [
+        finish(x.packed(), true, env, &r0, &s0),
+        finish(y.packed(), true, env, &r1, &s1),
+    ];
+    for (j, &v) in live.iter().enumerate() {
+        let (p, l) = (v >> 2, v & 3);
+        let (from, to) = (&h[j / 4], &mut out[p]);
+        let m = j & 3;
+        to.class.as_mut_array()[l] = from.class.as_array()[m];
+        to.t0.as_mut_array()[l] = from.t0.as_array()[m];
+        to.t1.as_mut_array()[l] = from.t1.as_array()[m];
     }
 }
 
@@ -459,6 +555,25 @@ fn packet<L: Real4>(
     )
 }
 
+/// For each eight-bit mask, the indices of its set bits in ascending
+/// order, then zeros: the lanes a batch appends.
+static COMPRESS: [[u8; 8]; 256] = {
+    let mut t = [[0u8; 8]; 256];
+    let mut m = 0;
+    while m < 256 {
+        let (mut j, mut k) = (0, 0);
+        while j < 8 {
+            if m >> j & 1 == 1 {
+                t[m][k] = j as u8;
+                k += 1;
+            }
+            j += 1;
+        }
+        m += 1;
+    }
+    t
+};
+
 /// A packet's inputs in f64 lanes.
 #[inline(always)]
 fn widened<L: Real4>(ray: &Ray4, s: &Sphere4) -> ([L; 3], [L; 3], [L; 3], L) {
@@ -584,6 +699,113 @@ mod tests {
             [0.5, 1.0, 2.0, 1e-30].map(|r| Sphere::new(glam::Vec3::new(0.0, 0.5, 0.0), r)),
         );
         crate::num::batch::every_copy_agrees!(packets_in, intersect_baseline, s: Sphere4, SphereHit4);
+    }
+
+    /// Rays in no order against a different sphere in each lane, among
+    /// them exact tangents (which the scalar stages settle): every copy of
+    /// the batch, over every prefix of the packets (so that each way a
+    /// group of eight gathered lanes can fall, and each tail, is met),
+    /// gives each packet what the one-packet kernel gives, bit for bit.
+    /// The packets mix lanes that may hit with certain misses, so most
+    /// lanes reach the roots gathered from other packets, in other lanes.
+    #[test]
+    fn lanes_gathered_from_any_packets_are_put_back_in_place() {
+        use glam::Vec3;
+        let spheres = [
+            Sphere::new(Vec3::ZERO, 1.0),
+            Sphere::new(Vec3::new(0.5, -0.3, 0.2), 0.7),
+            Sphere::new(Vec3::new(-0.4, 0.6, 0.1), 1.3),
+            Sphere::new(Vec3::new(0.2, 0.1, -0.5), 0.4),
+        ];
+        let s4 = Sphere4::from_spheres(spheres);
+        let mut x = 0x9e37_79b9u32;
+        let mut next = || {
+            x = x.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (x >> 8) as f32 / (1 << 24) as f32 - 0.5
+        };
+        let tangent = crate::Ray::new(Vec3::new(1.0, 0.0, -4.0), Vec3::Z);
+        assert_eq!(
+            reference::intersect(&tangent, &spheres[0]),
+            SphereHit::Tangent(4.0)
+        );
+        let rays: Vec<Ray4> = (0..41)
+            .map(|i| {
+                let mut r = [0; 4].map(|_| {
+                    let o = Vec3::new(2.0 * next(), 2.0 * next(), -4.0);
+                    crate::Ray::new(o, Vec3::new(next(), next(), 1.0))
+                });
+                if i % 5 == 2 {
+                    r[0] = tangent;
+                }
+                Ray4::from_rays(r)
+            })
+            .collect();
+        let live = rays.iter().map(|r| {
+            let (o, d, c, rad) = widened::<F64x4>(r, &s4);
+            F64x4::mask_i32(!stages::classes(o, d, c, rad, 1.0).miss).to_bitmask()
+        });
+        let live: Vec<u32> = live.collect();
+        let mixed = live.iter().filter(|&&m| m != 0 && m != 0b1111).count();
+        assert!(mixed >= 20, "{live:?}");
+        assert!(live.contains(&0), "{live:?}");
+        let want: Vec<_> = rays
+            .iter()
+            .map(|r| intersect_baseline(r, &s4).lanes())
+            .collect();
+        let hits = want
+            .iter()
+            .flatten()
+            .filter(|h| matches!(h, SphereHit::Two(..)));
+        let hits = hits.count();
+        assert!(hits >= 20, "{hits}");
+        type Batch = fn(&[Ray4], &Sphere4, &mut [SphereHit4]);
+        let mut copies: Vec<(&str, Batch)> = vec![
+            ("pairs of F64x4", packets_in::<Pair<F64x4>>),
+            ("dispatched", intersect_packets),
+        ];
+        #[cfg(target_arch = "x86_64")]
+        {
+            use crate::num::{
+                avx::{Avx2, Avx4},
+                avx512::{Avx8, Avx512},
+            };
+            if Avx2::detect().is_some() {
+                copies.push(("pairs of AVX", |r, s, o| {
+                    #[target_feature(enable = "avx2,fma")]
+                    fn run(r: &[Ray4], s: &Sphere4, o: &mut [SphereHit4]) {
+                        packets_in::<Pair<Avx4>>(r, s, o)
+                    }
+                    // SAFETY: AVX2 and FMA were detected just above.
+                    unsafe { run(r, s, o) }
+                }));
+            }
+            if Avx512::detect().is_some() {
+                copies.push(("AVX-512", |r, s, o| {
+                    #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+                    fn run(r: &[Ray4], s: &Sphere4, o: &mut [SphereHit4]) {
+                        packets_in::<Avx8>(r, s, o)
+                    }
+                    // SAFETY: AVX-512 F, DQ and VL, AVX2 and FMA were
+                    // detected just above.
+                    unsafe { run(r, s, o) }
+                }));
+            }
+        }
+        for (name, batch) in copies {
+            for len in 0..=rays.len() {
+                let mut out = vec![SphereHit4::MISS; len];
+                batch(&rays[..len], &s4, &mut out);
+                for (i, h) in out.iter().enumerate() {
+                    let ok = h.lanes().iter().zip(&want[i]).all(|(x, y)| same_bits(x, y));
+                    assert!(
+                        ok,
+                        "{name}, {len} packets, packet {i}: {:?}, not {:?}",
+                        h.lanes(),
+                        want[i]
+                    );
+                }
+            }
+        }
     }
 
     /// Packets whose lanes all miss skip the roots, one packet at a time
