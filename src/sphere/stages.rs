@@ -99,6 +99,7 @@ use crate::num::dd::Approx;
 use crate::num::real::Real;
 
 mod after;
+pub mod misses;
 
 pub(crate) use after::{c_cancels, compensated_from, double_word_by, grid_from};
 pub use after::{compensated, double_word, grid_exact, tight, tracked};

@@ -105,7 +105,9 @@ pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 }
 
 /// [`intersect`] on the baseline lanes, [`F64x4`]: two SSE2 registers in a
-/// default x86-64 build.
+/// default x86-64 build. Each f64 operation is two instructions there, so
+/// a packet first takes the test for certain misses in `f32`
+/// ([`stages::misses`]) and returns at once where every lane passes.
 ///
 /// ```
 /// use rayoracle::{Ray, ray4::Ray4, sphere::{Sphere, SphereHit, x4}};
@@ -148,7 +150,9 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 /// every `i` below the shorter length, bit for bit. The packets go
 /// through two at a time as eight lanes (one AVX-512 register where the
 /// CPU has it, else a [`Pair`](crate::num::real::Pair) of four-lane
-/// values). A pair whose every lane may hit takes the roots at once. In
+/// values). Which lanes may hit comes from the classes, or on the
+/// baseline lanes from the test in `f32` ([`stages::misses`]). A pair
+/// whose every lane may hit takes the roots at once. In
 /// any other, the lanes the classes certify as misses are written as
 /// such, and the rest are gathered, eight at a time from any packets,
 /// into dense pairs for the roots, so that rays in no order (where a
@@ -189,13 +193,23 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
     let mut n = 0usize;
     for i in 0..len / 2 {
         let pk = &rays[2 * i..2 * i + 2];
-        let (o2, d2) = (
-            W::widen3(&pk[0].origin, &pk[1].origin),
-            W::widen3(&pk[0].dir, &pk[1].dir),
-        );
-        let k = stages::classes(o2, d2, c2, r2, 1.0);
-        let bits = !W::bits(k.miss) & 0xff;
+        let classes = || {
+            let (o2, d2) = (
+                W::widen3(&pk[0].origin, &pk[1].origin),
+                W::widen3(&pk[0].dir, &pk[1].dir),
+            );
+            stages::classes(o2, d2, c2, r2, 1.0)
+        };
+        // The lanes that may hit, from the f32 test where it is cheaper.
+        let (bits, k) = if W::Half::MISSES_IN_F32 {
+            let m = |r: &Ray4| stages::misses::certain(r, s).to_bitmask();
+            (!(m(&pk[0]) | m(&pk[1]) << 4) & 0xff, None)
+        } else {
+            let k = classes();
+            (!W::bits(k.miss) & 0xff, Some(k))
+        };
         if bits == 0xff {
+            let k = k.unwrap_or_else(classes);
             let [x, y] = decide_sorted(stages::sorted(k, 1.0)).halves();
             out[2 * i] = finish(x.packed(), true, env, &pk[0], s);
             out[2 * i + 1] = finish(y.packed(), true, env, &pk[1], s);
@@ -537,6 +551,9 @@ fn packet<L: Real4>(
     stands: bool,
     env: impl Fn(bool) -> bool,
 ) -> SphereHit4 {
+    if L::MISSES_IN_F32 && stands && stages::misses::certain(ray, s).all() {
+        return SphereHit4::MISS;
+    }
     let (o, d, c, r) = widened::<L>(ray, s);
     let k = stages::classes(o, d, c, r, 1.0);
     // A packet whose every lane certainly misses needs no roots: coherent
