@@ -209,6 +209,8 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
             (!W::bits(k.miss) & 0xff, Some(k))
         };
         if bits == 0xff {
+            #[cfg(test)]
+            note(0);
             let k = k.unwrap_or_else(classes);
             let [x, y] = decide_sorted(stages::sorted(k, 1.0)).halves();
             out[2 * i] = finish(x.packed(), true, env, &pk[0], s);
@@ -287,6 +289,8 @@ fn dense<W: Real8>(
     env: impl Fn(bool) -> bool + Copy,
     out: &mut [SphereHit4],
 ) {
+    #[cfg(test)]
+    note(1);
     let ((r0, s0), (r1, s1)) = (gather(&live[..4], rays, s), gather(&live[4..], rays, s));
     let (o2, d2) = (
         W::widen3(&r0.origin, &r1.origin),
@@ -572,6 +576,24 @@ fn packet<L: Real4>(
     )
 }
 
+#[cfg(test)]
+std::thread_local!(
+    /// How many pairs of a batch took the roots at once, and how many
+    /// gathered pairs did, on this thread: for the tests of the batches'
+    /// paths.
+    static PAIRS: core::cell::Cell<[usize; 2]> = const { core::cell::Cell::new([0; 2]) }
+);
+
+/// One more pair of the kind `k` (0 whole, 1 gathered) in [`PAIRS`].
+#[cfg(test)]
+fn note(k: usize) {
+    PAIRS.with(|c| {
+        let mut n = c.get();
+        n[k] += 1;
+        c.set(n);
+    });
+}
+
 /// For each eight-bit mask, the indices of its set bits in ascending
 /// order, then zeros: the lanes a batch appends.
 static COMPRESS: [[u8; 8]; 256] = {
@@ -718,6 +740,48 @@ mod tests {
         crate::num::batch::every_copy_agrees!(packets_in, intersect_baseline, s: Sphere4, SphereHit4);
     }
 
+    /// A batch kernel of this module.
+    type Batch = fn(&[Ray4], &Sphere4, &mut [SphereHit4]);
+
+    /// Every copy of the batch this CPU runs, named: pairs of
+    /// [`F64x4`], pairs of AVX registers where it has AVX2, one AVX-512
+    /// register where it has AVX-512, and the dispatched entry point.
+    fn batch_copies() -> Vec<(&'static str, Batch)> {
+        let mut copies: Vec<(&str, Batch)> = vec![
+            ("pairs of F64x4", packets_in::<Pair<F64x4>>),
+            ("dispatched", intersect_packets),
+        ];
+        #[cfg(target_arch = "x86_64")]
+        {
+            use crate::num::{
+                avx::{Avx2, Avx4},
+                avx512::{Avx8, Avx512},
+            };
+            if Avx2::detect().is_some() {
+                copies.push(("pairs of AVX", |r, s, o| {
+                    #[target_feature(enable = "avx2,fma")]
+                    fn run(r: &[Ray4], s: &Sphere4, o: &mut [SphereHit4]) {
+                        packets_in::<Pair<Avx4>>(r, s, o)
+                    }
+                    // SAFETY: AVX2 and FMA were detected just above.
+                    unsafe { run(r, s, o) }
+                }));
+            }
+            if Avx512::detect().is_some() {
+                copies.push(("AVX-512", |r, s, o| {
+                    #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+                    fn run(r: &[Ray4], s: &Sphere4, o: &mut [SphereHit4]) {
+                        packets_in::<Avx8>(r, s, o)
+                    }
+                    // SAFETY: AVX-512 F, DQ and VL, AVX2 and FMA were
+                    // detected just above.
+                    unsafe { run(r, s, o) }
+                }));
+            }
+        }
+        copies
+    }
+
     /// Rays in no order against a different sphere in each lane, among
     /// them exact tangents (which the scalar stages settle): every copy of
     /// the batch, over every prefix of the packets (so that each way a
@@ -775,40 +839,7 @@ mod tests {
             .filter(|h| matches!(h, SphereHit::Two(..)));
         let hits = hits.count();
         assert!(hits >= 20, "{hits}");
-        type Batch = fn(&[Ray4], &Sphere4, &mut [SphereHit4]);
-        let mut copies: Vec<(&str, Batch)> = vec![
-            ("pairs of F64x4", packets_in::<Pair<F64x4>>),
-            ("dispatched", intersect_packets),
-        ];
-        #[cfg(target_arch = "x86_64")]
-        {
-            use crate::num::{
-                avx::{Avx2, Avx4},
-                avx512::{Avx8, Avx512},
-            };
-            if Avx2::detect().is_some() {
-                copies.push(("pairs of AVX", |r, s, o| {
-                    #[target_feature(enable = "avx2,fma")]
-                    fn run(r: &[Ray4], s: &Sphere4, o: &mut [SphereHit4]) {
-                        packets_in::<Pair<Avx4>>(r, s, o)
-                    }
-                    // SAFETY: AVX2 and FMA were detected just above.
-                    unsafe { run(r, s, o) }
-                }));
-            }
-            if Avx512::detect().is_some() {
-                copies.push(("AVX-512", |r, s, o| {
-                    #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-                    fn run(r: &[Ray4], s: &Sphere4, o: &mut [SphereHit4]) {
-                        packets_in::<Avx8>(r, s, o)
-                    }
-                    // SAFETY: AVX-512 F, DQ and VL, AVX2 and FMA were
-                    // detected just above.
-                    unsafe { run(r, s, o) }
-                }));
-            }
-        }
-        for (name, batch) in copies {
+        for (name, batch) in batch_copies() {
             for len in 0..=rays.len() {
                 let mut out = vec![SphereHit4::MISS; len];
                 batch(&rays[..len], &s4, &mut out);
@@ -822,6 +853,55 @@ mod tests {
                     );
                 }
             }
+        }
+    }
+
+    /// A batch of pairs whose lanes clearly hit or clearly miss (so the
+    /// classes and the test in `f32` agree): a pair whose every lane hits
+    /// takes the roots whole, the hits of the others are gathered eight at
+    /// a time (the last group padded), and pairs of misses take neither;
+    /// on every copy, with the answers of one packet at a time.
+    #[test]
+    fn only_the_lanes_that_may_hit_are_gathered() {
+        use glam::Vec3;
+        let spheres = [0.5, 1.0, 2.0, 0.25].map(|r| Sphere::new(Vec3::new(0.0, 0.5, 0.0), r));
+        let s4 = Sphere4::from_spheres(spheres);
+        let ray = |hit: bool| {
+            let y = if hit { 0.5 } else { 9.0 };
+            crate::Ray::new(Vec3::new(0.1, y, -5.0), Vec3::Z)
+        };
+        // Lanes that hit, per pair: all, none, three, all, five, one; and
+        // a last packet alone.
+        let masks: [u32; 6] = [0xff, 0, 0b1001_0010, 0xff, 0b0111_0011, 0b0100_0000];
+        let mut rays: Vec<Ray4> = masks
+            .iter()
+            .flat_map(|m| {
+                [0, 4].map(|h| Ray4::from_rays([0, 1, 2, 3].map(|l| ray(m >> (h + l) & 1 == 1))))
+            })
+            .collect();
+        rays.push(Ray4::from_rays([true, false, true, true].map(ray)));
+        let want: Vec<_> = rays
+            .iter()
+            .map(|r| intersect_baseline(r, &s4).lanes())
+            .collect();
+        let hits = want
+            .iter()
+            .flatten()
+            .filter(|h| matches!(h, SphereHit::Two(..)));
+        assert_eq!(hits.count(), 8 + 3 + 8 + 5 + 1 + 3);
+        let run = |batch: Batch| {
+            let mut out = vec![SphereHit4::MISS; rays.len()];
+            let before = PAIRS.with(core::cell::Cell::get);
+            batch(&rays, &s4, &mut out);
+            let after = PAIRS.with(core::cell::Cell::get);
+            for (h, w) in out.iter().zip(&want) {
+                assert!(h.lanes().iter().zip(w).all(|(x, y)| same_bits(x, y)));
+            }
+            [after[0] - before[0], after[1] - before[1]]
+        };
+        // Two whole pairs; nine lanes gathered, in two groups.
+        for (name, batch) in batch_copies() {
+            assert_eq!(run(batch), [2, 2], "{name}");
         }
     }
 
@@ -1026,6 +1106,26 @@ mod tests {
             *x = with_lane(*x, v, -1e-40);
             dirty.push((rays[4..7].to_vec(), s));
         }
-        assert_packets_keep_their_paths(paths, &[(rays, s)], &dirty);
+        // Origins a few ulps off a sphere: packets whose first pass leaves
+        // a lane that the second (`c/q`) decides, with normal roots, which
+        // stand under FTZ too.
+        let off = Sphere4::splat(&Sphere::new(Vec3::new(0.25, 0.0, 0.0), 1.0));
+        let near: Vec<Ray4> = (0..64u32)
+            .map(|k| {
+                Ray4::from_rays([0, 1, 2, 3].map(|i| {
+                    let x = f32::from_bits(1.25f32.to_bits() + 4 * k + i);
+                    crate::Ray::new(Vec3::new(x, 0.0, 0.0), Vec3::new(-1.0, 0.1, 0.0))
+                }))
+            })
+            .filter(|r4| {
+                let (o, d, c, r) = widened::<F64x4>(r4, &off);
+                let first = decide_sorted(stages::filter_sorted(o, d, c, r, 1.0)).done;
+                let second = decide_quotients(o, d, c, r).done;
+                !F64x4::all(first) && F64x4::all(first | second)
+            })
+            .collect();
+        assert!(near.len() >= 3, "{}", near.len());
+        let clean = [(rays, s), (near, off)];
+        assert_packets_keep_their_paths(paths, &clean, &dirty);
     }
 }
