@@ -90,6 +90,13 @@ pub fn certain(ray: &Ray4, s: &Sphere4) -> f32x4 {
 /// the bound is needed.
 #[inline(always)]
 pub fn certain_by(ray: &Ray4, s: &Sphere4, relative: f32, absolute: f32) -> f32x4 {
+    let (disc, e) = disc_and_bound(ray, s, relative, absolute);
+    (-e).simd_gt(disc)
+}
+
+/// `Δ̂` and `E_Δ` of [`certain_by`].
+#[inline(always)]
+fn disc_and_bound(ray: &Ray4, s: &Sphere4, relative: f32, absolute: f32) -> (f32x4, f32x4) {
     let ([o0, o1, o2], [d0, d1, d2]) = (ray.origin, ray.dir);
     let [c0, c1, c2] = s.center;
     let f = [o0 - c0, o1 - c1, o2 - c2];
@@ -99,10 +106,9 @@ pub fn certain_by(ray: &Ray4, s: &Sphere4, relative: f32, absolute: f32) -> f32x
     let g = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
     let rr = s.radius * s.radius;
     let (c, n) = (g - rr, g + rr);
-    let disc = b * b - a * c;
     let one = f32x4::splat(1.0);
     let e = f32x4::splat(relative) * (a * n) + f32x4::splat(absolute) * (one + a + n);
-    (-e).simd_gt(disc)
+    (b * b - a * c, e)
 }
 
 #[cfg(test)]
@@ -118,6 +124,12 @@ mod tests {
     /// rounded to `f32` and nudged by a few ulps, so that `Δ` is a tiny
     /// fraction of its terms, of either sign; with the spheres.
     fn grazing(n: usize, seed: u64, scale: f64) -> Vec<(Ray, Sphere)> {
+        grazing_from(n, seed, scale, 3.0)
+    }
+
+    /// [`grazing`] from origins `near` radii or more from the centre
+    /// (`near` above 1).
+    fn grazing_from(n: usize, seed: u64, scale: f64, near: f64) -> Vec<(Ray, Sphere)> {
         let mut rng = SmallRng::seed_from_u64(seed);
         let mut v = |k: f64| k * (rng.random::<f64>() * 2.0 - 1.0);
         (0..n)
@@ -125,7 +137,7 @@ mod tests {
                 let c = DVec3::new(v(2.0), v(2.0), v(2.0)) * scale;
                 let r = (1.25 + v(0.75)) * scale;
                 let out = DVec3::new(v(1.0), v(1.0), v(1.0)).normalize();
-                let l = (3.0 + v(1.0).abs() * 8.0) * scale;
+                let l = r * (near + v(1.0).abs() * 4.0 * (near - 1.0));
                 let o = (c + out * l).as_vec3();
                 let f = o.as_dvec3() - c;
                 let w = f.normalize().any_orthonormal_vector();
@@ -177,16 +189,25 @@ mod tests {
 
     /// Grazing lines, about half of them hits whose `Δ` is a few `u` of
     /// its terms: with `E_Δ` as derived, no hit is called a miss, in any
-    /// floating-point environment; with the relative part cut to an
-    /// eighth, some hits are. (The worst error seen in two million such lines is
-    /// about `8u ân̂`, a fifth of the constant, so a quarter of it is not
-    /// caught here.)
+    /// floating-point environment, at sizes from `2⁻¹⁰` to `2¹⁰` and from
+    /// origins just off the sphere, where `ĉ` cancels; with the relative
+    /// part cut to an eighth, some hits are. (The worst error seen in two
+    /// million such lines is about `8u ân̂`, a fifth of the constant, so a
+    /// quarter of it is not caught here.)
     #[test]
     fn grazing_hits_need_the_relative_bound() {
         let cases = grazing(40_000, 1, 1.0);
-        for [wrong, _, hits] in in_every_environment(&cases, RELATIVE, ABSOLUTE) {
-            assert_eq!(wrong, 0);
-            assert!(hits > 15_000, "{hits}");
+        let sets = [
+            cases.clone(),
+            grazing(8_000, 4, 2f64.powi(-10)),
+            grazing(8_000, 5, 2f64.powi(10)),
+            grazing_from(8_000, 6, 1.0, 1.0 + 2f64.powi(-8)),
+        ];
+        for set in &sets {
+            for [wrong, _, hits] in in_every_environment(set, RELATIVE, ABSOLUTE) {
+                assert_eq!(wrong, 0);
+                assert!(hits > set.len() / 3, "{hits}");
+            }
         }
         let [wrong, ..] = super::tests::wrong(&cases, RELATIVE / 8.0, ABSOLUTE);
         assert!(wrong > 0);
@@ -210,6 +231,43 @@ mod tests {
         for [_, misses, hits] in in_every_environment(&huge, RELATIVE, ABSOLUTE) {
             assert_eq!(misses, 0);
             assert!(hits > 1_500, "{hits}");
+        }
+    }
+
+    /// `E_Δ` is the derivation's, `42u ân̂ + 2⁻¹²⁰(1 + â + n̂)` with `â` and
+    /// `n̂` summed in f32 as written, on lines whose `â` and `n̂` range
+    /// from `2⁻⁴⁰` to `2⁴⁰`, where a wrong degree or operation in either
+    /// part shows (the absolute part shows wherever `â` or `n̂` is not
+    /// small).
+    #[test]
+    fn the_bound_is_the_derivations() {
+        for (i, e) in (-20..=20).step_by(5).enumerate() {
+            let k = 2f32.powi(e);
+            let rays = Ray4::from_rays([0.5, 1.0, 3.0, 7.0].map(|x| {
+                Ray::new(
+                    Vec3::new(x * k, -2.0 * k, 0.25 * k),
+                    Vec3::new(k, 0.5, -3.0 * k),
+                )
+            }));
+            let s = Sphere4::from_spheres(
+                [1.0, 0.5, 2.0, 0.125]
+                    .map(|r| Sphere::new(Vec3::new(0.1 * k, 0.0, 0.3 * k), r * k)),
+            );
+            let (_, got) = disc_and_bound(&rays, &s, RELATIVE, ABSOLUTE);
+            let abs = disc_and_bound(&rays, &s, 0.0, ABSOLUTE).1;
+            for l in 0..4 {
+                let (r, sp) = (
+                    rays.to_rays()[l],
+                    [0, 1, 2, 3].map(|j| s.radius.as_array()[j])[l],
+                );
+                let d = r.dir;
+                let f = r.origin - Vec3::new(0.1 * k, 0.0, 0.3 * k);
+                let a = d.x * d.x + d.y * d.y + d.z * d.z;
+                let n = (f.x * f.x + f.y * f.y + f.z * f.z) + sp * sp;
+                let want = RELATIVE * (a * n) + ABSOLUTE * (1.0 + a + n);
+                assert_eq!(got.as_array()[l], want, "scale 2^{e}, lane {l}");
+                assert_eq!(abs.as_array()[l], ABSOLUTE * (1.0 + a + n), "{i} {l}");
+            }
         }
     }
 
