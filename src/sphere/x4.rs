@@ -782,6 +782,18 @@ mod tests {
         copies
     }
 
+    /// The baseline one-packet kernel's answers, and how many lanes have
+    /// two roots.
+    fn one_at_a_time(rays: &[Ray4], s: &Sphere4) -> (Vec<[SphereHit; 4]>, usize) {
+        let want: Vec<_> = rays
+            .iter()
+            .map(|r| intersect_baseline(r, s).lanes())
+            .collect();
+        let two = want.iter().flatten();
+        let two = two.filter(|h| matches!(h, SphereHit::Two(..))).count();
+        (want, two)
+    }
+
     /// Rays in no order against a different sphere in each lane, among
     /// them exact tangents (which the scalar stages settle): every copy of
     /// the batch, over every prefix of the packets (so that each way a
@@ -829,15 +841,7 @@ mod tests {
         let mixed = live.iter().filter(|&&m| m != 0 && m != 0b1111).count();
         assert!(mixed >= 20, "{live:?}");
         assert!(live.contains(&0), "{live:?}");
-        let want: Vec<_> = rays
-            .iter()
-            .map(|r| intersect_baseline(r, &s4).lanes())
-            .collect();
-        let hits = want
-            .iter()
-            .flatten()
-            .filter(|h| matches!(h, SphereHit::Two(..)));
-        let hits = hits.count();
+        let (want, hits) = one_at_a_time(&rays, &s4);
         assert!(hits >= 20, "{hits}");
         for (name, batch) in batch_copies() {
             for len in 0..=rays.len() {
@@ -880,15 +884,8 @@ mod tests {
             })
             .collect();
         rays.push(Ray4::from_rays([true, false, true, true].map(ray)));
-        let want: Vec<_> = rays
-            .iter()
-            .map(|r| intersect_baseline(r, &s4).lanes())
-            .collect();
-        let hits = want
-            .iter()
-            .flatten()
-            .filter(|h| matches!(h, SphereHit::Two(..)));
-        assert_eq!(hits.count(), 8 + 3 + 8 + 5 + 1 + 3);
+        let (want, hits) = one_at_a_time(&rays, &s4);
+        assert_eq!(hits, 8 + 3 + 8 + 5 + 1 + 3);
         let run = |batch: Batch| {
             let mut out = vec![SphereHit4::MISS; rays.len()];
             let before = PAIRS.with(core::cell::Cell::get);
