@@ -8,12 +8,19 @@
 /// `$packets_in`, generic over [`Real8`](crate::num::real::Real8), on one
 /// AVX-512 register where the CPU has AVX-512 F, DQ and VL (and AVX2 and
 /// FMA), else on pairs of AVX registers where it has AVX2 and FMA, else
-/// on pairs of the baseline lanes. Every copy gives the same bits.
+/// on pairs of the baseline lanes. Every copy gives the same bits. A
+/// kernel whose batches run faster on pairs of AVX registers passes
+/// `avx512: false` last, and skips the AVX-512 copy.
 macro_rules! packets_dispatch {
-    ($packets_in:ident, $rays:ident, $prim:ident: $P:ty, $out:ident: $H:ty) => {{
+    ($packets_in:ident, $rays:ident, $prim:ident: $P:ty, $out:ident: $H:ty) => {
+        $crate::num::batch::packets_dispatch!(
+            $packets_in, $rays, $prim: $P, $out: $H, avx512: true
+        )
+    };
+    ($packets_in:ident, $rays:ident, $prim:ident: $P:ty, $out:ident: $H:ty, avx512: $wide:expr) => {{
         use $crate::ray4::Ray4;
         #[cfg(target_arch = "x86_64")]
-        if let Some(avx512) = $crate::num::avx512::Avx512::detect() {
+        if let Some(avx512) = $crate::num::avx512::Avx512::detect().filter(|_| $wide) {
             #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
             fn run(_: $crate::num::avx512::Avx512, r: &[Ray4], p: &$P, o: &mut [$H]) {
                 $packets_in::<$crate::num::avx512::Avx8>(r, p, o)

@@ -201,11 +201,6 @@ impl F64x4 {
 /// assert!(!F64x4::all(m) && F64x4::all(m | !m));
 /// ```
 pub trait Real4: Real {
-    /// Whether the x4 kernels test for certain misses in `f32` before
-    /// widening (the sphere's [`misses`](crate::sphere::stages::misses)):
-    /// where each f64 operation takes two instructions, as on the baseline
-    /// lanes.
-    const MISSES_IN_F32: bool = false;
     /// Widens four `f32` lanes, exactly.
     fn widen(x: f32x4) -> Self;
     /// Each lane rounded to `f32` (to nearest, ties to even, as `as f32`).
@@ -417,7 +412,6 @@ mod sse2 {
     }
 
     impl Real4 for F64x4 {
-        const MISSES_IN_F32: bool = true;
         #[inline(always)]
         fn load(x: &[f64; 4]) -> F64x4 {
             F64x4::from(*x)
@@ -485,7 +479,6 @@ mod portable {
     }
 
     impl Real4 for F64x4 {
-        const MISSES_IN_F32: bool = true;
         #[inline(always)]
         fn load(x: &[f64; 4]) -> F64x4 {
             F64x4::from(*x)

@@ -172,10 +172,6 @@ pub(crate) struct Classes<L: Real> {
     /// `Δ̂`.
     pub(crate) disc: L,
     ed: L,
-    /// Certified: no root by the sign of `Δ̂` (`Δ̂ < −E_Δ`), a subset of
-    /// `none` (where `a = 0`, `Δ̂ = 0 = E_Δ`, or NaN), for an early exit
-    /// that waits on one comparison.
-    pub(crate) miss: L::Mask,
     /// Certified: no root.
     pub(crate) none: L::Mask,
     /// Certified: two roots.
@@ -188,7 +184,6 @@ impl Classes<f64> {
     #[inline(always)]
     pub(crate) fn open(self) -> Classes<f64> {
         Classes {
-            miss: false,
             none: false,
             two: false,
             ..self
@@ -221,12 +216,8 @@ pub(crate) fn classes<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f6
     let cq = ff - rr;
     let mc = ff + rr;
     let disc = b * b - a * cq;
-    // −E_Δ first, exactly the negation of E_Δ, for `miss`, which the x4
-    // kernels' early exit waits on.
-    let ned = L::splat(-20.0 * U * shrink) * (mb * mb + a * mc);
-    let ed = -ned;
+    let ed = L::splat(20.0 * U * shrink) * (mb * mb + a * mc);
     let line = a.gt(L::splat(0.0));
-    let miss = ned.gt(disc);
     Classes {
         a,
         b,
@@ -236,8 +227,7 @@ pub(crate) fn classes<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f6
         cq,
         disc,
         ed,
-        miss,
-        none: !line | miss,
+        none: !line | (-ed).gt(disc),
         two: line & disc.gt(ed),
     }
 }
@@ -382,7 +372,7 @@ pub fn filter_sorted<L: Real>(o: [L; 3], d: [L; 3], c: [L; 3], r: L, shrink: f64
 }
 
 /// [`filter_sorted`] from the [`classes`] already computed, so that the
-/// x4 kernels can skip the roots of a packet whose lanes all miss.
+/// reference can return on a certain class before the roots.
 #[inline(always)]
 pub(crate) fn sorted<L: Real>(classes: Classes<L>, shrink: f64) -> Sorted<L> {
     let k = |x: f64| L::splat(x * U * shrink);

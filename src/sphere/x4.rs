@@ -105,9 +105,7 @@ pub fn intersect(ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 }
 
 /// [`intersect`] on the baseline lanes, [`F64x4`]: two SSE2 registers in a
-/// default x86-64 build. Each f64 operation is two instructions there, so
-/// a packet first takes the test for certain misses in `f32`
-/// ([`stages::misses`]) and returns at once where every lane passes.
+/// default x86-64 build.
 ///
 /// ```
 /// use rayoracle::{Ray, ray4::Ray4, sphere::{Sphere, SphereHit, x4}};
@@ -150,11 +148,10 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 /// every `i` below the shorter length, bit for bit. The packets go
 /// through two at a time as eight lanes (one AVX-512 register where the
 /// CPU has it, else a [`Pair`](crate::num::real::Pair) of four-lane
-/// values). Which lanes may hit comes from the classes, or on the
-/// baseline lanes from the test in `f32` ([`stages::misses`]). A pair
-/// whose every lane may hit takes the roots at once. In
-/// any other, the lanes the classes certify as misses are written as
-/// such, and the rest are gathered, eight at a time from any packets,
+/// values). Which lanes may hit comes from the test in `f32`
+/// ([`stages::misses`]). A pair whose every lane may hit takes the roots
+/// at once. In any other, the lanes the test certifies as misses are
+/// written as such, and the rest are gathered, eight at a time from any packets,
 /// into dense pairs for the roots, so that rays in no order (where a
 /// pair is all misses about half the time, a coin toss for the branch
 /// predictor) take no branch on their classes. The floating-point
@@ -172,8 +169,16 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, s: &Sphere4) -> SphereHit4 {
 /// }
 /// ```
 pub fn intersect_packets(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
-    crate::num::batch::packets_dispatch!(packets_in, rays, s: Sphere4, out: SphereHit4)
+    crate::num::batch::packets_dispatch!(
+        packets_in, rays, s: Sphere4, out: SphereHit4, avx512: AVX512_BATCHES
+    )
 }
+
+/// Whether [`intersect_packets`] takes AVX-512 where the CPU has it. It
+/// does not: with the test in `f32` deciding which lanes may hit, pairs
+/// of AVX registers run the sphere's batches faster (see
+/// [`crate::num::avx512`] for the figures).
+const AVX512_BATCHES: bool = false;
 
 /// [`intersect_packets`] over any eight-lane [`Real8`].
 #[inline(always)]
@@ -193,26 +198,17 @@ fn packets_in<W: Real8>(rays: &[Ray4], s: &Sphere4, out: &mut [SphereHit4]) {
     let mut n = 0usize;
     for i in 0..len / 2 {
         let pk = &rays[2 * i..2 * i + 2];
-        let classes = || {
+        // The lanes that may hit, from the test in `f32`.
+        let m = |r: &Ray4| stages::misses::certain(r, s).to_bitmask();
+        let bits = !(m(&pk[0]) | m(&pk[1]) << 4) & 0xff;
+        if bits == 0xff {
+            #[cfg(test)]
+            note(0);
             let (o2, d2) = (
                 W::widen3(&pk[0].origin, &pk[1].origin),
                 W::widen3(&pk[0].dir, &pk[1].dir),
             );
-            stages::classes(o2, d2, c2, r2, 1.0)
-        };
-        // The lanes that may hit, from the f32 test where it is cheaper.
-        let (bits, k) = if W::Half::MISSES_IN_F32 {
-            let m = |r: &Ray4| stages::misses::certain(r, s).to_bitmask();
-            (!(m(&pk[0]) | m(&pk[1]) << 4) & 0xff, None)
-        } else {
-            let k = classes();
-            (!W::bits(k.miss) & 0xff, Some(k))
-        };
-        if bits == 0xff {
-            #[cfg(test)]
-            note(0);
-            let k = k.unwrap_or_else(classes);
-            let [x, y] = decide_sorted(stages::sorted(k, 1.0)).halves();
+            let [x, y] = decide_sorted(stages::filter_sorted(o2, d2, c2, r2, 1.0)).halves();
             out[2 * i] = finish(x.packed(), true, env, &pk[0], s);
             out[2 * i + 1] = finish(y.packed(), true, env, &pk[1], s);
             continue;
@@ -298,8 +294,7 @@ fn dense<W: Real8>(
     );
     let c2 = W::widen3(&s0.center, &s1.center);
     let [r2, ..] = W::widen3(&[s0.radius; 3], &[s1.radius; 3]);
-    let k = stages::classes(o2, d2, c2, r2, 1.0);
-    let [x, y] = decide_sorted(stages::sorted(k, 1.0)).halves();
+    let [x, y] = decide_sorted(stages::filter_sorted(o2, d2, c2, r2, 1.0)).halves();
     let h = [
         finish(x.packed(), true, env, &r0, &s0),
         finish(y.packed(), true, env, &r1, &s1),
@@ -555,20 +550,16 @@ fn packet<L: Real4>(
     stands: bool,
     env: impl Fn(bool) -> bool,
 ) -> SphereHit4 {
-    if L::MISSES_IN_F32 && stands && stages::misses::certain(ray, s).all() {
+    // A packet whose every lane certainly misses needs no roots: coherent
+    // rays, such as a camera's, often come so. The test in `f32` needs no
+    // widening; a lane it leaves takes the roots, and is done as `none`
+    // if the f64 classes certify a miss.
+    if stands && stages::misses::certain(ray, s).all() {
         return SphereHit4::MISS;
     }
     let (o, d, c, r) = widened::<L>(ray, s);
-    let k = stages::classes(o, d, c, r, 1.0);
-    // A packet whose every lane certainly misses needs no roots: coherent
-    // rays, such as a camera's, often come so. The test is on the sign of
-    // Δ̂ alone (a lane without a line, `a = 0`, takes the roots and is
-    // done as `none`), one comparison from Δ̂.
-    if L::all(k.miss) && stands {
-        return SphereHit4::MISS;
-    }
     finish(
-        decide_sorted4(stages::sorted(k, 1.0)).0,
+        decide_sorted4(stages::filter_sorted(o, d, c, r, 1.0)).0,
         stands,
         env,
         ray,
@@ -833,10 +824,9 @@ mod tests {
                 Ray4::from_rays(r)
             })
             .collect();
-        let live = rays.iter().map(|r| {
-            let (o, d, c, rad) = widened::<F64x4>(r, &s4);
-            F64x4::mask_i32(!stages::classes(o, d, c, rad, 1.0).miss).to_bitmask()
-        });
+        let live = rays
+            .iter()
+            .map(|r| !stages::misses::certain(r, &s4).to_bitmask() & 0b1111);
         let live: Vec<u32> = live.collect();
         let mixed = live.iter().filter(|&&m| m != 0 && m != 0b1111).count();
         assert!(mixed >= 20, "{live:?}");
@@ -902,21 +892,26 @@ mod tests {
         }
     }
 
-    /// Packets whose lanes all miss skip the roots, one packet at a time
-    /// and in pairs; a packet with one hit among misses does not, and
-    /// every lane is the reference's either way.
+    /// Packets whose lanes all miss by the test in `f32` skip the roots,
+    /// one packet at a time and in pairs; a packet with one hit among
+    /// misses does not, nor one with a miss too near the silhouette for
+    /// that test (which the f64 classes then certify), and every lane is
+    /// the reference's either way.
     #[test]
     fn packets_that_all_miss_take_the_early_exit() {
         let s = Sphere::new(glam::Vec3::ZERO, 1.0);
         let s4 = Sphere4::splat(&s);
         let ray = |y: f32| crate::Ray::new(glam::Vec3::new(0.0, y, -5.0), glam::Vec3::Z);
-        let miss = Ray4::from_rays([1.5, 2.0, -3.0, 1.0 + 1e-6].map(ray));
+        let miss = Ray4::from_rays([1.5, 2.0, -3.0, 1.001].map(ray));
+        let near = Ray4::from_rays([1.5, 2.0, -3.0, 1.0 + 1e-6].map(ray));
         let mixed = Ray4::from_rays([1.5, 2.0, 0.5, -3.0].map(ray));
-        let (o, d, c, r) = widened::<F64x4>(&miss, &s4);
-        assert!(F64x4::all(stages::classes(o, d, c, r, 1.0).miss));
+        assert!(stages::misses::certain(&miss, &s4).all());
+        assert_eq!(stages::misses::certain(&near, &s4).to_bitmask(), 0b0111);
+        let (o, d, c, r) = widened::<F64x4>(&near, &s4);
+        assert!(F64x4::all(stages::classes(o, d, c, r, 1.0).none));
         let (o, d, c, r) = widened::<F64x4>(&mixed, &s4);
         assert!(!F64x4::all(stages::classes(o, d, c, r, 1.0).none));
-        let packets = [miss, miss, mixed, miss, miss];
+        let packets = [miss, near, mixed, miss, near, miss];
         let mut out = vec![intersect(&miss, &s4); packets.len()];
         intersect_packets(&packets, &s4, &mut out);
         packets_in::<Pair<F64x4>>(&packets[1..], &s4, &mut out[1..]);

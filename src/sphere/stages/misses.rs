@@ -1,8 +1,9 @@
 //! The certain misses of a packet, in `f32`: the filter's test `Δ̂ <
-//! −E_Δ` on the inputs as given, with no widening, for the x4 kernel on
-//! the baseline lanes. There, each f64 operation is two SSE2 instructions,
-//! and a packet whose four lanes all miss (most of a camera's, around a
-//! small sphere) costs half as much decided here.
+//! −E_Δ` on the inputs as given, with no widening, for the x4 kernels'
+//! early exit (a packet whose four lanes all miss, as most of a camera's
+//! do around a small sphere) and for the batches' choice of the lanes to
+//! gather. On every copy of the lanes it is cheaper than the f64 classes:
+//! no conversions, and four `f32` lanes fill one SSE register.
 //!
 //! # The bound
 //!
