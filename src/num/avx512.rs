@@ -257,10 +257,6 @@ impl Real8 for Avx8 {
     fn all(m: Avx8Mask) -> bool {
         m.0 == 0xff
     }
-    #[inline(always)]
-    fn bits(m: Avx8Mask) -> u32 {
-        u32::from(m.0)
-    }
 }
 
 #[cfg(test)]

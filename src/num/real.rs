@@ -349,8 +349,6 @@ pub trait Real8: Real {
     fn mask_halves(m: Self::Mask) -> [<Self::Half as Real>::Mask; 2];
     /// Whether every lane of `m` is set.
     fn all(m: Self::Mask) -> bool;
-    /// The mask as eight bits, lane `i` in bit `i`.
-    fn bits(m: Self::Mask) -> u32;
 }
 
 impl<L: Real4> Real8 for Pair<L> {
@@ -375,11 +373,6 @@ impl<L: Real4> Real8 for Pair<L> {
     #[inline(always)]
     fn all(m: Pair<L::Mask>) -> bool {
         L::all(m.0) && L::all(m.1)
-    }
-    #[inline(always)]
-    fn bits(m: Pair<L::Mask>) -> u32 {
-        let b = |m| L::mask_i32(m).to_bitmask();
-        b(m.0) | b(m.1) << 4
     }
 }
 
