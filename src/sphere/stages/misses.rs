@@ -242,7 +242,7 @@ mod tests {
     /// small).
     #[test]
     fn the_bound_is_the_derivations() {
-        for (i, e) in (-20..=20).step_by(5).enumerate() {
+        for e in (-20..=20).step_by(5) {
             let k = 2f32.powi(e);
             let rays = Ray4::from_rays([0.5, 1.0, 3.0, 7.0].map(|x| {
                 Ray::new(
@@ -257,17 +257,18 @@ mod tests {
             let (_, got) = disc_and_bound(&rays, &s, RELATIVE, ABSOLUTE);
             let abs = disc_and_bound(&rays, &s, 0.0, ABSOLUTE).1;
             for l in 0..4 {
-                let (r, sp) = (
-                    rays.to_rays()[l],
-                    [0, 1, 2, 3].map(|j| s.radius.as_array()[j])[l],
-                );
+                let (r, sp) = (rays.to_rays()[l], s.radius.as_array()[l]);
                 let d = r.dir;
                 let f = r.origin - Vec3::new(0.1 * k, 0.0, 0.3 * k);
                 let a = d.x * d.x + d.y * d.y + d.z * d.z;
                 let n = (f.x * f.x + f.y * f.y + f.z * f.z) + sp * sp;
                 let want = RELATIVE * (a * n) + ABSOLUTE * (1.0 + a + n);
                 assert_eq!(got.as_array()[l], want, "scale 2^{e}, lane {l}");
-                assert_eq!(abs.as_array()[l], ABSOLUTE * (1.0 + a + n), "{i} {l}");
+                assert_eq!(
+                    abs.as_array()[l],
+                    ABSOLUTE * (1.0 + a + n),
+                    "scale 2^{e}, lane {l}"
+                );
             }
         }
     }
