@@ -44,13 +44,16 @@
 //! * `parry3d/per-ray` (sphere, plane): `Ball::cast_local_ray` and
 //!   `HalfSpace::cast_local_ray`, one `black_box`ed call per ray.
 //!
-//! The scalar closures are `#[inline(always)]`, as a kernel called
-//! directly in a renderer's loop is inlined (`intersect` carries
-//! `#[inline]`): each runs inlined into the loop over the rays, with the
-//! primitive's loop-invariant work hoisted out of it. Without that, the
-//! optimiser inlines a closure by its size alone: the plain variant's, and
-//! not the reference's, so the comparison would be of call overheads as
-//! much as of kernels.
+//! The scalar and per-packet closures are `#[inline(always)]`, as a
+//! kernel called directly in a renderer's loop is inlined (`intersect`
+//! carries `#[inline]`): each runs inlined into the loop over the rays,
+//! with the primitive's loop-invariant work hoisted out of it, and x4's
+//! AVX2 copy is the one call per packet. Without that, the optimiser
+//! inlines a closure by its size alone: the plain variant's, and not the
+//! reference's, so the comparison would be of call overheads as much as
+//! of kernels; and x4's closure stayed out of line, a second call per
+//! packet with its result and the loop's sum going through memory, which
+//! parry3d's cast, inlined into its loop, does not pay.
 
 mod criterion_dir;
 
@@ -433,10 +436,12 @@ fn benches(c: &mut Criterion) -> (Vec<(String, &'static str, Passes)>, bool) {
             |r, s| sphere::reference::intersect(r, s).nearest(0.0, f32::INFINITY),
             #[inline(always)]
             |r, s| sphere::plain::intersect(r, s).nearest(0.0, f32::INFINITY),
+            #[inline(always)]
             |r| {
                 let (m, t) = sphere::x4::intersect(r, &s4).nearest(t_min, t_max);
                 finite(m, t)
             },
+            #[inline(always)]
             |r| {
                 let (m, t) = sphere::x4::intersect_baseline(r, &s4).nearest(t_min, t_max);
                 finite(m, t)
@@ -464,10 +469,12 @@ fn benches(c: &mut Criterion) -> (Vec<(String, &'static str, Passes)>, bool) {
         |r, p| plane::reference::intersect(r, p).nearest(0.0, f32::INFINITY),
         #[inline(always)]
         |r, p| plane::plain::intersect(r, p).nearest(0.0, f32::INFINITY),
+        #[inline(always)]
         |r| {
             let (m, t) = plane::x4::intersect(r, &p4).nearest(t_min, t_max);
             finite(m, t)
         },
+        #[inline(always)]
         |r| {
             let (m, t) = plane::x4::intersect_baseline(r, &p4).nearest(t_min, t_max);
             finite(m, t)
@@ -494,10 +501,12 @@ fn benches(c: &mut Criterion) -> (Vec<(String, &'static str, Passes)>, bool) {
         |r, q| quadric::reference::intersect(r, q).nearest(0.0, f32::INFINITY),
         #[inline(always)]
         |r, q| quadric::plain::intersect(r, q).nearest(0.0, f32::INFINITY),
+        #[inline(always)]
         |r| {
             let (m, t) = quadric::x4::intersect(r, &q4).nearest(t_min, t_max);
             finite(m, t)
         },
+        #[inline(always)]
         |r| {
             let (m, t) = quadric::x4::intersect_baseline(r, &q4).nearest(t_min, t_max);
             finite(m, t)
