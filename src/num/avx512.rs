@@ -1,6 +1,5 @@
-//! Eight `f64` lanes in one AVX-512 register, for the batch paths
-//! (`intersect_packets` of the plane, the sphere and the quadric), chosen
-//! at run time on x86-64.
+//! Eight `f64` lanes in one AVX-512 register, for the quadric's batch
+//! path (`intersect_packets`), chosen at run time on x86-64.
 //!
 //! The batch paths run two packets at a time as eight lanes
 //! ([`Real8`]): on CPUs with AVX2 as a [`Pair`](super::real::Pair) of
@@ -17,19 +16,24 @@
 //! 64×64 camera, shared machines). `x4/batch` took, its fastest
 //! interleaved pass, on AVX-512 against pairs of AVX2 registers:
 //!
-//! * Intel Xeon with AVX-512, two runs each, alternated: the plane 12.6
-//!   and 13.5 µs against 16.8 and 15.3; the sphere 11.1 and 11.5 against
-//!   14.8 and 14.7; shuffled, 20.0 and 20.9 against 24.0 and 25.3.
+//! * Intel Xeon with AVX-512, three runs each: the quadric 188.2, 188.3
+//!   and 188.2 Mrays/s against 161.1, 160.8 and 141.6.
 //! * AMD EPYC with AVX-512, where a 512-bit operation is two 256-bit
 //!   ones, two runs each, alternated: the quadric 37.9 against 50.1 µs;
 //!   the plane 10.0 against 9.5, the sphere 8.1 against 8.4 and,
 //!   shuffled, 14.4 against 14.0, so within a few percent either way.
 //!
-//! The sphere's batches skip AVX-512 since they take their lanes from the
-//! test for certain misses in `f32`: on the same Xeon, two runs each,
-//! alternated, the medians of the interleaved passes read 437 and 442
-//! Mrays/s on AVX-512 against 525 and 528 on pairs of AVX2 registers,
-//! and 359 and 367 against 451 and 458 on the shuffled rays.
+//! The sphere's and the plane's batches skip AVX-512. The sphere's take
+//! their lanes from the test for certain misses in `f32`: on the same
+//! Xeon, two runs each, alternated, the medians of the interleaved
+//! passes read 437 and 442 Mrays/s on AVX-512 against 525 and 528 on
+//! pairs of AVX2 registers, and 359 and 367 against 451 and 458 on the
+//! shuffled rays. The plane's, two runs each, alternated, read 673.6 and
+//! 672.7 Mrays/s on AVX-512 against 695.9 and 692.1 on pairs (medians
+//! 667.9 and 666.3 against 675.7 and 673.7); parry3d's `HalfSpace`,
+//! timed after them, read 546.8 and 545.8 after the AVX-512 passes and
+//! 588.6 and 588.5 after the pairs, as the CPU slows down for a while
+//! after 512-bit work.
 //!
 //! `Avx8` is crate-private for the reason `Avx4` is: its methods run
 //! AVX-512 instructions without a target feature of their own, so the

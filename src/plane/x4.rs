@@ -171,9 +171,9 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 
 /// [`intersect`] over many packets: `out[i] = intersect(&rays[i], p)` for
 /// every `i` below the shorter length, two packets at a time as eight
-/// lanes (one AVX-512 register where the CPU has it, else a
-/// [`Pair`](crate::num::real::Pair) of four-lane values), with the
-/// floating-point environment read once.
+/// lanes (a [`Pair`](crate::num::real::Pair) of four-lane values, AVX
+/// registers where the CPU has AVX2), with the floating-point environment
+/// read once.
 ///
 /// ```
 /// use rayoracle::{Ray, ray4::Ray4, plane::{Plane, x4}};
@@ -187,8 +187,16 @@ pub fn intersect_avx2(avx2: Avx2, ray: &Ray4, p: &Plane4) -> PlaneHit4 {
 /// }
 /// ```
 pub fn intersect_packets(rays: &[Ray4], p: &Plane4, out: &mut [PlaneHit4]) {
-    crate::num::batch::packets_dispatch!(packets_in, rays, p: Plane4, out: PlaneHit4)
+    crate::num::batch::packets_dispatch!(
+        packets_in, rays, p: Plane4, out: PlaneHit4, avx512: AVX512_BATCHES
+    )
 }
+
+/// Whether [`intersect_packets`] takes AVX-512 where the CPU has it. It
+/// does not: pairs of AVX registers run the plane's batches a little
+/// faster, and leave the code timed after them at full speed (see
+/// [`crate::num::avx512`] for the figures).
+const AVX512_BATCHES: bool = false;
 
 /// [`intersect_packets`] over any eight-lane [`Real8`].
 #[inline(always)]
