@@ -35,6 +35,8 @@ pub mod avx512;
 #[cfg(any(feature = "plane", feature = "sphere", feature = "quadric"))]
 pub(crate) mod batch;
 pub mod certify;
+#[cfg(feature = "plane")]
+pub(crate) mod cold;
 pub mod dd;
 #[cfg(all(test, any(feature = "plane", feature = "sphere", feature = "quadric")))]
 pub(crate) mod paths;

@@ -94,9 +94,8 @@ fn first_pass(ray: &Ray, plane: &Plane, shrink: f64) -> Result<PlaneHit, stages:
 }
 
 /// What a caller takes from the passes after the first: [`intersect`]
-/// the answer alone, which comes back in registers (the pair goes through
-/// memory), so that `intersect` jumps to [`second_pass`] with no frame of
-/// its own; [`intersect_staged`] the stage too.
+/// the answer alone, which comes back in a register (the pair goes
+/// through memory); [`intersect_staged`] the stage too.
 trait Answer {
     fn of(hs: (PlaneHit, Stage)) -> Self;
 }
@@ -115,27 +114,32 @@ impl Answer for (PlaneHit, Stage) {
     }
 }
 
-/// The second pass, out of line (inlined, it slowed the first pass by
-/// about a seventh), then the rest, out of line again. The first pass's
-/// sums and the products `dᵢnᵢ` come as scalars, in registers: a struct
-/// or an array of them goes through memory. A line whose sums both came
-/// out 0, as on a line in the plane, is settled by [`zero_sums`] where it
-/// can be.
-#[cold]
-#[inline(never)]
-#[allow(clippy::too_many_arguments)]
-fn second_pass<A: Answer>(
-    ray: &Ray,
-    plane: &Plane,
-    num: f64,
-    den: f64,
-    m_num: f64,
-    p0: f64,
-    p1: f64,
-    p2: f64,
-    shrink: f64,
-) -> A {
-    A::of(passes(ray, plane, num, den, m_num, [p0, p1, p2], shrink))
+crate::num::cold::keeps_vector_registers! {
+    /// The second pass, out of line (inlined, it slowed the first pass by
+    /// about a seventh), then the rest, out of line again. In the calling
+    /// convention that saves the caller's vector registers
+    /// ([`crate::num::cold`]), so that a loop around an inlined
+    /// [`intersect`] keeps the plane in registers. The first pass's sums
+    /// and the products `dᵢnᵢ` come as scalars: a struct or an array of
+    /// them is built in memory on the hot path. A line whose sums both
+    /// came out 0, as on a line in the plane, is settled by [`zero_sums`]
+    /// where it can be.
+    #[cold]
+    #[inline(never)]
+    #[allow(clippy::too_many_arguments)]
+    fn second_pass<A: Answer>(
+        ray: &Ray,
+        plane: &Plane,
+        num: f64,
+        den: f64,
+        m_num: f64,
+        p0: f64,
+        p1: f64,
+        p2: f64,
+        shrink: f64,
+    ) -> A {
+        A::of(passes(ray, plane, num, den, m_num, [p0, p1, p2], shrink))
+    }
 }
 
 /// The body of [`second_pass`].
