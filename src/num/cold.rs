@@ -18,8 +18,7 @@
 //! f64's time with its second pass in the Rust convention, and 1.29× to
 //! 1.30× with it in `win64`. Only the plane's uses it: the same for the
 //! sphere's first cold stage left it at 1.12× to 1.15×, and for the
-//! quadric's took it from 1.24× to 1.39× to 1.42×, as the saved registers
-//! are ones its hot path wants for itself.
+//! quadric's took it from 1.24× to between 1.39× and 1.42×.
 
 /// `fn` items in the calling convention described in the
 /// [module](self): attributes, visibility, generics and body as written.
